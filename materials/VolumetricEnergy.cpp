@@ -1,0 +1,51 @@
+#include "materials/VolumetricEnergy.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace glossa::materials {
+
+VolumetricEnergy::VolumetricEnergy(Form form, double kappa) : form_(form), kappa_(kappa) {
+  if (!(kappa >= 0.0)) throw std::invalid_argument("VolumetricEnergy: kappa must be >= 0");
+}
+
+VolumetricEnergy::Form VolumetricEnergy::formFromName(const std::string &name) {
+  if (name == "simo-taylor") return Form::SimoTaylor;
+  if (name == "log-squared") return Form::LogSquared;
+  if (name == "quadratic") return Form::Quadratic;
+  throw std::invalid_argument("unknown volumetric energy '" + name + "'");
+}
+
+double VolumetricEnergy::energy(double t) const {
+  switch (form_) {
+  case Form::SimoTaylor: return 0.25 * kappa_ * (t * t - 1.0 - 2.0 * std::log(t));
+  case Form::LogSquared: return 0.5 * kappa_ * std::log(t) * std::log(t);
+  case Form::Quadratic: return 0.5 * kappa_ * (t - 1.0) * (t - 1.0);
+  }
+  return 0.0;
+}
+
+double VolumetricEnergy::dU(double t) const {
+  switch (form_) {
+  case Form::SimoTaylor: return 0.5 * kappa_ * (t - 1.0 / t);
+  case Form::LogSquared: return kappa_ * std::log(t) / t;
+  case Form::Quadratic: return kappa_ * (t - 1.0);
+  }
+  return 0.0;
+}
+
+double VolumetricEnergy::d2U(double t) const {
+  switch (form_) {
+  case Form::SimoTaylor: return 0.5 * kappa_ * (1.0 + 1.0 / (t * t));
+  case Form::LogSquared: return kappa_ * (1.0 - std::log(t)) / (t * t);
+  case Form::Quadratic: return kappa_;
+  }
+  return 0.0;
+}
+
+double bulkModulus(double mu, double nu) {
+  if (!(nu > -1.0 && nu < 0.5)) throw std::invalid_argument("Poisson's ratio must be in (-1, 0.5)");
+  return 2.0 * mu * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
+}
+
+} // namespace glossa::materials

@@ -1,0 +1,36 @@
+#pragma once
+// Trilinear shape functions of the 8-node hexahedron and the 2x2x2 Gauss rule, in the VTK node
+// order of mesh/HexMesh.hpp.
+
+#include <array>
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+namespace glossa::fem {
+
+using NodeMatrix = Eigen::Matrix<double, 8, 3>; // one row per node
+
+struct QuadraturePoint {
+  Eigen::Vector3d xi;
+  double weight;
+};
+
+// 2x2x2 Gauss-Legendre points on [-1, 1]^3 (exact for the trilinear mass and Q1 stiffness of
+// an affine element).
+const std::array<QuadraturePoint, 8> &gaussHex2();
+
+// N_a(xi), a = 0..7.
+Eigen::Matrix<double, 8, 1> hexShape(const Eigen::Vector3d &xi);
+// dN_a/dxi_j as an 8x3 matrix.
+Eigen::Matrix<double, 8, 3> hexShapeGradient(const Eigen::Vector3d &xi);
+
+// Reference coordinates of node a.
+Eigen::Vector3d hexNodeXi(int a);
+
+// Spatial gradients at one point of an element with nodal coordinates X:
+// dN/dX (8x3) and det(dX/dxi). Returns false if det <= 0.
+bool hexGradients(const NodeMatrix &X, const Eigen::Vector3d &xi,
+                  Eigen::Matrix<double, 8, 3> &dNdX, double &detJ);
+
+} // namespace glossa::fem

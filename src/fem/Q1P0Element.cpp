@@ -1,0 +1,147 @@
+#include "fem/Q1P0Element.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <Eigen/LU>
+
+namespace glossa::fem {
+
+namespace {
+
+using materials::Tangent9;
+using Bmatrix = Eigen::Matrix<double, 9, 24>;
+
+struct PointKinematics {
+  Eigen::Matrix<double, 8, 3> dNdX;
+  double dV = 0.0; // reference volume weight
+  Eigen::Matrix3d F;
+  double J = 1.0;
+};
+
+// Gradient operator: (grad u)_iJ = B(iJ, 3b+k) u_bk, row i*3+J.
+Bmatrix gradientOperator(const Eigen::Matrix<double, 8, 3> &dNdX) {
+  Bmatrix B = Bmatrix::Zero();
+  for (int b = 0; b < 8; ++b)
+    for (int i = 0; i < 3; ++i)
+      for (int J = 0; J < 3; ++J) B(i * 3 + J, 3 * b + i) = dNdX(b, J);
+  return B;
+}
+
+Eigen::Matrix<double, 9, 1> flatten(const Eigen::Matrix3d &M) {
+  Eigen::Matrix<double, 9, 1> v;
+  for (int i = 0; i < 3; ++i)
+    for (int J = 0; J < 3; ++J) v(i * 3 + J) = M(i, J);
+  return v;
+}
+
+// d(J F^{-T})_iJ / dF_kL = J (Finv_Ji Finv_Lk - Finv_Jk Finv_Li)
+Tangent9 cofactorDerivative(const Eigen::Matrix3d &Finv, double J) {
+  Tangent9 D;
+  for (int i = 0; i < 3; ++i)
+    for (int J_ = 0; J_ < 3; ++J_)
+      for (int k = 0; k < 3; ++k)
+        for (int L = 0; L < 3; ++L)
+          D(i * 3 + J_, k * 3 + L) = J * (Finv(J_, i) * Finv(L, k) - Finv(J_, k) * Finv(L, i));
+  return D;
+}
+
+// Kinematics at the 8 Gauss points; false if the reference element is degenerate.
+bool kinematics(const NodeMatrix &X, const NodeMatrix &u, std::array<PointKinematics, 8> &pts,
+                double &minJ) {
+  const auto &rule = gaussHex2();
+  minJ = std::numeric_limits<double>::infinity();
+  for (int q = 0; q < 8; ++q) {
+    double detJ0 = 0.0;
+    if (!hexGradients(X, rule[q].xi, pts[q].dNdX, detJ0)) return false;
+    pts[q].dV = detJ0 * rule[q].weight;
+    pts[q].F = Eigen::Matrix3d::Identity() + u.transpose() * pts[q].dNdX;
+    pts[q].J = pts[q].F.determinant();
+    minJ = std::min(minJ, pts[q].J);
+  }
+  return true;
+}
+
+void addPoint(Q1P0Result &r, const PointKinematics &pt, const Eigen::Matrix3d &P,
+              const Tangent9 &A, Q1P0Output what) {
+  const Bmatrix B = gradientOperator(pt.dNdX);
+  r.residual.noalias() += B.transpose() * flatten(P) * pt.dV;
+  if (what == Q1P0Output::ResidualAndTangent) r.tangent.noalias() += B.transpose() * (A * pt.dV) * B;
+  r.cauchyMean += P * pt.F.transpose() * pt.dV; // int sigma dv = int P F^T dV
+}
+
+} // namespace
+
+Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
+                        const materials::IsochoricMaterial &material,
+                        const materials::VolumetricEnergy &volumetric, double lambda,
+                        Q1P0Output what) {
+  Q1P0Result r;
+  std::array<PointKinematics, 8> pts;
+  if (!kinematics(X, u, pts, r.minJ) || !(r.minJ > 0.0)) return r;
+
+  // Condensed dilatation: theta = v / V, and g_a = int J F^{-T} dN_a/dX dV = d v / d u_a.
+  double V = 0.0, v = 0.0;
+  ElementVector g = ElementVector::Zero();
+  for (const auto &pt : pts) {
+    V += pt.dV;
+    v += pt.J * pt.dV;
+    const Eigen::Matrix3d JFinvT = pt.J * pt.F.inverse().transpose();
+    for (int a = 0; a < 8; ++a) g.segment<3>(3 * a) += JFinvT * pt.dNdX.row(a).transpose() * pt.dV;
+  }
+  r.referenceVolume = V;
+  r.theta = v / V;
+  r.pressure = volumetric.dU(r.theta) + lambda;
+
+  for (const auto &pt : pts) {
+    const materials::PointResponse iso = material.evaluate(pt.F);
+    const Eigen::Matrix3d Finv = pt.F.inverse();
+    const Eigen::Matrix3d P = iso.P + r.pressure * pt.J * Finv.transpose();
+    Tangent9 A;
+    if (what == Q1P0Output::ResidualAndTangent)
+      A = iso.dPdF + r.pressure * cofactorDerivative(Finv, pt.J);
+    addPoint(r, pt, P, A, what);
+    r.energy += iso.energy * pt.dV;
+  }
+  if (what == Q1P0Output::ResidualAndTangent)
+    r.tangent.noalias() += (volumetric.d2U(r.theta) / V) * g * g.transpose();
+  r.energy += V * (volumetric.energy(r.theta) + lambda * (r.theta - 1.0));
+  r.cauchyMean /= v;
+  r.valid = true;
+  return r;
+}
+
+Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u,
+                           const materials::IsochoricMaterial &material,
+                           const materials::VolumetricEnergy &volumetric, Q1P0Output what) {
+  Q1P0Result r;
+  std::array<PointKinematics, 8> pts;
+  if (!kinematics(X, u, pts, r.minJ) || !(r.minJ > 0.0)) return r;
+  double V = 0.0, v = 0.0, pressureIntegral = 0.0;
+  for (const auto &pt : pts) {
+    const materials::PointResponse iso = material.evaluate(pt.F);
+    const Eigen::Matrix3d Finv = pt.F.inverse();
+    const Eigen::Matrix3d JFinvT = pt.J * Finv.transpose();
+    const double p = volumetric.dU(pt.J);
+    const Eigen::Matrix3d P = iso.P + p * JFinvT;
+    Tangent9 A;
+    if (what == Q1P0Output::ResidualAndTangent) {
+      const auto c = flatten(JFinvT);
+      A = iso.dPdF + p * cofactorDerivative(Finv, pt.J) + volumetric.d2U(pt.J) * c * c.transpose();
+    }
+    addPoint(r, pt, P, A, what);
+    r.energy += (iso.energy + volumetric.energy(pt.J)) * pt.dV;
+    V += pt.dV;
+    v += pt.J * pt.dV;
+    pressureIntegral += p * pt.J * pt.dV;
+  }
+  r.referenceVolume = V;
+  r.theta = v / V;
+  r.pressure = pressureIntegral / v;
+  r.cauchyMean /= v;
+  r.valid = true;
+  return r;
+}
+
+} // namespace glossa::fem

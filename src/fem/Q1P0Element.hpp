@@ -1,0 +1,51 @@
+#pragma once
+// The Q1-P0 three-field element with its pressure and dilatation condensed out (DESIGN.md §1,
+// eq. 7). Per element, with Lambda held fixed (augmented Lagrangian):
+//   delta p:     theta = (1/V) int J dV              (current over reference volume)
+//   delta theta: p = U'(theta) + Lambda
+//   delta u:     R_a = int (P_iso + p J F^{-T}) dN_a/dX dV
+// and the consistent tangent of the condensed system
+//   K = int B^T (A_iso + p d(J F^{-T})/dF) B dV + U''(theta)/V g g^T,   g_a = int J F^{-T} dN_a/dX dV.
+// This equals step-44's cell-wise static condensation of its DGPM_0 pressure and dilatation.
+// Eigen fixed-size only: no Trilinos, unit-tested alone.
+
+#include <Eigen/Core>
+
+#include "fem/HexShape.hpp"
+#include "materials/IsochoricMaterial.hpp"
+#include "materials/VolumetricEnergy.hpp"
+
+namespace glossa::fem {
+
+using ElementVector = Eigen::Matrix<double, 24, 1>; // dof 3*a + i
+using ElementMatrix = Eigen::Matrix<double, 24, 24>;
+
+struct Q1P0Result {
+  bool valid = false;        // false: J <= 0 at a quadrature point (or a degenerate element)
+  ElementVector residual = ElementVector::Zero(); // internal force [N]
+  ElementMatrix tangent = ElementMatrix::Zero();
+  double theta = 1.0;                             // element dilatation v/V
+  double pressure = 0.0;                          // p = U'(theta) + Lambda [Pa]
+  double referenceVolume = 0.0;
+  double energy = 0.0;                            // int psi_iso dV + V U(theta) + Lambda V (theta-1)
+  double minJ = 1.0;                              // smallest J at the quadrature points
+  Eigen::Matrix3d cauchyMean = Eigen::Matrix3d::Zero(); // (1/v) int sigma dv
+};
+
+enum class Q1P0Output { ResidualOnly, ResidualAndTangent };
+
+// X: reference nodal coordinates; u: nodal displacements; lambda: the element's augmented
+// Lagrange multiplier.
+Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
+                        const materials::IsochoricMaterial &material,
+                        const materials::VolumetricEnergy &volumetric, double lambda,
+                        Q1P0Output what = Q1P0Output::ResidualAndTangent);
+
+// The same element without the mixed treatment: U(J) at every quadrature point (plain Q1),
+// kept to show volumetric locking (Cook's membrane test).
+Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u,
+                           const materials::IsochoricMaterial &material,
+                           const materials::VolumetricEnergy &volumetric,
+                           Q1P0Output what = Q1P0Output::ResidualAndTangent);
+
+} // namespace glossa::fem

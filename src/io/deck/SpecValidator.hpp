@@ -1,0 +1,45 @@
+#pragma once
+// The validator attached to every declared parameter: it knows the parameter's kind, unit,
+// numeric range or allowed words, and explains a bad value in words a deck author can act on.
+
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterEntryValidator.hpp>
+
+#include "io/deck/ParameterSpec.hpp"
+
+namespace glossa::io {
+
+class SpecValidator : public Teuchos::ParameterEntryValidator {
+public:
+  enum class Kind { Double, Int, Bool, String, DoubleArray, IntArray };
+
+  SpecValidator(Kind kind, std::string unit, Range range, std::vector<std::string> allowed,
+                int arraySize);
+
+  Kind kind() const { return kind_; }
+  const std::string &unit() const { return unit_; }
+  // "" if the entry is acceptable, otherwise why not.
+  std::string check(const Teuchos::ParameterEntry &entry) const;
+  // What is allowed, in words: "real number, 0 < value [Pa]", "one of: cg, gmres".
+  std::string allowed() const;
+  // Parses a command-line string into a value of this kind (for --set); throws
+  // std::invalid_argument with the reason.
+  Teuchos::ParameterEntry parse(const std::string &text) const;
+
+  const std::string getXMLTypeName() const override { return "GlossaSpecValidator"; }
+  void printDoc(const std::string &docString, std::ostream &out) const override;
+  ValidStringsList validStringValues() const override;
+  void validate(const Teuchos::ParameterEntry &entry, const std::string &paramName,
+                const std::string &sublistName) const override;
+
+private:
+  Kind kind_;
+  std::string unit_;
+  Range range_;
+  std::vector<std::string> allowedWords_;
+  int arraySize_; // 0: any size
+};
+
+} // namespace glossa::io
