@@ -18,5 +18,6 @@ add_library(glossa::trilinos ALIAS glossa_trilinos)
 add_library(glossa_teuchos INTERFACE)
 target_include_directories(glossa_teuchos SYSTEM INTERFACE
   ${Trilinos_INCLUDE_DIRS} ${Trilinos_TPL_INCLUDE_DIRS})
-target_link_libraries(glossa_teuchos INTERFACE teuchoscore teuchosparameterlist teuchoscomm MPI::MPI_CXX)
+target_link_libraries(glossa_teuchos INTERFACE trilinos_teuchosparameterlist trilinos_teuchosparser
+  trilinos_teuchoscomm trilinos_teuchoscore trilinos_kokkoscore MPI::MPI_CXX)
 add_library(glossa::teuchos ALIAS glossa_teuchos)

@@ -3,14 +3,13 @@
 // No Trilinos here (DESIGN.md §3): the mesh is replicated on every rank and the assembly
 // layer decides which rank owns which element.
 
+#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace glossa::mesh {
 

@@ -1,11 +1,10 @@
 #include "mesh/MeshQuality.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include <Eigen/Dense>
 
 namespace glossa::mesh {
 
@@ -68,19 +67,19 @@ double scaledJacobian(const Eigen::Matrix<double, 8, 3> &X) {
   auto node = [&X](int a) -> Eigen::Vector3d { return X.row(a).transpose(); };
 
   // Centre: the principal axes (Verdict's calc_hex_efg), i.e. 4 dX/dxi at xi = eta = zeta = 0.
-  const Eigen::Vector3d axisXi = node(1) + node(2) + node(5) + node(6) - node(0) - node(3) -
-                                 node(4) - node(7);
-  const Eigen::Vector3d axisEta = node(2) + node(3) + node(6) + node(7) - node(0) - node(1) -
-                                  node(4) - node(5);
-  const Eigen::Vector3d axisZeta = node(4) + node(5) + node(6) + node(7) - node(0) - node(1) -
-                                   node(2) - node(3);
+  const Eigen::Vector3d axisXi =
+      node(1) + node(2) + node(5) + node(6) - node(0) - node(3) - node(4) - node(7);
+  const Eigen::Vector3d axisEta =
+      node(2) + node(3) + node(6) + node(7) - node(0) - node(1) - node(4) - node(5);
+  const Eigen::Vector3d axisZeta =
+      node(4) + node(5) + node(6) + node(7) - node(0) - node(1) - node(2) - node(3);
   double minimum = normalisedDeterminant(axisXi, axisEta, axisZeta);
 
   for (int a = 0; a < 8; ++a) {
     const Eigen::Vector3d x = node(a);
-    minimum = std::min(minimum, normalisedDeterminant(node(kCornerEdges[a][0]) - x,
-                                                      node(kCornerEdges[a][1]) - x,
-                                                      node(kCornerEdges[a][2]) - x));
+    minimum = std::min(
+        minimum, normalisedDeterminant(node(kCornerEdges[a][0]) - x, node(kCornerEdges[a][1]) - x,
+                                       node(kCornerEdges[a][2]) - x));
   }
   return minimum;
 }

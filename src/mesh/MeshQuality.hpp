@@ -3,9 +3,8 @@
 // the generators' tests and by mesh import to refuse inverted or badly shaped elements
 // before a solve wastes Newton iterations on them.
 
-#include <utility>
-
 #include <Eigen/Core>
+#include <utility>
 
 #include "mesh/HexMesh.hpp"
 

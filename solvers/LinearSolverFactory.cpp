@@ -1,0 +1,145 @@
+#include "solvers/LinearSolverFactory.hpp"
+
+#include <Stratimikos_DefaultLinearSolverBuilder.hpp>
+#include <Stratimikos_MueLuHelpers.hpp>
+#include <Teuchos_AbstractFactoryStd.hpp>
+#include <Thyra_Ifpack2PreconditionerFactory.hpp>
+
+#include "io/deck/ParameterSpec.hpp"
+
+namespace glossa::solvers {
+
+using Teuchos::ParameterList;
+
+ParameterList linearSolverParameters() {
+  ParameterList p;
+  io::declareString(p, "type", "iterative",
+                    "iterative: Belos Krylov solver with a preconditioner; direct: Amesos2 KLU2 "
+                    "(for comparison on small problems)",
+                    {"iterative", "direct"});
+  io::declareString(p, "Krylov method", "auto",
+                    "auto: CG while the tangent is symmetric, GMRES otherwise", {"auto", "cg", "gmres"});
+  io::declareString(p, "preconditioner", "MueLu",
+                    "MueLu: smoothed-aggregation AMG with rigid-body modes; Ifpack2: the "
+                    "'Ifpack2 type' alone; none", {"MueLu", "Ifpack2", "none"});
+  io::declareDouble(p, "tolerance", 1e-8, "", "relative residual reduction of each linear solve",
+                    io::Range::open(0.0, 1.0));
+  io::declareInt(p, "maximum iterations", 2000, "Krylov iteration limit per solve", io::Range::atLeast(1));
+  io::declareInt(p, "GMRES restart", 200, "Krylov vectors kept by GMRES", io::Range::atLeast(10));
+  io::declareString(p, "MueLu smoother", "Chebyshev",
+                    "smoother on every level: Chebyshev (polynomial), symmetric Gauss-Seidel",
+                    {"Chebyshev", "symmetric Gauss-Seidel"});
+  io::declareInt(p, "smoother degree", 3, "Chebyshev degree, or Gauss-Seidel sweeps", io::Range::closed(1, 20));
+  io::declareInt(p, "Chebyshev eigenvalue iterations", 20,
+                 "power iterations estimating the largest eigenvalue (10 breaks CG for nu >= 0.49, "
+                 "see TRILINOS-NOTES)", io::Range::closed(5, 200));
+  io::declareDouble(p, "Chebyshev eigenvalue ratio", 20.0, "",
+                    "lambda_max / lambda_min of the interval the Chebyshev smoother damps",
+                    io::Range::atLeast(2.0));
+  io::declareInt(p, "coarse size", 2000, "MueLu stops coarsening below this many rows", io::Range::atLeast(10));
+  io::declareString(p, "Ifpack2 type", "symmetric Gauss-Seidel",
+                    "single-level preconditioner when preconditioner = Ifpack2",
+                    {"symmetric Gauss-Seidel", "Chebyshev", "ILUT"});
+  io::declareBool(p, "verbose", false, "print the Krylov solver's convergence history");
+  return p;
+}
+
+namespace {
+ParameterList mueluParameters(const ParameterList &s, const LinearSolverContext &c) {
+  ParameterList m;
+  m.set("verbosity", s.get<bool>("verbose") ? "low" : "none");
+  m.set("number of equations", 3);
+  m.set("multigrid algorithm", "sa");
+  m.set("coarse: max size", s.get<int>("coarse size"));
+  const int degree = s.get<int>("smoother degree");
+  if (s.get<std::string>("MueLu smoother") == "Chebyshev") {
+    m.set("smoother: type", "CHEBYSHEV");
+    ParameterList &sp = m.sublist("smoother: params");
+    sp.set("chebyshev: degree", degree);
+    sp.set("chebyshev: eigenvalue max iterations", s.get<int>("Chebyshev eigenvalue iterations"));
+    sp.set("chebyshev: ratio eigenvalue", s.get<double>("Chebyshev eigenvalue ratio"));
+  } else {
+    m.set("smoother: type", "RELAXATION");
+    ParameterList &sp = m.sublist("smoother: params");
+    sp.set("relaxation: type", "Symmetric Gauss-Seidel");
+    sp.set("relaxation: sweeps", degree);
+  }
+  if (c.ranks > 1) {
+    // KLU2's multi-process path is wrong here (TRILINOS-NOTES): gather the coarse levels onto
+    // one rank by repartitioning instead.
+    m.set("repartition: enable", true);
+    m.set("repartition: partitioner", "zoltan2");
+    m.set("repartition: start level", 1);
+    m.set("repartition: min rows per proc", 2000);
+  }
+  if (!c.coordinates.is_null()) m.set("Coordinates", c.coordinates);
+  if (!c.rigidBodyModes.is_null()) m.set("Nullspace", c.rigidBodyModes);
+  return m;
+}
+
+ParameterList ifpack2Parameters(const ParameterList &s) {
+  ParameterList p;
+  const std::string type = s.get<std::string>("Ifpack2 type");
+  if (type == "ILUT") {
+    p.set("Prec Type", "ILUT");
+  } else if (type == "Chebyshev") {
+    p.set("Prec Type", "CHEBYSHEV");
+    p.sublist("Ifpack2 Settings").set("chebyshev: degree", s.get<int>("smoother degree"));
+    p.sublist("Ifpack2 Settings").set("chebyshev: eigenvalue max iterations", s.get<int>("Chebyshev eigenvalue iterations"));
+  } else {
+    p.set("Prec Type", "RELAXATION");
+    p.sublist("Ifpack2 Settings").set("relaxation: type", "Symmetric Gauss-Seidel");
+    p.sublist("Ifpack2 Settings").set("relaxation: sweeps", s.get<int>("smoother degree"));
+  }
+  return p;
+}
+} // namespace
+
+Teuchos::RCP<ParameterList> stratimikosParameters(const ParameterList &s, const LinearSolverContext &c) {
+  auto p = Teuchos::rcp(new ParameterList("Linear solver"));
+  if (s.get<std::string>("type") == "direct") {
+    p->set("Linear Solver Type", "Amesos2");
+    p->sublist("Linear Solver Types").sublist("Amesos2").set("Solver Type", "KLU2");
+    p->set("Preconditioner Type", "None");
+    return p;
+  }
+  std::string method = s.get<std::string>("Krylov method");
+  if (method == "auto") method = c.symmetric ? "cg" : "gmres";
+  const std::string belosName = method == "cg" ? "Block CG" : "Block GMRES";
+  p->set("Linear Solver Type", "Belos");
+  ParameterList &belos = p->sublist("Linear Solver Types").sublist("Belos");
+  belos.set("Solver Type", belosName);
+  ParameterList &solver = belos.sublist("Solver Types").sublist(belosName);
+  solver.set("Convergence Tolerance", s.get<double>("tolerance"));
+  solver.set("Maximum Iterations", s.get<int>("maximum iterations"));
+  if (method == "gmres") solver.set("Num Blocks", s.get<int>("GMRES restart"));
+  if (s.get<bool>("verbose")) {
+    solver.set("Verbosity", 33); // Errors + StatusTestDetails + FinalSummary
+    solver.set("Output Frequency", 10);
+    belos.sublist("VerboseObject").set("Verbosity Level", "medium");
+  }
+  const std::string prec = s.get<std::string>("preconditioner");
+  if (prec == "MueLu") {
+    p->set("Preconditioner Type", "MueLu");
+    p->sublist("Preconditioner Types").set("MueLu", mueluParameters(s, c));
+  } else if (prec == "Ifpack2") {
+    p->set("Preconditioner Type", "Ifpack2");
+    p->sublist("Preconditioner Types").set("Ifpack2", ifpack2Parameters(s));
+  } else {
+    p->set("Preconditioner Type", "None");
+  }
+  return p;
+}
+
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
+buildLinearSolver(const ParameterList &section, const LinearSolverContext &context) {
+  Stratimikos::DefaultLinearSolverBuilder builder;
+  Stratimikos::enableMueLu<assembly::LO, assembly::GO, assembly::Node>(builder);
+  using Base = Thyra::PreconditionerFactoryBase<double>;
+  using Impl = Thyra::Ifpack2PreconditionerFactory<assembly::CrsMatrix>;
+  builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, Impl>(), "Ifpack2");
+  builder.setParameterList(stratimikosParameters(section, context));
+  return builder.createLinearSolveStrategy("");
+}
+
+} // namespace glossa::solvers

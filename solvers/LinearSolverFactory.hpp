@@ -1,0 +1,31 @@
+#pragma once
+// The linear solver of every Newton step, chosen in the deck's "Linear solver" section and built
+// through Stratimikos: Belos CG (symmetric tangent) or GMRES, preconditioned by MueLu smoothed
+// aggregation (rigid-body modes and coordinates supplied), Ifpack2 alone, or none; or a direct
+// solve with Amesos2 for comparison. This unit holds the expensive template instantiations
+// (Stratimikos::enableMueLu, Ifpack2 registration): edit it rarely.
+
+#include <Teuchos_ParameterList.hpp>
+#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+
+#include "assembly/TpetraTypes.hpp"
+
+namespace glossa::solvers {
+
+struct LinearSolverContext {
+  Teuchos::RCP<assembly::MultiVector> coordinates;    // per owned node, 3 columns
+  Teuchos::RCP<assembly::MultiVector> rigidBodyModes; // per owned dof, 6 columns
+  int ranks = 1;
+  bool symmetric = true; // the tangent is symmetric (no follower loads yet)
+};
+
+Teuchos::ParameterList linearSolverParameters();
+
+// The Stratimikos parameter list the deck section stands for (exposed for tests and the docs).
+Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList &section,
+                                                           const LinearSolverContext &context);
+
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
+buildLinearSolver(const Teuchos::ParameterList &section, const LinearSolverContext &context);
+
+} // namespace glossa::solvers

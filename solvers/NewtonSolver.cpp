@@ -1,0 +1,116 @@
+#include "solvers/NewtonSolver.hpp"
+
+#include <cmath>
+
+#include <NOX.H>
+#include <NOX_Observer.hpp>
+#include <NOX_SolverStats.hpp>
+#include <NOX_Thyra.H>
+#include <Thyra_TpetraThyraWrappers.hpp>
+
+#include "io/deck/ParameterSpec.hpp"
+
+namespace glossa::solvers {
+
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+using Teuchos::rcp;
+
+ParameterList nonlinearSolverParameters() {
+  ParameterList p;
+  io::declareInt(p, "maximum iterations", 25, "Newton iterations per solve before the step is cut back",
+                 io::Range::closed(1, 1000));
+  io::declareDouble(p, "residual tolerance", 1e-10, "",
+                    "converged when ||f|| <= this x max(||f_ext||, ||f|| at the start of the step)",
+                    io::Range::open(0.0, 1.0));
+  io::declareDouble(p, "update tolerance", 1e-8, "",
+                    "and when the Newton update is below this relative to the displacement "
+                    "(weighted RMS norm; absolute floor 1e-9 of the element size)",
+                    io::Range::open(0.0, 1.0));
+  io::declareString(p, "line search", "full step", "NOX line search",
+                    {"full step", "backtrack", "polynomial"});
+  return p;
+}
+
+namespace {
+class IterationObserver : public NOX::Observer {
+public:
+  explicit IterationObserver(const NewtonSolver::IterationCallback &cb, NewtonResult &r) : cb_(cb), r_(r) {}
+  void runPostIterate(const NOX::Solver::Generic &solver) override {
+    const double normF = solver.getSolutionGroup().getNormF();
+    const int krylov = solver.getSolverStatistics()->linearSolve.lastLinearSolve_NumIterations;
+    r_.residualNorms.push_back(normF);
+    r_.linearIterationsPerStep.push_back(krylov);
+    if (cb_) cb_(solver.getNumIterations(), normF, krylov);
+  }
+
+private:
+  const NewtonSolver::IterationCallback &cb_;
+  NewtonResult &r_;
+};
+} // namespace
+
+NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const ParameterList &section, double lengthScale,
+                           double linearTolerance)
+    : model_(std::move(model)), section_(section), lengthScale_(lengthScale), linearTolerance_(linearTolerance) {}
+
+NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
+                                 const IterationCallback &onIteration) const {
+  using namespace NOX::StatusTest;
+  NewtonResult result;
+
+  auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
+  auto xThyra = Thyra::createVector(RCP<assembly::Vector>(uCopy), model_->get_x_space());
+  NOX::Thyra::Vector initialGuess(xThyra);
+  auto group = rcp(new NOX::Thyra::Group(initialGuess, model_, model_->create_W_op(), model_->get_W_factory(),
+                                         Teuchos::null, Teuchos::null, Teuchos::null));
+  group->computeF();
+  const double normF0 = group->getNormF();
+  result.residualNorms.push_back(normF0);
+
+  auto normF = rcp(new NormF(residualTolerance, NormF::Unscaled));
+  auto update = rcp(new NormWRMS(section_.get<double>("update tolerance"), 1e-9 * lengthScale_));
+  auto converged = rcp(new Combo(Combo::AND));
+  converged->addStatusTest(normF);
+  converged->addStatusTest(update);
+  auto tests = rcp(new Combo(Combo::OR));
+  tests->addStatusTest(rcp(new FiniteValue));
+  tests->addStatusTest(converged);
+  tests->addStatusTest(rcp(new MaxIters(section_.get<int>("maximum iterations"))));
+
+  auto params = Teuchos::parameterList();
+  params->set("Nonlinear Solver", "Line Search Based");
+  const std::string ls = section_.get<std::string>("line search");
+  params->sublist("Line Search").set("Method", ls == "full step" ? "Full Step" : ls == "backtrack" ? "Backtrack" : "Polynomial");
+  params->sublist("Printing").set("Output Information", NOX::Utils::Error);
+  params->sublist("Solver Options").set<RCP<NOX::Observer>>("User Defined Pre/Post Operator",
+                                                           rcp(new IterationObserver(onIteration, result)));
+  // NOX passes its own relative tolerance to every linear solve: it must be the deck's.
+  params->sublist("Direction").sublist("Newton").sublist("Linear Solver").set("Tolerance", linearTolerance_);
+
+  // Already converged (e.g. an Uzawa update that changed nothing)? Then no iteration is needed.
+  if (std::isfinite(normF0) && normF0 <= residualTolerance) {
+    result.converged = true;
+    return result;
+  }
+  if (!std::isfinite(normF0)) {
+    result.elementInverted = !model_->lastStatus().valid;
+    return result;
+  }
+
+  auto solver = NOX::Solver::buildSolver(group, tests, params);
+  const StatusType status = solver->solve();
+  result.iterations = solver->getNumIterations();
+  result.linearIterations = solver->getSolverStatistics()->linearSolve.lastNonlinearSolve_NumLinearIterations;
+  result.converged = status == Converged;
+  result.elementInverted = !model_->lastStatus().valid;
+  if (result.converged) {
+    const auto &x = dynamic_cast<const NOX::Thyra::Vector &>(solver->getSolutionGroup().getX());
+    auto solved = Thyra::TpetraOperatorVectorExtraction<double, assembly::LO, assembly::GO, assembly::Node>::getConstTpetraVector(
+        x.getThyraRCPVector());
+    u.assign(*solved);
+  }
+  return result;
+}
+
+} // namespace glossa::solvers

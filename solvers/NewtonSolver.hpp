@@ -1,0 +1,48 @@
+#pragma once
+// One nonlinear solve f(u) = 0 with NOX (line-search Newton) on the Thyra model evaluator,
+// configured from the deck's "Nonlinear solver" section. Reports the iterations, the Krylov
+// iterations and the residual history (to show quadratic convergence).
+
+#include <functional>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "assembly/ModelEvaluator.hpp"
+
+namespace glossa::solvers {
+
+struct NewtonResult {
+  bool converged = false;
+  bool elementInverted = false;
+  int iterations = 0;
+  int linearIterations = 0;
+  std::vector<double> residualNorms; // ||f|| before each iteration and at the end
+  std::vector<int> linearIterationsPerStep;
+};
+
+Teuchos::ParameterList nonlinearSolverParameters();
+
+class NewtonSolver {
+public:
+  // `onIteration(k, ||f||, krylov iterations)` is called on every rank after each iteration.
+  using IterationCallback = std::function<void(int, double, int)>;
+
+  // `linearTolerance`: relative residual reduction asked of each Krylov solve.
+  NewtonSolver(Teuchos::RCP<assembly::ModelEvaluator> model, const Teuchos::ParameterList &section,
+               double lengthScale, double linearTolerance);
+
+  // Solves from the initial guess u (owned vector), overwriting it with the solution when
+  // converged. `residualTolerance` is absolute (the caller scales it by the load).
+  NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration) const;
+
+  double relativeResidualTolerance() const { return section_.get<double>("residual tolerance"); }
+
+private:
+  Teuchos::RCP<assembly::ModelEvaluator> model_;
+  Teuchos::ParameterList section_;
+  double lengthScale_;
+  double linearTolerance_;
+};
+
+} // namespace glossa::solvers

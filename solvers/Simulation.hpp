@@ -1,0 +1,32 @@
+#pragma once
+// The Simulation facade (DESIGN.md §3): from a validated deck it builds the scene, the
+// distributed assembly, the linear and nonlinear solvers and the Uzawa loop, then steps through
+// time, committing each converged step (displacement and multipliers) and rolling back a failed
+// one, and writes results as it goes so a run stopped at any point leaves readable files.
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_ParameterList.hpp>
+
+#include "io/deck/Deck.hpp"
+
+namespace glossa::solvers {
+
+// Parameters of the sections the solver side owns ("Time", "Incompressibility",
+// "Nonlinear solver", "Linear solver", "Output"), to be merged into the deck schema.
+void declareSolverParameters(Teuchos::ParameterList &schema);
+
+struct RunOptions {
+  std::filesystem::path outputDirectory; // empty: the deck's Output/directory
+  bool quiet = false;
+};
+
+// Runs the deck; returns the summary that was written to summary.json. Collective.
+// Throws io::DeckError for deck problems found while building the scene.
+nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
+                             const RunOptions &options);
+
+} // namespace glossa::solvers

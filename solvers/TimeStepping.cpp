@@ -1,0 +1,42 @@
+#include "solvers/TimeStepping.hpp"
+
+#include <algorithm>
+
+#include "io/deck/ParameterSpec.hpp"
+
+namespace glossa::solvers {
+
+Teuchos::ParameterList timeParameters() {
+  Teuchos::ParameterList p;
+  io::declareDouble(p, "end time", 1.0, "s", "time of the last step", io::Range::positive());
+  io::declareDouble(p, "step size", 0.1, "s", "nominal step", io::Range::positive());
+  io::declareDouble(p, "minimum step size", 1e-6, "s",
+                    "the run stops (and says why) when a failing step would be cut below this",
+                    io::Range::positive());
+  return p;
+}
+
+StepSizeController::StepSizeController(const Teuchos::ParameterList &s)
+    : endTime_(s.get<double>("end time")), nominal_(std::min(s.get<double>("step size"), endTime_)),
+      minimum_(s.get<double>("minimum step size")), dt_(nominal_) {}
+
+double StepSizeController::nextStep(double t) const {
+  // Land exactly on the end time instead of leaving a sliver step.
+  const double remaining = endTime_ - t;
+  return remaining < 1.0001 * dt_ ? remaining : dt_;
+}
+
+bool StepSizeController::cutBack() {
+  successes_ = 0;
+  dt_ *= 0.5;
+  return dt_ >= minimum_;
+}
+
+void StepSizeController::accept() {
+  if (++successes_ >= 2 && dt_ < nominal_) {
+    dt_ = std::min(2.0 * dt_, nominal_);
+    successes_ = 0;
+  }
+}
+
+} // namespace glossa::solvers

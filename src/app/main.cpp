@@ -1,0 +1,112 @@
+// glossa: the command-line front end. `glossa --help` lists the commands.
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <Tpetra_Core.hpp>
+
+#include "app/DeckSchema.hpp"
+#include "io/deck/Deck.hpp"
+#include "io/deck/DeckError.hpp"
+#include "io/deck/DeckReference.hpp"
+#include "solvers/Simulation.hpp"
+
+namespace {
+
+const char *kUsage = R"(glossa - finite elements for nearly incompressible, fibre-reinforced, active soft tissue
+
+usage:
+  glossa run DECK.xml [--output DIR] [--set path/to/parameter=value ...] [--quiet]
+      run a deck; results (results.xdmf/.h5, traces.csv, summary.json) go to DIR
+      (default: the deck's Output/directory). Under mpiexec -np N it runs on N ranks.
+  glossa validate DECK.xml [--set path=value ...]
+      check a deck and print it with every default filled in
+  glossa schema [--markdown]
+      print every deck parameter (--markdown: the text of doc/deck-reference.md)
+  glossa --help | --version
+
+--set overrides any deck parameter, e.g. --set Mesh/Box/cells=16,16,16 (for sweeps).
+Exit status: 0 success, 1 run did not converge or failed, 2 bad deck or command line.
+)";
+
+struct Arguments {
+  std::string command, deck, output;
+  std::vector<std::string> overrides;
+  bool quiet = false, markdown = false;
+};
+
+Arguments parse(int argc, char **argv) {
+  Arguments a;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) throw glossa::io::DeckError("no command given; see glossa --help");
+  a.command = args[0];
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string &s = args[i];
+    auto value = [&](const char *flag) {
+      if (i + 1 >= args.size()) throw glossa::io::DeckError(std::string(flag) + " needs a value");
+      return args[++i];
+    };
+    if (s == "--output") a.output = value("--output");
+    else if (s == "--set") a.overrides.push_back(value("--set"));
+    else if (s == "--quiet") a.quiet = true;
+    else if (s == "--markdown") a.markdown = true;
+    else if (!s.empty() && s[0] == '-') throw glossa::io::DeckError("unknown option " + s + "; see glossa --help");
+    else if (a.deck.empty()) a.deck = s;
+    else throw glossa::io::DeckError("unexpected argument " + s + "; see glossa --help");
+  }
+  return a;
+}
+
+glossa::io::Deck loadDeck(const Arguments &a, const Teuchos::ParameterList &schema) {
+  if (a.deck.empty()) throw glossa::io::DeckError("glossa " + a.command + " needs a deck file");
+  auto deck = glossa::io::Deck::fromFile(a.deck);
+  for (const auto &o : a.overrides) deck.applyOverride(o, schema);
+  deck.validate(schema);
+  return deck;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  Tpetra::ScopeGuard mpi(&argc, &argv);
+  auto comm = Tpetra::getDefaultComm();
+  const bool root = comm->getRank() == 0;
+  try {
+    if (argc >= 2 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help"))) {
+      if (root) std::fputs(kUsage, stdout);
+      return 0;
+    }
+    if (argc >= 2 && !std::strcmp(argv[1], "--version")) {
+      if (root) std::puts("glossa " GLOSSA_VERSION);
+      return 0;
+    }
+    const Arguments a = parse(argc, argv);
+    const Teuchos::ParameterList schema = glossa::app::deckSchema();
+    if (a.command == "schema") {
+      if (root) {
+        if (a.markdown) glossa::io::writeDeckReference(schema, std::cout);
+        else std::cout << glossa::io::Deck::fromList(schema, "schema").toXml();
+      }
+      return 0;
+    }
+    if (a.command == "validate") {
+      const auto deck = loadDeck(a, schema);
+      if (root) std::cout << deck.toXml();
+      return 0;
+    }
+    if (a.command == "run") {
+      const auto deck = loadDeck(a, schema);
+      const auto summary = glossa::solvers::runSimulation(deck, comm, {a.output, a.quiet});
+      return summary.value("converged", false) ? 0 : 1;
+    }
+    throw glossa::io::DeckError("unknown command '" + a.command + "'; see glossa --help");
+  } catch (const glossa::io::DeckError &e) {
+    if (root) std::fprintf(stderr, "glossa: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception &e) {
+    if (root) std::fprintf(stderr, "glossa: error: %s\n", e.what());
+    return 1;
+  }
+}

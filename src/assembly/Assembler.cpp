@@ -1,0 +1,263 @@
+#include "assembly/Assembler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "fem/HexShape.hpp"
+#include "fem/Q1P0Element.hpp"
+#include "loads/DeadTraction.hpp"
+
+namespace glossa::assembly {
+
+namespace {
+Teuchos::RCP<const Map> makeMap(const std::vector<GlobalIndex> &gids, Tpetra::global_size_t total,
+                                const Teuchos::RCP<const Comm> &comm) {
+  Teuchos::Array<GO> ids(gids.begin(), gids.end());
+  return Teuchos::rcp(new Map(total, ids(), 0, comm));
+}
+} // namespace
+
+Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
+    : scene_(scene), comm_(std::move(comm)) {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  layout_ = buildDofLayout(mesh, comm_->getRank(), comm_->getSize());
+  ownedMap_ = makeMap(layout_.ownedDofs, layout_.numGlobalDofs(), comm_);
+  overlapMap_ = makeMap(layout_.overlapDofs, Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), comm_);
+  importer_ = Teuchos::rcp(new Import(ownedMap_, overlapMap_));
+  exporter_ = Teuchos::rcp(new Export(overlapMap_, ownedMap_));
+
+  constrained_.assign(3 * mesh.numNodes(), 0);
+  for (const auto &bc : scene_.dirichlet)
+    for (mesh::NodeId n : bc.nodes)
+      for (int c = 0; c < 3; ++c)
+        if (bc.fixed[c]) constrained_[3 * n + c] = 1;
+
+  nodeMultiplicity_.assign(mesh.numNodes(), 0);
+  double volume = 0.0;
+  for (std::size_t e = 0; e < mesh.numElements(); ++e) {
+    for (mesh::NodeId n : mesh.elements[e]) ++nodeMultiplicity_[n];
+    const fem::NodeMatrix X = mesh.elementCoordinates(static_cast<mesh::ElementId>(e));
+    for (const auto &q : fem::gaussHex2()) {
+      Eigen::Matrix<double, 8, 3> dNdX;
+      double detJ = 0.0;
+      if (!fem::hexGradients(X, q.xi, dNdX, detJ))
+        throw std::runtime_error("mesh element " + std::to_string(e) +
+                                 " has a non-positive Jacobian (inverted or degenerate)");
+      volume += detJ * q.weight;
+    }
+  }
+  // Dirichlet rows get a diagonal of the size of an element stiffness diagonal, so that they
+  // neither dominate nor vanish in the preconditioner's spectrum.
+  const double h = std::cbrt(volume / static_cast<double>(mesh.numElements()));
+  dirichletScale_ = (scene_.volumetric.kappa() + 4.0 / 3.0 * scene_.material->shearModulus()) * h;
+
+  elementLids_.resize(layout_.localElements.size());
+  elementGids_.resize(layout_.localElements.size());
+  for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+    const auto &hex = mesh.elements[layout_.localElements[i]];
+    for (int a = 0; a < 8; ++a)
+      for (int c = 0; c < 3; ++c) {
+        const GO gid = layout_.dof(hex[a], c);
+        elementGids_[i][3 * a + c] = gid;
+        elementLids_[i][3 * a + c] = overlapMap_->getLocalElement(gid);
+      }
+  }
+
+  graph_ = Teuchos::rcp(new FEGraph(ownedMap_, overlapMap_, 81));
+  graph_->beginAssembly();
+  for (const auto &gids : elementGids_) {
+    Teuchos::ArrayView<const GO> cols(gids.data(), 24);
+    for (GO row : gids) graph_->insertGlobalIndices(row, cols);
+  }
+  graph_->endAssembly();
+}
+
+Teuchos::RCP<FEMatrix> Assembler::createMatrix() const { return Teuchos::rcp(new FEMatrix(graph_)); }
+
+void Assembler::applyDirichlet(Vector &u, double time) const {
+  for (const auto &bc : scene_.dirichlet) {
+    const double s = bc.scale(time);
+    for (mesh::NodeId n : bc.nodes) {
+      if (layout_.nodeOwner[n] != layout_.rank) continue;
+      for (int c = 0; c < 3; ++c)
+        if (bc.fixed[c]) u.replaceGlobalValue(layout_.dof(n, c), bc.value[c] * s);
+    }
+  }
+}
+
+void Assembler::importToOverlap(const Vector &u, Vector &overlap) const {
+  overlap.doImport(u, *importer_, Tpetra::INSERT);
+}
+
+AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vector<double> &lambda,
+                                   Vector *f, FEMatrix *K) const {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  Vector uOverlap(overlapMap_), fOverlap(overlapMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+
+  if (K) {
+    K->beginAssembly();
+    K->setAllToScalar(0.0);
+  }
+  int localValid = 1;
+  double localMinJ = std::numeric_limits<double>::infinity();
+  const auto what = K ? fem::Q1P0Output::ResidualAndTangent : fem::Q1P0Output::ResidualOnly;
+  {
+    auto fData = fOverlap.getDataNonConst(0);
+    for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+      const auto e = layout_.localElements[i];
+      const auto &hex = mesh.elements[e];
+      const fem::NodeMatrix X = mesh.elementCoordinates(e);
+      fem::NodeMatrix ue;
+      for (int a = 0; a < 8; ++a)
+        for (int c = 0; c < 3; ++c) ue(a, c) = uData[elementLids_[i][3 * a + c]];
+      const fem::Q1P0Result r =
+          scene_.formulation == model::ElementFormulation::Q1P0
+              ? fem::evaluateQ1P0(X, ue, *scene_.material, scene_.volumetric, lambda[i], what)
+              : fem::evaluatePlainQ1(X, ue, *scene_.material, scene_.volumetric, what);
+      localMinJ = std::min(localMinJ, r.minJ);
+      if (!r.valid) {
+        localValid = 0;
+        continue;
+      }
+      fem::ElementVector re = r.residual;
+      fem::ElementMatrix ke = r.tangent;
+      for (int l = 0; l < 24; ++l) {
+        if (!constrained_[3 * hex[l / 3] + l % 3]) continue;
+        re(l) = 0.0;
+        if (K) {
+          ke.row(l).setZero();
+          ke.col(l).setZero();
+          ke(l, l) = dirichletScale_ / nodeMultiplicity_[hex[l / 3]];
+        }
+      }
+      for (int l = 0; l < 24; ++l) fData[elementLids_[i][l]] += re(l);
+      if (K) {
+        Teuchos::ArrayView<const GO> cols(elementGids_[i].data(), 24);
+        for (int l = 0; l < 24; ++l) {
+          Eigen::Matrix<double, 1, 24> row = ke.row(l);
+          K->sumIntoGlobalValues(elementGids_[i][l], cols, Teuchos::ArrayView<const double>(row.data(), 24));
+        }
+      }
+    }
+    // External forces enter with a minus sign: f = f_int - f_ext.
+    for (const auto &load : scene_.tractions) {
+      const Eigen::Vector3d t = load.traction * load.scale(time);
+      for (const auto &face : load.faces) {
+        if (layout_.elementOwner[face.element] != layout_.rank) continue;
+        const auto &hex = mesh.elements[face.element];
+        loads::FaceNodes Xf;
+        for (int k = 0; k < 4; ++k) Xf.row(k) = mesh.nodes[hex[mesh::kHexFaceNodes[face.localFace][k]]].transpose();
+        const loads::FaceForces ff = loads::deadTractionForces(Xf, t);
+        for (int k = 0; k < 4; ++k) {
+          const mesh::NodeId n = hex[mesh::kHexFaceNodes[face.localFace][k]];
+          for (int c = 0; c < 3; ++c)
+            if (!constrained_[3 * n + c]) fData[overlapMap_->getLocalElement(layout_.dof(n, c))] -= ff(3 * k + c);
+        }
+      }
+    }
+  }
+  if (K) K->endAssembly();
+  if (f) {
+    f->putScalar(0.0);
+    f->doExport(fOverlap, *exporter_, Tpetra::ADD);
+  }
+  AssemblyStatus status;
+  int globalValid = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localMinJ, Teuchos::outArg(status.minJ));
+  status.valid = globalValid == 1;
+  return status;
+}
+
+ElementFields Assembler::elementFields(const Vector &u, const std::vector<double> &lambda) const {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  Vector uOverlap(overlapMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  ElementFields out;
+  const std::size_t n = layout_.localElements.size();
+  out.theta.resize(n);
+  out.pressure.resize(n);
+  out.minJ.resize(n);
+  out.cauchy.resize(n);
+  out.referenceVolume.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto e = layout_.localElements[i];
+    fem::NodeMatrix ue;
+    for (int a = 0; a < 8; ++a)
+      for (int c = 0; c < 3; ++c) ue(a, c) = uData[elementLids_[i][3 * a + c]];
+    const fem::NodeMatrix X = mesh.elementCoordinates(e);
+    const auto r = scene_.formulation == model::ElementFormulation::Q1P0
+                       ? fem::evaluateQ1P0(X, ue, *scene_.material, scene_.volumetric, lambda[i],
+                                           fem::Q1P0Output::ResidualOnly)
+                       : fem::evaluatePlainQ1(X, ue, *scene_.material, scene_.volumetric,
+                                              fem::Q1P0Output::ResidualOnly);
+    out.theta[i] = r.theta;
+    out.pressure[i] = r.pressure;
+    out.minJ[i] = r.minJ;
+    out.cauchy[i] = r.cauchyMean;
+    out.referenceVolume[i] = r.referenceVolume;
+  }
+  return out;
+}
+
+double Assembler::externalForceNorm(double time) const {
+  // f(u = 0, Lambda = 0) is -f_ext exactly: the reference configuration is stress free.
+  Vector zero(ownedMap_), f(ownedMap_);
+  std::vector<double> lambda(layout_.localElements.size(), 0.0);
+  assemble(zero, time, lambda, &f, nullptr);
+  return f.norm2();
+}
+
+Teuchos::RCP<MultiVector> Assembler::coordinates() const {
+  Teuchos::Array<GO> nodeIds;
+  for (mesh::NodeId n : layout_.ownedNodes) nodeIds.push_back(layout_.nodeNumber[n]);
+  auto nodeMap = Teuchos::rcp(new Map(layout_.nodeNumber.size(), nodeIds(), 0, comm_));
+  auto X = Teuchos::rcp(new MultiVector(nodeMap, 3));
+  for (std::size_t i = 0; i < layout_.ownedNodes.size(); ++i)
+    for (int c = 0; c < 3; ++c) X->replaceLocalValue(static_cast<LO>(i), c, scene_.mesh.nodes[layout_.ownedNodes[i]](c));
+  return X;
+}
+
+Teuchos::RCP<MultiVector> Assembler::rigidBodyModes() const {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto &x : scene_.mesh.nodes) centre += x;
+  centre /= static_cast<double>(scene_.mesh.numNodes());
+  auto modes = Teuchos::rcp(new MultiVector(ownedMap_, 6));
+  for (std::size_t i = 0; i < layout_.ownedNodes.size(); ++i) {
+    const Eigen::Vector3d x = scene_.mesh.nodes[layout_.ownedNodes[i]] - centre;
+    for (int c = 0; c < 3; ++c) {
+      const LO lid = static_cast<LO>(3 * i + c);
+      modes->replaceLocalValue(lid, c, 1.0);
+      for (int r = 0; r < 3; ++r) {
+        const Eigen::Vector3d w = Eigen::Vector3d::Unit(r).cross(x); // rotation about axis r
+        modes->replaceLocalValue(lid, 3 + r, w(c));
+      }
+    }
+  }
+  return modes;
+}
+
+std::vector<double> Assembler::gatherDisplacement(const Vector &u) const {
+  std::vector<double> local(3 * scene_.mesh.numNodes(), 0.0), global(local.size(), 0.0);
+  auto data = u.getData(0);
+  for (std::size_t i = 0; i < layout_.ownedNodes.size(); ++i)
+    for (int c = 0; c < 3; ++c) local[3 * layout_.ownedNodes[i] + c] = data[3 * i + c];
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
+  return global;
+}
+
+std::vector<double> Assembler::gatherElementField(const std::vector<double> &values, int components) const {
+  std::vector<double> local(components * scene_.mesh.numElements(), 0.0), global(local.size(), 0.0);
+  for (std::size_t i = 0; i < layout_.localElements.size(); ++i)
+    for (int c = 0; c < components; ++c) local[components * layout_.localElements[i] + c] = values[components * i + c];
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
+  return global;
+}
+
+} // namespace glossa::assembly

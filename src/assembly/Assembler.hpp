@@ -1,0 +1,88 @@
+#pragma once
+// Global assembly of the condensed Q1-P0 system on Tpetra: the only place where element
+// kernels meet distributed objects. It gathers element displacements from the overlap vector,
+// calls the Eigen kernels (fem/, loads/) and sums element vectors and matrices into the owned
+// residual and the FECrsMatrix whose graph is built once.
+//
+// Dirichlet dofs stay in the system (so MueLu sees 3 dofs on every node) with the rows and
+// columns of the element matrices zeroed and a diagonal `dirichletScale`; their residual is
+// zero because the solution vector holds the prescribed values before every solve.
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Teuchos_RCP.hpp>
+
+#include "assembly/DofLayout.hpp"
+#include "assembly/TpetraTypes.hpp"
+#include "model/Scene.hpp"
+
+namespace glossa::assembly {
+
+struct AssemblyStatus {
+  bool valid = true;   // false: J <= 0 in some element (on any rank)
+  double minJ = 1.0;   // global minimum over quadrature points
+};
+
+// Element-constant results for output and for the Uzawa update.
+struct ElementFields {
+  std::vector<double> theta, pressure, minJ; // per local element
+  std::vector<Eigen::Matrix<double, 3, 3>> cauchy;
+  std::vector<double> referenceVolume;
+};
+
+class Assembler {
+public:
+  Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm);
+
+  const model::Scene &scene() const { return scene_; }
+  const DofLayout &layout() const { return layout_; }
+  Teuchos::RCP<const Map> ownedMap() const { return ownedMap_; }
+  Teuchos::RCP<const Comm> comm() const { return comm_; }
+  std::size_t numLocalElements() const { return layout_.localElements.size(); }
+
+  // A matrix on the once-built graph.
+  Teuchos::RCP<FEMatrix> createMatrix() const;
+
+  // Writes the prescribed displacements at time t into u (owned part).
+  void applyDirichlet(Vector &u, double time) const;
+
+  // Residual f = f_int(u; Lambda) - f_ext(t) and, if K is given, the tangent. `lambda` is the
+  // augmented Lagrange multiplier per local element. Collective.
+  AssemblyStatus assemble(const Vector &u, double time, const std::vector<double> &lambda,
+                          Vector *f, FEMatrix *K) const;
+
+  // Element dilatation, pressure, stress, min J (local elements). Collective (imports u).
+  ElementFields elementFields(const Vector &u, const std::vector<double> &lambda) const;
+
+  // Norm of the external force vector at time t (the scale of the Newton tolerance).
+  double externalForceNorm(double time) const;
+
+  // Nodal coordinates (owned nodes, 3 columns) and the 6 rigid-body modes (owned dofs) that
+  // MueLu needs for elasticity.
+  Teuchos::RCP<MultiVector> coordinates() const;
+  Teuchos::RCP<MultiVector> rigidBodyModes() const;
+
+  // All nodal displacements by mesh node id (3 per node) on every rank. Collective.
+  std::vector<double> gatherDisplacement(const Vector &u) const;
+  // A per-local-element field gathered by mesh element id on every rank. Collective.
+  std::vector<double> gatherElementField(const std::vector<double> &local, int components) const;
+
+private:
+  void importToOverlap(const Vector &u, Vector &overlap) const;
+
+  const model::Scene &scene_;
+  Teuchos::RCP<const Comm> comm_;
+  DofLayout layout_;
+  Teuchos::RCP<const Map> ownedMap_, overlapMap_;
+  Teuchos::RCP<Import> importer_;
+  Teuchos::RCP<Export> exporter_;
+  Teuchos::RCP<FEGraph> graph_;
+  std::vector<char> constrained_;                       // per mesh dof 3*node+c
+  std::vector<std::array<LO, 24>> elementLids_;         // overlap local ids per local element
+  std::vector<std::array<GO, 24>> elementGids_;
+  std::vector<int> nodeMultiplicity_;                    // elements sharing each mesh node
+  double dirichletScale_ = 1.0;
+};
+
+} // namespace glossa::assembly

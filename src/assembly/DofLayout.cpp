@@ -1,0 +1,45 @@
+#include "assembly/DofLayout.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <set>
+
+#include "mesh/Partition.hpp"
+
+namespace glossa::assembly {
+
+DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks) {
+  DofLayout L;
+  L.rank = rank;
+  L.ranks = ranks;
+  L.elementOwner = mesh::partitionElements(mesh, ranks);
+  L.nodeOwner.assign(mesh.numNodes(), std::numeric_limits<int>::max());
+  for (std::size_t e = 0; e < mesh.numElements(); ++e)
+    for (mesh::NodeId n : mesh.elements[e]) L.nodeOwner[n] = std::min(L.nodeOwner[n], L.elementOwner[e]);
+
+  // Renumber nodes rank by rank (stable in mesh id within a rank).
+  L.nodeNumber.assign(mesh.numNodes(), -1);
+  GlobalIndex next = 0;
+  for (int r = 0; r < ranks; ++r)
+    for (std::size_t n = 0; n < mesh.numNodes(); ++n)
+      if (L.nodeOwner[n] == r) {
+        L.nodeNumber[n] = next++;
+        if (r == rank) L.ownedNodes.push_back(static_cast<mesh::NodeId>(n));
+      }
+
+  for (std::size_t e = 0; e < mesh.numElements(); ++e)
+    if (L.elementOwner[e] == rank) L.localElements.push_back(static_cast<mesh::ElementId>(e));
+
+  for (mesh::NodeId n : L.ownedNodes)
+    for (int c = 0; c < 3; ++c) L.ownedDofs.push_back(L.dof(n, c));
+  std::set<GlobalIndex> ghosts;
+  for (mesh::ElementId e : L.localElements)
+    for (mesh::NodeId n : mesh.elements[e])
+      if (L.nodeOwner[n] != rank)
+        for (int c = 0; c < 3; ++c) ghosts.insert(L.dof(n, c));
+  L.overlapDofs = L.ownedDofs;
+  L.overlapDofs.insert(L.overlapDofs.end(), ghosts.begin(), ghosts.end());
+  return L;
+}
+
+} // namespace glossa::assembly

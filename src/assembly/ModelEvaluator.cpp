@@ -1,0 +1,65 @@
+#include "assembly/ModelEvaluator.hpp"
+
+#include <chrono>
+#include <limits>
+
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Thyra_VectorStdOps.hpp>
+
+namespace glossa::assembly {
+
+using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
+using MEB = Thyra::ModelEvaluatorBase;
+
+ModelEvaluator::ModelEvaluator(Teuchos::RCP<const Assembler> assembler,
+                               Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory)
+    : assembler_(std::move(assembler)), solverFactory_(std::move(solverFactory)) {
+  space_ = Thyra::createVectorSpace<double, LO, GO, Node>(assembler_->ownedMap());
+  matrix_ = assembler_->createMatrix();
+
+  MEB::InArgsSetup<double> in;
+  in.setModelEvalDescription("Glossa Q1-P0 residual");
+  in.setSupports(MEB::IN_ARG_x);
+  prototypeInArgs_ = in;
+  nominal_ = in;
+
+  auto x0 = Thyra::createMember(space_);
+  Thyra::V_S(x0.ptr(), 0.0);
+  nominal_.set_x(x0);
+
+  MEB::OutArgsSetup<double> out;
+  out.setModelEvalDescription("Glossa Q1-P0 residual");
+  out.setSupports(MEB::OUT_ARG_f);
+  out.setSupports(MEB::OUT_ARG_W_op);
+  prototypeOutArgs_ = out;
+}
+
+Teuchos::RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const {
+  // One matrix serves every W: NOX asks for it once per group.
+  return Thyra::tpetraLinearOp<double, LO, GO, Node>(space_, space_, matrix_);
+}
+
+void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::OutArgs<double> &out) const {
+  const auto start = std::chrono::steady_clock::now();
+  const Teuchos::RCP<const Vector> x = Extract::getConstTpetraVector(in.get_x());
+  const Teuchos::RCP<Thyra::VectorBase<double>> fThyra = out.get_f();
+  const Teuchos::RCP<Thyra::LinearOpBase<double>> W = out.get_W_op();
+  Teuchos::RCP<Vector> f = fThyra.is_null() ? Teuchos::null : Extract::getTpetraVector(fThyra);
+  FEMatrix *K = nullptr;
+  if (!W.is_null()) {
+    auto op = Extract::getTpetraOperator(W);
+    K = dynamic_cast<FEMatrix *>(op.get());
+    TEUCHOS_TEST_FOR_EXCEPTION(K == nullptr, std::logic_error, "W_op is not the model's FECrsMatrix");
+  }
+  std::vector<double> noLambda;
+  const std::vector<double> &lambda =
+      lambda_ ? *lambda_ : (noLambda = std::vector<double>(assembler_->numLocalElements(), 0.0));
+  Vector fScratch(assembler_->ownedMap());
+  lastStatus_ = assembler_->assemble(*x, time_, lambda, f.is_null() ? (K ? &fScratch : nullptr) : f.get(), K);
+  if (!lastStatus_.valid && !f.is_null()) f->putScalar(std::numeric_limits<double>::quiet_NaN());
+  if (!f.is_null()) ++residualEvaluations_;
+  if (K) ++tangentEvaluations_;
+  assemblySeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace glossa::assembly

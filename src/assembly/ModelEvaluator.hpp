@@ -1,0 +1,56 @@
+#pragma once
+// Serves the residual and the tangent to NOX through Thyra (Trilinos' model-evaluator
+// interface): x is the owned displacement vector, f = f_int - f_ext, W the condensed tangent.
+// The time and the augmented Lagrange multipliers are held fixed during one Newton solve and
+// set by the Uzawa loop and the time stepper.
+
+#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+#include <Thyra_StateFuncModelEvaluatorBase.hpp>
+
+#include "assembly/Assembler.hpp"
+
+namespace glossa::assembly {
+
+class ModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<double> {
+public:
+  ModelEvaluator(Teuchos::RCP<const Assembler> assembler,
+                 Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory);
+
+  void setTime(double t) { time_ = t; }
+  void setLambda(const std::vector<double> *lambda) { lambda_ = lambda; }
+  // Status of the last evaluation: false if an element inverted (f was set to NaN so that
+  // NOX's finite-value test stops the solve).
+  const AssemblyStatus &lastStatus() const { return lastStatus_; }
+  Teuchos::RCP<FEMatrix> matrix() const { return matrix_; }
+  int residualEvaluations() const { return residualEvaluations_; }
+  int tangentEvaluations() const { return tangentEvaluations_; }
+  double assemblySeconds() const { return assemblySeconds_; }
+
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_f_space() const override { return space_; }
+  Thyra::ModelEvaluatorBase::InArgs<double> getNominalValues() const override { return nominal_; }
+  Thyra::ModelEvaluatorBase::InArgs<double> createInArgs() const override { return prototypeInArgs_; }
+  Teuchos::RCP<Thyra::LinearOpBase<double>> create_W_op() const override;
+  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> get_W_factory() const override {
+    return solverFactory_;
+  }
+
+private:
+  Thyra::ModelEvaluatorBase::OutArgs<double> createOutArgsImpl() const override { return prototypeOutArgs_; }
+  void evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<double> &in,
+                     const Thyra::ModelEvaluatorBase::OutArgs<double> &out) const override;
+
+  Teuchos::RCP<const Assembler> assembler_;
+  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
+  Teuchos::RCP<FEMatrix> matrix_;
+  Thyra::ModelEvaluatorBase::InArgs<double> prototypeInArgs_, nominal_;
+  Thyra::ModelEvaluatorBase::OutArgs<double> prototypeOutArgs_;
+  double time_ = 0.0;
+  const std::vector<double> *lambda_ = nullptr;
+  mutable AssemblyStatus lastStatus_;
+  mutable int residualEvaluations_ = 0, tangentEvaluations_ = 0;
+  mutable double assemblySeconds_ = 0.0;
+};
+
+} // namespace glossa::assembly

@@ -1,0 +1,47 @@
+#pragma once
+// The scene: what is simulated, independent of how it is solved (DESIGN.md §3). The mesh, the
+// material, boundary conditions and loads with their time functions, and the named points whose
+// displacement is traced. No Trilinos.
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "materials/IsochoricMaterial.hpp"
+#include "materials/VolumetricEnergy.hpp"
+#include "mesh/HexMesh.hpp"
+#include "model/TimeFunction.hpp"
+
+namespace glossa::model {
+
+enum class ElementFormulation { Q1P0, PlainQ1 };
+
+// u_i(node, t) = value_i * scale(t) for every fixed component i of every node in the set.
+struct DirichletCondition {
+  std::string name;
+  std::vector<mesh::NodeId> nodes;
+  std::array<bool, 3> fixed{false, false, false};
+  Eigen::Vector3d value = Eigen::Vector3d::Zero();
+  TimeFunction scale = TimeFunction::constant();
+};
+
+// A dead traction (force per reference area) on a face set, scaled in time.
+struct DeadTractionLoad {
+  std::string name;
+  std::vector<mesh::ElementFace> faces;
+  Eigen::Vector3d traction = Eigen::Vector3d::Zero();
+  TimeFunction scale = TimeFunction::constant();
+};
+
+struct Scene {
+  mesh::HexMesh mesh;
+  std::shared_ptr<const materials::IsochoricMaterial> material;
+  materials::VolumetricEnergy volumetric{materials::VolumetricEnergy::Form::SimoTaylor, 0.0};
+  ElementFormulation formulation = ElementFormulation::Q1P0;
+  std::vector<DirichletCondition> dirichlet;
+  std::vector<DeadTractionLoad> tractions;
+  std::vector<std::string> tracedPoints; // names in mesh.namedPoints, in deck order
+};
+
+} // namespace glossa::model

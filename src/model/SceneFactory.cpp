@@ -1,0 +1,233 @@
+#include "model/SceneFactory.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "io/deck/DeckError.hpp"
+#include "io/deck/ParameterSpec.hpp"
+#include "materials/NeoHookean.hpp"
+#include "mesh/BoxGenerator.hpp"
+#include "mesh/CookMembraneGenerator.hpp"
+#include "mesh/HexMesh.hpp"
+
+namespace glossa::model {
+
+namespace {
+using Teuchos::Array;
+using Teuchos::ParameterList;
+
+Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
+
+ParameterList meshParameters() {
+  ParameterList p;
+  io::declareString(p, "type", "box", "built-in generator", {"box", "cook-membrane"});
+  ParameterList &box = p.sublist("Box", false, "a structured box of hexahedra (type = box); face "
+                                              "and node sets xmin, xmax, ymin, ymax, zmin, zmax");
+  io::declareDoubleArray(box, "origin", Array<double>(3, 0.0), "m", "corner with the smallest coordinates", 3);
+  io::declareDoubleArray(box, "lengths", Array<double>(3, 1e-3), "m", "edge lengths", 3, io::Range::positive());
+  io::declareIntArray(box, "cells", Array<int>(3, 8), "elements along x, y, z", 3, io::Range::closed(1, 1000));
+  ParameterList &cook = p.sublist("Cook membrane", false,
+                                  "Cook's trapezoidal membrane (type = cook-membrane), corners "
+                                  "(0,0), (48,44), (48,60), (0,44) mm, extruded in z; sets clamped, "
+                                  "loaded, bottom, top, front, back; named point tip");
+  io::declareInt(cook, "cells per side", 8, "elements along each in-plane direction", io::Range::closed(1, 1000));
+  io::declareInt(cook, "cells through thickness", 1, "elements along z", io::Range::closed(1, 1000));
+  io::declareDouble(cook, "thickness", 1.0, "mm", "extrusion depth", io::Range::positive());
+  io::declareDouble(cook, "scale", 1e-3, "m/mm", "length unit of the corner coordinates", io::Range::positive());
+  ParameterList &faces = p.sublist("Face sets", false,
+                                   "derived face sets: the faces of an existing set whose centroid "
+                                   "lies in a box");
+  ParameterList &face = faces.sublist(io::kAnySublist);
+  io::declareString(face, "from", "", "existing face set to select from");
+  io::declareDoubleArray(face, "box min", Array<double>(3, -1e300), "m", "lower corner of the selection box", 3);
+  io::declareDoubleArray(face, "box max", Array<double>(3, 1e300), "m", "upper corner of the selection box", 3);
+  return p;
+}
+
+ParameterList materialParameters() {
+  ParameterList p;
+  io::declareString(p, "type", "neo-Hookean", "isochoric point law (paper eq. 8)", {"neo-Hookean"});
+  io::declareDouble(p, "shear modulus", 80.194e6, "Pa", "mu", io::Range::positive());
+  io::declareDouble(p, "Poisson's ratio", 0.4999, "",
+                    "nu, gives the bulk modulus kappa = 2 mu (1+nu) / (3 (1-2nu)) unless "
+                    "'bulk modulus' is set",
+                    io::Range::open(-1.0, 0.5));
+  io::declareDouble(p, "bulk modulus", 0.0, "Pa", "kappa; 0 means: from Poisson's ratio",
+                    io::Range::nonNegative());
+  io::declareString(p, "volumetric energy", "simo-taylor",
+                    "U(theta): simo-taylor kappa/4 (theta^2-1-2 ln theta) (as step-44), "
+                    "log-squared kappa/2 ln^2 theta, quadratic kappa/2 (theta-1)^2",
+                    {"simo-taylor", "log-squared", "quadratic"});
+  io::declareString(p, "element", "Q1P0",
+                    "Q1P0: three-field, pressure and dilatation condensed per element; Q1: plain "
+                    "displacement element (locks; for comparison only)",
+                    {"Q1P0", "Q1"});
+  return p;
+}
+
+ParameterList dirichletParameters() {
+  ParameterList p;
+  io::declareString(p, "node set", "", "node set (or face set: its nodes) to constrain");
+  io::declareString(p, "components", "x,y,z", "constrained components, comma separated",
+                    {"x", "y", "z", "x,y", "x,z", "y,z", "x,y,z"});
+  io::declareDoubleArray(p, "value", Array<double>(3, 0.0), "m",
+                         "prescribed displacement (entries of free components ignored)", 3);
+  p.set("time function", TimeFunction::validParameters(), "scales the value in time");
+  p.sublist("time function").set("type", std::string("constant"));
+  return p;
+}
+
+ParameterList loadParameters() {
+  ParameterList p;
+  io::declareString(p, "type", "dead traction",
+                    "dead traction: force per reference area, fixed direction", {"dead traction"});
+  io::declareString(p, "face set", "", "faces the load acts on");
+  io::declareDoubleArray(p, "traction", Array<double>(3, 0.0), "Pa", "traction vector at scale 1", 3);
+  p.set("time function", TimeFunction::validParameters(), "scales the traction in time");
+  return p;
+}
+
+ParameterList namedPointParameters() {
+  ParameterList p;
+  io::declareDoubleArray(p, "position", Array<double>(3, 0.0), "m",
+                         "reference position; must coincide with a mesh node (within 1e-6 of "
+                         "the smallest element edge)", 3);
+  return p;
+}
+
+mesh::HexMesh buildMesh(const io::Deck &deck) {
+  const ParameterList &p = deck.root().sublist("Mesh");
+  mesh::HexMesh m;
+  try {
+    if (p.get<std::string>("type") == "box") {
+      const auto &b = p.sublist("Box");
+      const auto &c = b.get<Array<int>>("cells");
+      m = mesh::generateBox(vec3(b.get<Array<double>>("origin")), vec3(b.get<Array<double>>("lengths")),
+                            {c[0], c[1], c[2]});
+    } else {
+      const auto &c = p.sublist("Cook membrane");
+      m = mesh::generateCookMembrane(c.get<int>("cells per side"), c.get<int>("cells through thickness"),
+                                     c.get<double>("thickness"), c.get<double>("scale"));
+    }
+  } catch (const std::invalid_argument &e) {
+    throw io::DeckError(deck.where({"Mesh"}) + ": " + e.what());
+  }
+  const ParameterList &faces = p.sublist("Face sets");
+  for (auto it = faces.begin(); it != faces.end(); ++it) {
+    const std::string &name = faces.name(it);
+    const ParameterList &f = faces.sublist(name);
+    const std::string from = f.get<std::string>("from");
+    if (!m.faceSets.count(from))
+      throw io::DeckError(deck.where({"Mesh", "Face sets", name, "from"}) + ": no face set '" + from + "'");
+    m.faceSets[name] = mesh::facesInBox(m, m.faceSets.at(from), vec3(f.get<Array<double>>("box min")),
+                                        vec3(f.get<Array<double>>("box max")));
+    if (m.faceSets[name].empty())
+      throw io::DeckError(deck.where({"Mesh", "Face sets", name}) + ": the box selects no face of '" + from + "'");
+  }
+  return m;
+}
+
+std::string knownSets(const mesh::HexMesh &m) {
+  std::string s;
+  for (const auto &[name, nodes] : m.nodeSets) s += (s.empty() ? "" : ", ") + name;
+  for (const auto &[name, faces] : m.faceSets)
+    if (!m.nodeSets.count(name)) s += (s.empty() ? "" : ", ") + name;
+  return s;
+}
+} // namespace
+
+void declareSceneParameters(ParameterList &schema) {
+  schema.set("Mesh", meshParameters(), "the mesh and its sets");
+  schema.set("Material", materialParameters(), "the material of every element");
+  ParameterList bcs;
+  bcs.set(io::kAnySublist, dirichletParameters(), "one Dirichlet condition");
+  schema.set("Boundary conditions", bcs, "prescribed displacements, one sublist each");
+  ParameterList loads;
+  loads.set(io::kAnySublist, loadParameters(), "one load");
+  schema.set("Loads", loads, "surface loads, one sublist each");
+  ParameterList points;
+  points.set(io::kAnySublist, namedPointParameters(), "one named point");
+  schema.set("Named points", points,
+             "points whose displacement goes to traces.csv and summary.json (a generator's own "
+             "named points, e.g. 'tip', are traced too)");
+}
+
+Scene buildScene(const io::Deck &deck, double endTime) {
+  Scene scene;
+  scene.mesh = buildMesh(deck);
+  mesh::HexMesh &m = scene.mesh;
+
+  const ParameterList &mat = deck.root().sublist("Material");
+  const double mu = mat.get<double>("shear modulus");
+  const double kappaGiven = mat.get<double>("bulk modulus");
+  const double kappa = kappaGiven > 0.0 ? kappaGiven : materials::bulkModulus(mu, mat.get<double>("Poisson's ratio"));
+  scene.material = std::make_shared<materials::NeoHookean>(mu);
+  scene.volumetric = materials::VolumetricEnergy(
+      materials::VolumetricEnergy::formFromName(mat.get<std::string>("volumetric energy")), kappa);
+  scene.formulation = mat.get<std::string>("element") == "Q1" ? ElementFormulation::PlainQ1 : ElementFormulation::Q1P0;
+
+  const ParameterList &bcs = deck.root().sublist("Boundary conditions");
+  for (auto it = bcs.begin(); it != bcs.end(); ++it) {
+    const std::string &name = bcs.name(it);
+    const ParameterList &b = bcs.sublist(name);
+    DirichletCondition bc;
+    bc.name = name;
+    const std::string set = b.get<std::string>("node set");
+    if (m.nodeSets.count(set)) bc.nodes = m.nodeSets.at(set);
+    else if (m.faceSets.count(set)) bc.nodes = m.nodesOfFaceSet(set);
+    else
+      throw io::DeckError(deck.where({"Boundary conditions", name, "node set"}) + ": no node or face set '" +
+                          set + "'; the mesh has: " + knownSets(m));
+    const std::string comps = b.get<std::string>("components");
+    for (int i = 0; i < 3; ++i) bc.fixed[i] = comps.find("xyz"[i]) != std::string::npos;
+    bc.value = vec3(b.get<Array<double>>("value"));
+    try {
+      bc.scale = TimeFunction::fromParameters(b.sublist("time function"), endTime);
+    } catch (const std::invalid_argument &e) {
+      throw io::DeckError(deck.where({"Boundary conditions", name, "time function"}) + ": " + e.what());
+    }
+    scene.dirichlet.push_back(std::move(bc));
+  }
+
+  const ParameterList &loads = deck.root().sublist("Loads");
+  for (auto it = loads.begin(); it != loads.end(); ++it) {
+    const std::string &name = loads.name(it);
+    const ParameterList &l = loads.sublist(name);
+    DeadTractionLoad load;
+    load.name = name;
+    const std::string set = l.get<std::string>("face set");
+    if (!m.faceSets.count(set))
+      throw io::DeckError(deck.where({"Loads", name, "face set"}) + ": no face set '" + set +
+                          "'; the mesh has: " + knownSets(m));
+    load.faces = m.faceSets.at(set);
+    load.traction = vec3(l.get<Array<double>>("traction"));
+    try {
+      load.scale = TimeFunction::fromParameters(l.sublist("time function"), endTime);
+    } catch (const std::invalid_argument &e) {
+      throw io::DeckError(deck.where({"Loads", name, "time function"}) + ": " + e.what());
+    }
+    scene.tractions.push_back(std::move(load));
+  }
+
+  for (const auto &[name, point] : m.namedPoints) scene.tracedPoints.push_back(name);
+  const ParameterList &points = deck.root().sublist("Named points");
+  for (auto it = points.begin(); it != points.end(); ++it) {
+    const std::string &name = points.name(it);
+    const Eigen::Vector3d x = vec3(points.sublist(name).get<Array<double>>("position"));
+    const mesh::NodeId node = m.nearestNode(x);
+    double hMin = std::numeric_limits<double>::infinity();
+    for (const auto &e : m.elements) hMin = std::min(hMin, (m.nodes[e[1]] - m.nodes[e[0]]).norm());
+    if ((m.nodes[node] - x).norm() > 1e-6 * hMin) {
+      std::ostringstream s;
+      s << deck.where({"Named points", name, "position"}) << ": no mesh node there (nearest node "
+        << node << " at " << m.nodes[node].transpose() << ")";
+      throw io::DeckError(s.str());
+    }
+    m.namedPoints[name] = {x, node};
+    if (std::find(scene.tracedPoints.begin(), scene.tracedPoints.end(), name) == scene.tracedPoints.end())
+      scene.tracedPoints.push_back(name);
+  }
+  return scene;
+}
+
+} // namespace glossa::model

@@ -1,0 +1,62 @@
+#include "model/TimeFunction.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "io/deck/ParameterSpec.hpp"
+
+namespace glossa::model {
+
+TimeFunction TimeFunction::table(std::vector<double> times, std::vector<double> values) {
+  if (times.size() != values.size() || times.empty())
+    throw std::invalid_argument("time function table: 'times' and 'values' must have the same, "
+                                "non-zero length");
+  if (!std::is_sorted(times.begin(), times.end()) ||
+      std::adjacent_find(times.begin(), times.end()) != times.end())
+    throw std::invalid_argument("time function table: 'times' must increase strictly");
+  return TimeFunction(Kind::Table, 0.0, std::move(times), std::move(values));
+}
+
+Teuchos::ParameterList TimeFunction::validParameters() {
+  Teuchos::ParameterList p("time function");
+  io::declareString(p, "type", "ramp",
+                    "constant: 1 at all times; ramp: t/duration up to 1; table: piecewise linear "
+                    "in 'times'/'values', constant beyond the ends",
+                    {"constant", "ramp", "table"});
+  io::declareDouble(p, "ramp duration", 0.0, "s",
+                    "time over which a ramp rises from 0 to 1; 0 means the run's end time",
+                    io::Range::nonNegative());
+  io::declareDoubleArray(p, "times", Teuchos::Array<double>(), "s", "table abscissae (increasing)", 0);
+  io::declareDoubleArray(p, "values", Teuchos::Array<double>(), "", "table values", 0);
+  return p;
+}
+
+TimeFunction TimeFunction::fromParameters(const Teuchos::ParameterList &list, double endTime) {
+  const auto type = list.get<std::string>("type");
+  if (type == "constant") return constant();
+  if (type == "ramp") {
+    const double d = list.get<double>("ramp duration");
+    return ramp(d > 0.0 ? d : endTime);
+  }
+  const auto &t = list.get<Teuchos::Array<double>>("times");
+  const auto &v = list.get<Teuchos::Array<double>>("values");
+  return table(std::vector<double>(t.begin(), t.end()), std::vector<double>(v.begin(), v.end()));
+}
+
+double TimeFunction::operator()(double t) const {
+  switch (kind_) {
+  case Kind::Constant: return 1.0;
+  case Kind::Ramp: return std::clamp(t / duration_, 0.0, 1.0);
+  case Kind::Table: {
+    if (t <= times_.front()) return values_.front();
+    if (t >= times_.back()) return values_.back();
+    const auto hi = std::upper_bound(times_.begin(), times_.end(), t);
+    const std::size_t i = static_cast<std::size_t>(hi - times_.begin());
+    const double s = (t - times_[i - 1]) / (times_[i] - times_[i - 1]);
+    return (1 - s) * values_[i - 1] + s * values_[i];
+  }
+  }
+  return 1.0;
+}
+
+} // namespace glossa::model

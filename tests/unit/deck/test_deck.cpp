@@ -1,0 +1,140 @@
+// Deck validation: every kind of bad deck stops with a message naming the file, the line, the
+// parameter path and what is allowed; good decks get every default.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "io/deck/Deck.hpp"
+#include "io/deck/DeckError.hpp"
+#include "io/deck/DeckReference.hpp"
+#include "io/deck/ParameterSpec.hpp"
+
+using glossa::io::Deck;
+using glossa::io::DeckError;
+
+namespace {
+
+Teuchos::ParameterList schema() {
+  using namespace glossa::io;
+  Teuchos::ParameterList s("Glossa");
+  auto &mat = s.sublist("Material");
+  declareDouble(mat, "Poisson's ratio", 0.3, "", "nu", Range::open(-1.0, 0.5));
+  declareDouble(mat, "shear modulus", 1e3, "Pa", "mu", Range::positive());
+  declareString(mat, "element", "Q1P0", "formulation", {"Q1P0", "Q1"});
+  auto &box = s.sublist("Box");
+  declareIntArray(box, "cells", Teuchos::Array<int>(3, 4), "cells", 3, Range::closed(1, 100));
+  Teuchos::ParameterList bc;
+  declareString(bc, "node set", "", "set");
+  declareDoubleArray(bc, "value", Teuchos::Array<double>(3, 0.0), "m", "value", 3);
+  s.sublist("Boundary conditions").set(kAnySublist, bc);
+  return s;
+}
+
+std::string writeDeck(const std::string &name, const std::string &body) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << "<ParameterList name=\"Glossa\">\n" << body << "</ParameterList>\n";
+  return path;
+}
+
+std::string errorOf(Deck deck) {
+  try {
+    deck.validate(schema());
+  } catch (const DeckError &e) {
+    return e.what();
+  }
+  return "";
+}
+
+} // namespace
+
+TEST(Deck, FillsDefaultsIncludingRepeatedSections) {
+  auto deck = Deck::fromFile(writeDeck("good.xml", R"X(
+  <ParameterList name="Material">
+    <Parameter name="Poisson's ratio" type="double" value="0.45"/>
+  </ParameterList>
+  <ParameterList name="Boundary conditions">
+    <ParameterList name="left"><Parameter name="node set" type="string" value="xmin"/></ParameterList>
+  </ParameterList>
+)X"));
+  deck.validate(schema());
+  EXPECT_EQ(deck.root().sublist("Material").get<double>("Poisson's ratio"), 0.45);
+  EXPECT_EQ(deck.root().sublist("Material").get<double>("shear modulus"), 1e3);
+  EXPECT_EQ(deck.root().sublist("Box").get<Teuchos::Array<int>>("cells").size(), 3);
+  EXPECT_EQ(deck.root().sublist("Boundary conditions").sublist("left").get<Teuchos::Array<double>>("value").size(), 3);
+  EXPECT_NE(deck.toXml().find("allowed: real number, -1 &lt; value &lt; 0.5"), std::string::npos);
+}
+
+TEST(Deck, UnknownKeyNamesFileLinePathAndKnownKeys) {
+  const auto path = writeDeck("unknown.xml", R"X(
+  <ParameterList name="Material">
+    <Parameter name="poisson ratio" type="double" value="0.45"/>
+  </ParameterList>
+)X");
+  const std::string msg = errorOf(Deck::fromFile(path));
+  EXPECT_NE(msg.find(path + ":4"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("'Material/poisson ratio' is unknown"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Poisson's ratio"), std::string::npos) << msg;
+}
+
+TEST(Deck, WrongTypeIsRefused) {
+  const std::string msg = errorOf(Deck::fromFile(writeDeck("type.xml", R"X(
+  <ParameterList name="Material">
+    <Parameter name="shear modulus" type="string" value="soft"/>
+  </ParameterList>
+)X")));
+  EXPECT_NE(msg.find("'Material/shear modulus' has type"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must be double"), std::string::npos) << msg;
+}
+
+TEST(Deck, OutOfRangeValueNamesTheAllowedRange) {
+  for (const char *nu : {"0.5", "0.6", "-1"}) {
+    const std::string msg = errorOf(Deck::fromFile(writeDeck("range.xml", std::string(R"X(
+  <ParameterList name="Material">
+    <Parameter name="Poisson's ratio" type="double" value=")X") + nu + R"X("/>
+  </ParameterList>
+)X")));
+    EXPECT_NE(msg.find("out of range"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("-1 < value < 0.5"), std::string::npos) << msg;
+  }
+}
+
+TEST(Deck, WordNotInTheAllowedListAndWrongArraySize) {
+  std::string msg = errorOf(Deck::fromFile(writeDeck("word.xml", R"X(
+  <ParameterList name="Material"><Parameter name="element" type="string" value="Q2"/></ParameterList>
+)X")));
+  EXPECT_NE(msg.find("one of: Q1P0, Q1"), std::string::npos) << msg;
+  msg = errorOf(Deck::fromFile(writeDeck("array.xml", R"X(
+  <ParameterList name="Box"><Parameter name="cells" type="Array(int)" value="{4, 4}"/></ParameterList>
+)X")));
+  EXPECT_NE(msg.find("has 2 entries"), std::string::npos) << msg;
+}
+
+TEST(Deck, MalformedXmlAndMissingFileAreDeckErrors) {
+  const auto path = writeDeck("broken.xml", "<ParameterList name=\"Material\">\n");
+  EXPECT_THROW(Deck::fromFile(path), DeckError);
+  EXPECT_THROW(Deck::fromFile("/nonexistent/deck.xml"), DeckError);
+}
+
+TEST(Deck, CommandLineOverridesAreTypedAndChecked) {
+  auto deck = Deck::fromFile(writeDeck("override.xml", ""));
+  deck.applyOverride("Box/cells=16,16,16", schema());
+  deck.applyOverride("Material/Poisson's ratio=0.49", schema());
+  deck.validate(schema());
+  EXPECT_EQ(deck.root().sublist("Box").get<Teuchos::Array<int>>("cells")[2], 16);
+  EXPECT_EQ(deck.root().sublist("Material").get<double>("Poisson's ratio"), 0.49);
+  EXPECT_THROW(deck.applyOverride("Box/cellz=4", schema()), DeckError);
+  EXPECT_THROW(deck.applyOverride("Material/shear modulus=abc", schema()), DeckError);
+  auto bad = Deck::fromFile(writeDeck("override2.xml", ""));
+  bad.applyOverride("Material/Poisson's ratio=0.5", schema());
+  const std::string msg = errorOf(bad);
+  EXPECT_NE(msg.find("--set on the command line"), std::string::npos) << msg;
+}
+
+TEST(DeckReference, ListsEveryDeclaredParameterWithItsRange) {
+  std::ostringstream out;
+  glossa::io::writeDeckReference(schema(), out);
+  const std::string text = out.str();
+  for (const char *needle : {"`Material`", "`Poisson's ratio`", "-1 < value < 0.5", "`Boundary conditions/<any name>`",
+                             "one of: Q1P0, Q1"})
+    EXPECT_NE(text.find(needle), std::string::npos) << needle;
+}
