@@ -35,8 +35,13 @@ ParameterList nonlinearSolverParameters() {
 namespace {
 class IterationObserver : public NOX::Observer {
 public:
-  explicit IterationObserver(const NewtonSolver::IterationCallback &cb, NewtonResult &r) : cb_(cb), r_(r) {}
+  IterationObserver(const NewtonSolver::IterationCallback &cb, NewtonResult &r, assembly::ModelEvaluator &model)
+      : cb_(cb), r_(r), model_(model) {}
   void runPostIterate(const NOX::Solver::Generic &solver) override {
+    // The accepted iterate becomes the base of the next three-field linearisation.
+    const auto &x = dynamic_cast<const NOX::Thyra::Vector &>(solver.getSolutionGroup().getX());
+    model_.advanceIterates(*Thyra::TpetraOperatorVectorExtraction<double, assembly::LO, assembly::GO,
+                                                                  assembly::Node>::getConstTpetraVector(x.getThyraRCPVector()));
     const double normF = solver.getSolutionGroup().getNormF();
     const int krylov = solver.getSolverStatistics()->linearSolve.lastLinearSolve_NumIterations;
     r_.residualNorms.push_back(normF);
@@ -47,6 +52,7 @@ public:
 private:
   const NewtonSolver::IterationCallback &cb_;
   NewtonResult &r_;
+  assembly::ModelEvaluator &model_;
 };
 } // namespace
 
@@ -59,6 +65,7 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
   using namespace NOX::StatusTest;
   NewtonResult result;
 
+  model_->resetIterates(u);
   auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
   auto xThyra = Thyra::createVector(RCP<assembly::Vector>(uCopy), model_->get_x_space());
   NOX::Thyra::Vector initialGuess(xThyra);
@@ -84,7 +91,7 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
   params->sublist("Line Search").set("Method", ls == "full step" ? "Full Step" : ls == "backtrack" ? "Backtrack" : "Polynomial");
   params->sublist("Printing").set("Output Information", NOX::Utils::Error);
   params->sublist("Solver Options").set<RCP<NOX::Observer>>("User Defined Pre/Post Operator",
-                                                           rcp(new IterationObserver(onIteration, result)));
+                                                           rcp(new IterationObserver(onIteration, result, *model_)));
   // NOX passes its own relative tolerance to every linear solve: it must be the deck's.
   params->sublist("Direction").sublist("Newton").sublist("Linear Solver").set("Tolerance", linearTolerance_);
 

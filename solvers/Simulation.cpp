@@ -176,7 +176,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     // The Newton tolerance scales with the load: the external force and the step's initial residual.
     assembly::Vector f0(assembler->ownedMap());
     std::vector<double> lambdaNow = lambdaTrial;
-    assembler->assemble(uTrial, tNew, lambdaNow, &f0, nullptr);
+    assembler->assemble(uTrial, tNew, lambdaNow, nullptr, &f0, nullptr);
     double reference = std::max(assembler->externalForceNorm(tNew), f0.norm2());
     if (!(reference > 0.0)) reference = 1.0;
     const double tolerance = newton.relativeResidualTolerance() * reference;

@@ -70,14 +70,15 @@ glossa::io::Deck loadDeck(const Arguments &a, const Teuchos::ParameterList &sche
 } // namespace
 
 int main(int argc, char **argv) {
+  // Kokkos answers --help itself: ours comes first.
+  if (argc >= 2 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help"))) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
   Tpetra::ScopeGuard mpi(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
   try {
-    if (argc >= 2 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help"))) {
-      if (root) std::fputs(kUsage, stdout);
-      return 0;
-    }
     if (argc >= 2 && !std::strcmp(argv[1], "--version")) {
       if (root) std::puts("glossa " GLOSSA_VERSION);
       return 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Geometry>
 #include <Teuchos_CommHelpers.hpp>
 
 #include "fem/HexShape.hpp"
@@ -92,8 +93,27 @@ void Assembler::importToOverlap(const Vector &u, Vector &overlap) const {
   overlap.doImport(u, *importer_, Tpetra::INSERT);
 }
 
+fem::NodeMatrix Assembler::elementDisplacement(std::size_t i, const Teuchos::ArrayRCP<const double> &uData) const {
+  fem::NodeMatrix ue;
+  for (int a = 0; a < 8; ++a)
+    for (int c = 0; c < 3; ++c) ue(a, c) = uData[elementLids_[i][3 * a + c]];
+  return ue;
+}
+
+std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::vector<double> &lambda,
+                                                  const std::vector<fem::MixedBase> *previous) const {
+  Vector uOverlap(overlapMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  std::vector<fem::MixedBase> bases(layout_.localElements.size());
+  for (std::size_t i = 0; i < bases.size(); ++i)
+    bases[i] = fem::mixedBase(scene_.mesh.elementCoordinates(layout_.localElements[i]), elementDisplacement(i, uData),
+                              previous ? &(*previous)[i] : nullptr, scene_.volumetric, lambda[i]);
+  return bases;
+}
+
 AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vector<double> &lambda,
-                                   Vector *f, FEMatrix *K) const {
+                                   const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K) const {
   const mesh::HexMesh &mesh = scene_.mesh;
   Vector uOverlap(overlapMap_), fOverlap(overlapMap_);
   importToOverlap(u, uOverlap);
@@ -112,13 +132,13 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
       const auto e = layout_.localElements[i];
       const auto &hex = mesh.elements[e];
       const fem::NodeMatrix X = mesh.elementCoordinates(e);
-      fem::NodeMatrix ue;
-      for (int a = 0; a < 8; ++a)
-        for (int c = 0; c < 3; ++c) ue(a, c) = uData[elementLids_[i][3 * a + c]];
+      const fem::NodeMatrix ue = elementDisplacement(i, uData);
       const fem::Q1P0Result r =
-          scene_.formulation == model::ElementFormulation::Q1P0
-              ? fem::evaluateQ1P0(X, ue, *scene_.material, scene_.volumetric, lambda[i], what)
-              : fem::evaluatePlainQ1(X, ue, *scene_.material, scene_.volumetric, what);
+          scene_.formulation == model::ElementFormulation::PlainQ1
+              ? fem::evaluatePlainQ1(X, ue, *scene_.material, scene_.volumetric, what)
+          : bases ? fem::evaluateQ1P0Mixed(X, ue, (*bases)[i], *scene_.material, scene_.volumetric, lambda[i],
+                                           /*extrapolate=*/K == nullptr, what)
+                  : fem::evaluateQ1P0(X, ue, *scene_.material, scene_.volumetric, lambda[i], what);
       localMinJ = std::min(localMinJ, r.minJ);
       if (!r.valid) {
         localValid = 0;
@@ -188,9 +208,7 @@ ElementFields Assembler::elementFields(const Vector &u, const std::vector<double
   out.referenceVolume.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const auto e = layout_.localElements[i];
-    fem::NodeMatrix ue;
-    for (int a = 0; a < 8; ++a)
-      for (int c = 0; c < 3; ++c) ue(a, c) = uData[elementLids_[i][3 * a + c]];
+    const fem::NodeMatrix ue = elementDisplacement(i, uData);
     const fem::NodeMatrix X = mesh.elementCoordinates(e);
     const auto r = scene_.formulation == model::ElementFormulation::Q1P0
                        ? fem::evaluateQ1P0(X, ue, *scene_.material, scene_.volumetric, lambda[i],
@@ -210,7 +228,7 @@ double Assembler::externalForceNorm(double time) const {
   // f(u = 0, Lambda = 0) is -f_ext exactly: the reference configuration is stress free.
   Vector zero(ownedMap_), f(ownedMap_);
   std::vector<double> lambda(layout_.localElements.size(), 0.0);
-  assemble(zero, time, lambda, &f, nullptr);
+  assemble(zero, time, lambda, nullptr, &f, nullptr);
   return f.norm2();
 }
 

@@ -15,6 +15,7 @@
 
 #include "assembly/DofLayout.hpp"
 #include "assembly/TpetraTypes.hpp"
+#include "fem/Q1P0Element.hpp"
 #include "model/Scene.hpp"
 
 namespace glossa::assembly {
@@ -48,9 +49,17 @@ public:
   void applyDirichlet(Vector &u, double time) const;
 
   // Residual f = f_int(u; Lambda) - f_ext(t) and, if K is given, the tangent. `lambda` is the
-  // augmented Lagrange multiplier per local element. Collective.
+  // augmented Lagrange multiplier per local element. With `bases` (one per local element, Q1-P0
+  // only) the pressure and dilatation are the three-field Newton iterates of fem::MixedBase:
+  // with K, the bases' own state (u is their iterate); without, the Newton update from them to
+  // the trial u. Without `bases` they are condensed exactly from u. Collective.
   AssemblyStatus assemble(const Vector &u, double time, const std::vector<double> &lambda,
-                          Vector *f, FEMatrix *K) const;
+                          const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K) const;
+
+  // The three-field linearisation at u for every local element (see fem::MixedBase);
+  // `previous` carries the dilatation iterates forward. Collective (imports u).
+  std::vector<fem::MixedBase> mixedBases(const Vector &u, const std::vector<double> &lambda,
+                                         const std::vector<fem::MixedBase> *previous) const;
 
   // Element dilatation, pressure, stress, min J (local elements). Collective (imports u).
   ElementFields elementFields(const Vector &u, const std::vector<double> &lambda) const;
@@ -70,6 +79,7 @@ public:
 
 private:
   void importToOverlap(const Vector &u, Vector &overlap) const;
+  fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
 
   const model::Scene &scene_;
   Teuchos::RCP<const Comm> comm_;

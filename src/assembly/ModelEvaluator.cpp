@@ -34,6 +34,21 @@ ModelEvaluator::ModelEvaluator(Teuchos::RCP<const Assembler> assembler,
   prototypeOutArgs_ = out;
 }
 
+const std::vector<double> &ModelEvaluator::lambdaOrZero() const {
+  if (lambda_) return *lambda_;
+  zeroLambda_.assign(assembler_->numLocalElements(), 0.0);
+  return zeroLambda_;
+}
+
+void ModelEvaluator::resetIterates(const Vector &u) {
+  mixed_ = assembler_->scene().formulation == model::ElementFormulation::Q1P0;
+  if (mixed_) bases_ = assembler_->mixedBases(u, lambdaOrZero(), nullptr);
+}
+
+void ModelEvaluator::advanceIterates(const Vector &u) {
+  if (mixed_) bases_ = assembler_->mixedBases(u, lambdaOrZero(), &bases_);
+}
+
 Teuchos::RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const {
   // One matrix serves every W: NOX asks for it once per group.
   return Thyra::tpetraLinearOp<double, LO, GO, Node>(space_, space_, matrix_);
@@ -51,11 +66,10 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
     K = dynamic_cast<FEMatrix *>(op.get());
     TEUCHOS_TEST_FOR_EXCEPTION(K == nullptr, std::logic_error, "W_op is not the model's FECrsMatrix");
   }
-  std::vector<double> noLambda;
-  const std::vector<double> &lambda =
-      lambda_ ? *lambda_ : (noLambda = std::vector<double>(assembler_->numLocalElements(), 0.0));
+  const std::vector<double> &lambda = lambdaOrZero();
   Vector fScratch(assembler_->ownedMap());
-  lastStatus_ = assembler_->assemble(*x, time_, lambda, f.is_null() ? (K ? &fScratch : nullptr) : f.get(), K);
+  lastStatus_ = assembler_->assemble(*x, time_, lambda, mixed_ ? &bases_ : nullptr,
+                                     f.is_null() ? (K ? &fScratch : nullptr) : f.get(), K);
   if (!lastStatus_.valid && !f.is_null()) f->putScalar(std::numeric_limits<double>::quiet_NaN());
   if (!f.is_null()) ++residualEvaluations_;
   if (K) ++tangentEvaluations_;

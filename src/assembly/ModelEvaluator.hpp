@@ -18,6 +18,10 @@ public:
 
   void setTime(double t) { time_ = t; }
   void setLambda(const std::vector<double> *lambda) { lambda_ = lambda; }
+  // Three-field Newton iterates (Q1-P0): reset to the exact condensation at u before a solve,
+  // advanced to every accepted Newton iterate (fem::MixedBase).
+  void resetIterates(const Vector &u);
+  void advanceIterates(const Vector &u);
   // Status of the last evaluation: false if an element inverted (f was set to NaN so that
   // NOX's finite-value test stops the solve).
   const AssemblyStatus &lastStatus() const { return lastStatus_; }
@@ -48,6 +52,10 @@ private:
   Thyra::ModelEvaluatorBase::OutArgs<double> prototypeOutArgs_;
   double time_ = 0.0;
   const std::vector<double> *lambda_ = nullptr;
+  const std::vector<double> &lambdaOrZero() const;
+  std::vector<fem::MixedBase> bases_;
+  mutable std::vector<double> zeroLambda_;
+  bool mixed_ = false;
   mutable AssemblyStatus lastStatus_;
   mutable int residualEvaluations_ = 0, tangentEvaluations_ = 0;
   mutable double assemblySeconds_ = 0.0;

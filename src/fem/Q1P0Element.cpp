@@ -29,6 +29,12 @@ Bmatrix gradientOperator(const Eigen::Matrix<double, 8, 3> &dNdX) {
   return B;
 }
 
+ElementVector flattenNodes(const NodeMatrix &u) {
+  ElementVector v;
+  for (int a = 0; a < 8; ++a) v.segment<3>(3 * a) = u.row(a).transpose();
+  return v;
+}
+
 Eigen::Matrix<double, 9, 1> flatten(const Eigen::Matrix3d &M) {
   Eigen::Matrix<double, 9, 1> v;
   for (int i = 0; i < 3; ++i)
@@ -73,6 +79,90 @@ void addPoint(Q1P0Result &r, const PointKinematics &pt, const Eigen::Matrix3d &P
 
 } // namespace
 
+namespace {
+// v = int J dV and g_a = dv/du_a = int J F^{-T} dN_a/dX dV.
+void volumeAndGradient(const std::array<PointKinematics, 8> &pts, double &V, double &v, ElementVector &g) {
+  V = 0.0;
+  v = 0.0;
+  g.setZero();
+  for (const auto &pt : pts) {
+    V += pt.dV;
+    v += pt.J * pt.dV;
+    const Eigen::Matrix3d JFinvT = pt.J * pt.F.inverse().transpose();
+    for (int a = 0; a < 8; ++a) g.segment<3>(3 * a) += JFinvT * pt.dNdX.row(a).transpose() * pt.dV;
+  }
+}
+
+// Adds int (P_iso + p J F^{-T}) : grad N and its tangent at fixed p.
+void addDeviatoricAndPressure(Q1P0Result &r, const std::array<PointKinematics, 8> &pts, double p,
+                              const materials::IsochoricMaterial &material, Q1P0Output what) {
+  for (const auto &pt : pts) {
+    const materials::PointResponse iso = material.evaluate(pt.F);
+    const Eigen::Matrix3d Finv = pt.F.inverse();
+    const Eigen::Matrix3d P = iso.P + p * pt.J * Finv.transpose();
+    Tangent9 A;
+    if (what == Q1P0Output::ResidualAndTangent) A = iso.dPdF + p * cofactorDerivative(Finv, pt.J);
+    addPoint(r, pt, P, A, what);
+    r.energy += iso.energy * pt.dV;
+  }
+}
+} // namespace
+
+namespace {
+// The Newton update of (theta, p) from iterate `base` to displacement u (see the header).
+void extrapolateState(const MixedBase &base, const NodeMatrix &u, double V,
+                      const materials::VolumetricEnergy &volumetric, double lambda, double &theta, double &p) {
+  theta = (base.v + base.g.dot(flattenNodes(u - base.u))) / V;
+  p = volumetric.dU(base.theta) + volumetric.d2U(base.theta) * (theta - base.theta) + lambda;
+}
+} // namespace
+
+MixedBase mixedBase(const NodeMatrix &X, const NodeMatrix &u, const MixedBase *previous,
+                    const materials::VolumetricEnergy &volumetric, double lambda) {
+  MixedBase b;
+  std::array<PointKinematics, 8> pts;
+  double minJ = 0.0, V = 0.0;
+  b.u = u;
+  if (!kinematics(X, u, pts, minJ) || !(minJ > 0.0)) return b;
+  volumeAndGradient(pts, V, b.v, b.g);
+  if (previous && previous->valid) {
+    extrapolateState(*previous, u, V, volumetric, lambda, b.theta, b.pressure);
+  } else {
+    b.theta = b.v / V;
+    b.pressure = volumetric.dU(b.theta) + lambda;
+  }
+  b.valid = b.theta > 0.0;
+  return b;
+}
+
+Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const MixedBase &base,
+                             const materials::IsochoricMaterial &material,
+                             const materials::VolumetricEnergy &volumetric, double lambda, bool extrapolate,
+                             Q1P0Output what) {
+  Q1P0Result r;
+  std::array<PointKinematics, 8> pts;
+  if (!base.valid || !kinematics(X, u, pts, r.minJ) || !(r.minJ > 0.0)) return r;
+  double V = 0.0, v = 0.0;
+  ElementVector g;
+  volumeAndGradient(pts, V, v, g);
+  double theta = base.theta, p = base.pressure;
+  if (extrapolate) extrapolateState(base, u, V, volumetric, lambda, theta, p);
+  if (!(theta > 0.0)) return r;
+  r.referenceVolume = V;
+  r.theta = theta;
+  r.pressure = p;
+  addDeviatoricAndPressure(r, pts, p, material, what);
+  const double Rp = v - theta * V;
+  const double Rtheta = V * (volumetric.dU(theta) - p + lambda);
+  const double d2U = volumetric.d2U(theta);
+  r.residual += g * ((d2U * Rp + Rtheta) / V);
+  if (what == Q1P0Output::ResidualAndTangent) r.tangent.noalias() += (d2U / V) * g * g.transpose();
+  r.energy += V * (volumetric.energy(theta) + lambda * (theta - 1.0)) + p * Rp;
+  r.cauchyMean /= v;
+  r.valid = true;
+  return r;
+}
+
 Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
                         const materials::IsochoricMaterial &material,
                         const materials::VolumetricEnergy &volumetric, double lambda,
@@ -83,27 +173,12 @@ Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
 
   // Condensed dilatation: theta = v / V, and g_a = int J F^{-T} dN_a/dX dV = d v / d u_a.
   double V = 0.0, v = 0.0;
-  ElementVector g = ElementVector::Zero();
-  for (const auto &pt : pts) {
-    V += pt.dV;
-    v += pt.J * pt.dV;
-    const Eigen::Matrix3d JFinvT = pt.J * pt.F.inverse().transpose();
-    for (int a = 0; a < 8; ++a) g.segment<3>(3 * a) += JFinvT * pt.dNdX.row(a).transpose() * pt.dV;
-  }
+  ElementVector g;
+  volumeAndGradient(pts, V, v, g);
   r.referenceVolume = V;
   r.theta = v / V;
   r.pressure = volumetric.dU(r.theta) + lambda;
-
-  for (const auto &pt : pts) {
-    const materials::PointResponse iso = material.evaluate(pt.F);
-    const Eigen::Matrix3d Finv = pt.F.inverse();
-    const Eigen::Matrix3d P = iso.P + r.pressure * pt.J * Finv.transpose();
-    Tangent9 A;
-    if (what == Q1P0Output::ResidualAndTangent)
-      A = iso.dPdF + r.pressure * cofactorDerivative(Finv, pt.J);
-    addPoint(r, pt, P, A, what);
-    r.energy += iso.energy * pt.dV;
-  }
+  addDeviatoricAndPressure(r, pts, r.pressure, material, what);
   if (what == Q1P0Output::ResidualAndTangent)
     r.tangent.noalias() += (volumetric.d2U(r.theta) / V) * g * g.transpose();
   r.energy += V * (volumetric.energy(r.theta) + lambda * (r.theta - 1.0));

@@ -41,6 +41,35 @@ Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
                         const materials::VolumetricEnergy &volumetric, double lambda,
                         Q1P0Output what = Q1P0Output::ResidualAndTangent);
 
+// The three-field Newton iterate of one element (deal.II step-44 style): dilatation theta and
+// pressure p are element unknowns updated by the linearised local equations, not recomputed
+// exactly from u, which keeps Newton robust for kappa/mu in the thousands. A base is the
+// iterate k: (u_k, theta_k, p_k) with the volume linearisation v(u) ~ v_k + g_k . (u - u_k).
+// The Newton update from iterate k to a trial u gives
+//   theta = (v_k + g_k . (u - u_k)) / V,   p = U'(theta_k) + U''(theta_k)(theta - theta_k) + Lambda,
+// and at any iterate the condensed residual is R_u + g (U''(theta) R_p + R_theta) / V with
+// R_p = v(u) - theta V and R_theta = V (U'(theta) - p + Lambda), both zero at convergence.
+struct MixedBase {
+  NodeMatrix u = NodeMatrix::Zero();
+  ElementVector g = ElementVector::Zero();
+  double v = 0.0;
+  double theta = 1.0;
+  double pressure = 0.0;
+  bool valid = false;
+};
+
+// The iterate at u: extrapolated from `previous` by the Newton update above, or, without it,
+// consistent (theta = v(u)/V, p = U'(theta) + Lambda).
+MixedBase mixedBase(const NodeMatrix &X, const NodeMatrix &u, const MixedBase *previous,
+                    const materials::VolumetricEnergy &volumetric, double lambda);
+
+// Residual and tangent with the element state of the iterate: `base`'s own state when
+// `extrapolate` is false (u must then be base.u), or the Newton update from `base` to u.
+Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const MixedBase &base,
+                             const materials::IsochoricMaterial &material,
+                             const materials::VolumetricEnergy &volumetric, double lambda,
+                             bool extrapolate, Q1P0Output what = Q1P0Output::ResidualAndTangent);
+
 // The same element without the mixed treatment: U(J) at every quadrature point (plain Q1),
 // kept to show volumetric locking (Cook's membrane test).
 Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u,

@@ -39,6 +39,7 @@ std::string joinPath(const std::vector<std::string> &path) {
 Deck Deck::fromFile(const std::string &path) {
   Deck deck;
   deck.file_ = path;
+  deck.list_.setName("Glossa");
   std::ifstream in(path);
   if (!in) throw DeckError("deck " + path + ": cannot be opened (does the file exist?)");
   std::stringstream text;

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Glossa needs that are not installed yet (nothing else is
+# downloaded, ever). Safe to run again: it does nothing when everything is there.
+set -euo pipefail
+packages=(
+  build-essential cmake ccache
+  trilinos-all-dev libscotch-dev libptscotch-dev   # Trilinos' link lists name the scotch libraries
+  libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
+  libeigen3-dev libgtest-dev nlohmann-json3-dev
+  python3-numpy python3-matplotlib                 # plots and reference-table scripts (/usr/bin/python3)
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}"
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo=sudo; fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"
+fi

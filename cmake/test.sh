@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Second command of the README (and CI's): install what is missing, build everything, run the
+# whole test suite (unit, integration with MPI, regression).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash cmake/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$(nproc)"
+cd build
+ctest --output-on-failure --timeout 1200 -j 1
