@@ -1,5 +1,7 @@
 #include "solvers/LinearSolverFactory.hpp"
 
+#include <algorithm>
+
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
@@ -22,7 +24,9 @@ ParameterList linearSolverParameters() {
   io::declareString(p, "preconditioner", "MueLu",
                     "MueLu: smoothed-aggregation AMG with rigid-body modes; Ifpack2: the "
                     "'Ifpack2 type' alone; none", {"MueLu", "Ifpack2", "none"});
-  io::declareDouble(p, "tolerance", 1e-8, "", "relative residual reduction of each linear solve",
+  io::declareDouble(p, "tolerance", 1e-6, "",
+                    "relative residual reduction of each linear solve (Newton still converges to "
+                    "its own tolerance; 1e-6 is also step-44's choice)",
                     io::Range::open(0.0, 1.0));
   io::declareInt(p, "maximum iterations", 2000, "Krylov iteration limit per solve", io::Range::atLeast(1));
   io::declareInt(p, "GMRES restart", 200, "Krylov vectors kept by GMRES", io::Range::atLeast(10));
@@ -36,6 +40,10 @@ ParameterList linearSolverParameters() {
   io::declareDouble(p, "Chebyshev eigenvalue ratio", 20.0, "",
                     "lambda_max / lambda_min of the interval the Chebyshev smoother damps",
                     io::Range::atLeast(2.0));
+  io::declareString(p, "MueLu reuse", "none",
+                    "what MueLu keeps between Newton iterations: none (rebuild), RP (aggregates and "
+                    "transfer operators; coarse matrices recomputed), full (the whole hierarchy, stale)",
+                    {"none", "RP", "full"});
   io::declareInt(p, "coarse size", 2000, "MueLu stops coarsening below this many rows", io::Range::atLeast(10));
   io::declareString(p, "Ifpack2 type", "symmetric Gauss-Seidel",
                     "single-level preconditioner when preconditioner = Ifpack2",
@@ -50,7 +58,14 @@ ParameterList mueluParameters(const ParameterList &s, const LinearSolverContext 
   m.set("verbosity", s.get<bool>("verbose") ? "low" : "none");
   m.set("number of equations", 3);
   m.set("multigrid algorithm", "sa");
-  m.set("coarse: max size", s.get<int>("coarse size"));
+  int coarseSize = s.get<int>("coarse size");
+  if (c.ranks > 1 && c.globalRows > 0) {
+    // A one-level hierarchy would hand the whole distributed matrix to KLU2, whose multi-rank
+    // path is wrong here (TRILINOS-NOTES): make sure there is a coarse level to gather.
+    coarseSize = static_cast<int>(std::min<long long>(coarseSize, std::max<long long>(c.globalRows / 8, 3)));
+  }
+  m.set("coarse: max size", coarseSize);
+  m.set("reuse: type", s.get<std::string>("MueLu reuse"));
   const int degree = s.get<int>("smoother degree");
   if (s.get<std::string>("MueLu smoother") == "Chebyshev") {
     m.set("smoother: type", "CHEBYSHEV");

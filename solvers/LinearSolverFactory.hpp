@@ -16,6 +16,7 @@ struct LinearSolverContext {
   Teuchos::RCP<assembly::MultiVector> coordinates;    // per owned node, 3 columns
   Teuchos::RCP<assembly::MultiVector> rigidBodyModes; // per owned dof, 6 columns
   int ranks = 1;
+  long long globalRows = 0;
   bool symmetric = true; // the tangent is symmetric (no follower loads yet)
 };
 

@@ -4,6 +4,7 @@
 // iterations and the residual history (to show quadratic convergence).
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
@@ -19,6 +20,7 @@ struct NewtonResult {
   int linearIterations = 0;
   std::vector<double> residualNorms; // ||f|| before each iteration and at the end
   std::vector<int> linearIterationsPerStep;
+  std::string failure; // why, when not converged for a reason other than the iteration limit
 };
 
 Teuchos::ParameterList nonlinearSolverParameters();

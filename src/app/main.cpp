@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Core.hpp>
 
 #include "app/DeckSchema.hpp"
@@ -18,9 +19,10 @@ namespace {
 const char *kUsage = R"(glossa - finite elements for nearly incompressible, fibre-reinforced, active soft tissue
 
 usage:
-  glossa run DECK.xml [--output DIR] [--set path/to/parameter=value ...] [--quiet]
+  glossa run DECK.xml [--output DIR] [--set path/to/parameter=value ...] [--quiet] [--timers]
       run a deck; results (results.xdmf/.h5, traces.csv, summary.json) go to DIR
       (default: the deck's Output/directory). Under mpiexec -np N it runs on N ranks.
+      --timers prints Trilinos' timers (MueLu set-up, Belos solve) at the end.
   glossa validate DECK.xml [--set path=value ...]
       check a deck and print it with every default filled in
   glossa schema [--markdown]
@@ -34,7 +36,7 @@ Exit status: 0 success, 1 run did not converge or failed, 2 bad deck or command 
 struct Arguments {
   std::string command, deck, output;
   std::vector<std::string> overrides;
-  bool quiet = false, markdown = false;
+  bool quiet = false, markdown = false, timers = false;
 };
 
 Arguments parse(int argc, char **argv) {
@@ -51,6 +53,7 @@ Arguments parse(int argc, char **argv) {
     if (s == "--output") a.output = value("--output");
     else if (s == "--set") a.overrides.push_back(value("--set"));
     else if (s == "--quiet") a.quiet = true;
+    else if (s == "--timers") a.timers = true;
     else if (s == "--markdown") a.markdown = true;
     else if (!s.empty() && s[0] == '-') throw glossa::io::DeckError("unknown option " + s + "; see glossa --help");
     else if (a.deck.empty()) a.deck = s;
@@ -100,6 +103,7 @@ int main(int argc, char **argv) {
     if (a.command == "run") {
       const auto deck = loadDeck(a, schema);
       const auto summary = glossa::solvers::runSimulation(deck, comm, {a.output, a.quiet});
+      if (a.timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
       return summary.value("converged", false) ? 0 : 1;
     }
     throw glossa::io::DeckError("unknown command '" + a.command + "'; see glossa --help");

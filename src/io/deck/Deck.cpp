@@ -50,7 +50,11 @@ Deck Deck::fromFile(const std::string &path) {
   try {
     Teuchos::updateParametersFromXmlString(text.str(), Teuchos::ptrFromRef(deck.list_));
   } catch (const std::exception &e) {
-    throw DeckError("deck " + path + ": not a valid Teuchos ParameterList XML file: " + e.what());
+    // Teuchos prefixes its reason with source locations; the last line is the reason.
+    std::string reason = e.what();
+    while (!reason.empty() && reason.back() == '\n') reason.pop_back();
+    reason = reason.substr(reason.find_last_of('\n') + 1);
+    throw DeckError("deck " + path + ": not a valid Teuchos ParameterList XML file: " + reason);
   }
   return deck;
 }

@@ -74,7 +74,11 @@ std::string SpecValidator::check(const Teuchos::ParameterEntry &entry) const {
   case Kind::Double: {
     if (value.type() != typeid(double)) return typeError("double (type=\"double\")");
     const double v = Teuchos::any_cast<double>(value);
-    if (!range_.contains(v)) return "= " + std::to_string(v) + " is out of range";
+    if (!range_.contains(v)) {
+      std::ostringstream text;
+      text << "= " << v << " is out of range";
+      return text.str();
+    }
     return "";
   }
   case Kind::Int: {

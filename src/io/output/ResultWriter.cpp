@@ -1,134 +1,162 @@
 #include "io/output/ResultWriter.hpp"
 
+#include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <set>
 #include <stdexcept>
+#include <type_traits>
 
-#include <hdf5.h>
+#include "io/output/AtomicFile.hpp"
+#include "io/output/Hdf5Handle.hpp"
+#include "io/output/RoundTripText.hpp"
 
 namespace glossa::io {
 
+static_assert(std::is_same_v<hid_t, std::int64_t>, "ResultWriter stores the HDF5 file id as std::int64_t");
+
 namespace {
-void check(herr_t status, const std::string &what) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
+// A dataset of shape (rows) for one component, else (rows, columns), written in one call with
+// default property lists (contiguous layout: the data goes straight to the file).
+void writeDataset(hid_t parent, const std::string &name, hid_t memoryType, const void *data, hsize_t rows,
+                  hsize_t columns) {
+  const hsize_t dims[2] = {rows, columns};
+  const Hdf5Handle space(H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr), H5Sclose,
+                         "creating the dataspace of " + name);
+  const Hdf5Handle set(
+      H5Dcreate2(parent, name.c_str(), memoryType, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+      "creating dataset " + name);
+  // H5Dwrite with an empty selection is fine, but some HDF5 builds reject a null buffer.
+  if (rows * columns > 0)
+    checkHdf5(H5Dwrite(set.get(), memoryType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "writing dataset " + name);
 }
 
-void writeDataset(hid_t parent, const std::string &name, hid_t type, const void *data, hsize_t rows, hsize_t cols) {
-  const hsize_t dims[2] = {rows, cols};
-  const hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
-  const hid_t set = H5Dcreate2(parent, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (set < 0) throw std::runtime_error("HDF5: cannot create dataset " + name);
-  check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "writing " + name);
-  H5Dclose(set);
-  H5Sclose(space);
+void writeTimeAttribute(hid_t group, double time) {
+  const Hdf5Handle space(H5Screate(H5S_SCALAR), H5Sclose, "creating a scalar dataspace");
+  const Hdf5Handle attribute(H5Acreate2(group, "time", H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                             H5Aclose, "creating attribute time");
+  checkHdf5(H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, &time), "writing attribute time");
 }
 
-const char *attributeType(int components) {
-  switch (components) {
-  case 1: return "Scalar";
-  case 3: return "Vector";
-  case 6: return "Tensor6";
-  case 9: return "Tensor";
-  }
-  return nullptr;
+// "step_000042": zero-padded so the groups sort in time order in h5dump and h5py.
+std::string stepGroupName(std::size_t index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "step_%06zu", index);
+  return name;
+}
+
+void checkBaseName(const std::string &baseName) {
+  // ':' separates file and dataset in an XDMF DataItem; '/' would put the files elsewhere.
+  if (baseName.empty() || baseName.find_first_of("/:\\") != std::string::npos)
+    throw std::invalid_argument("ResultWriter: base name '" + baseName +
+                                "' must be a plain file name (no '/', '\\' or ':')");
+}
+
+void checkTopology(const std::vector<std::array<std::int64_t, 8>> &hexes, std::size_t numNodes) {
+  for (std::size_t e = 0; e < hexes.size(); ++e)
+    for (const std::int64_t node : hexes[e])
+      if (node < 0 || static_cast<std::size_t>(node) >= numNodes)
+        throw std::invalid_argument("ResultWriter: hexahedron " + std::to_string(e) + " names node " +
+                                    std::to_string(node) + " but the mesh has " + std::to_string(numNodes) +
+                                    " nodes");
 }
 } // namespace
 
 ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::string &baseName,
                            const std::vector<Eigen::Vector3d> &nodes,
                            const std::vector<std::array<std::int64_t, 8>> &hexes)
-    : directory_(directory), baseName_(baseName), numNodes_(nodes.size()), numCells_(hexes.size()) {
+    : directory_(directory), baseName_(baseName),
+      mesh_{baseName + ".h5", nodes.size(), hexes.size(), "/mesh/coordinates", "/mesh/topology"} {
+  checkBaseName(baseName_);
+  checkTopology(hexes, nodes.size());
   std::filesystem::create_directories(directory_);
-  const std::string path = (directory_ / (baseName_ + ".h5")).string();
-  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw std::runtime_error("cannot create " + path);
-  const hid_t mesh = H5Gcreate2(file_, "mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  std::vector<double> xyz;
-  xyz.reserve(3 * nodes.size());
-  for (const auto &x : nodes) xyz.insert(xyz.end(), {x.x(), x.y(), x.z()});
-  writeDataset(mesh, "coordinates", H5T_NATIVE_DOUBLE, xyz.data(), numNodes_, 3);
-  writeDataset(mesh, "topology", H5T_NATIVE_INT64, hexes.data(), numCells_, 8);
-  H5Gclose(mesh);
-  check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush");
-  writeXdmf();
+
+  // An XDMF file from an earlier run would point into the .h5 we are about to replace; remove it
+  // first so that no moment exists at which it names missing data. Unlinking the old .h5 (instead
+  // of truncating it) leaves a ParaView that still has it open reading intact old data.
+  std::filesystem::remove(xdmfPath());
+  std::filesystem::remove(hdf5Path());
+
+  Hdf5Handle file(H5Fcreate(hdf5Path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+                  "creating " + hdf5Path().string());
+  {
+    const Hdf5Handle mesh(H5Gcreate2(file.get(), "mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                          "creating group /mesh");
+    std::vector<double> xyz;
+    xyz.reserve(3 * nodes.size());
+    for (const auto &x : nodes) xyz.insert(xyz.end(), {x.x(), x.y(), x.z()});
+    writeDataset(mesh.get(), "coordinates", H5T_NATIVE_DOUBLE, xyz.data(), nodes.size(), 3);
+    // std::array<int64_t, 8> is contiguous and unpadded, so the vector is already E x 8 row-major.
+    static_assert(sizeof(std::array<std::int64_t, 8>) == 8 * sizeof(std::int64_t));
+    writeDataset(mesh.get(), "topology", H5T_NATIVE_INT64, hexes.data(), hexes.size(), 8);
+  }
+  checkHdf5(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing " + hdf5Path().string());
+  file_ = file.release();
+  try {
+    writeXdmf();
+  } catch (...) {
+    H5Fclose(file_);
+    throw;
+  }
 }
 
 ResultWriter::~ResultWriter() {
   if (file_ >= 0) H5Fclose(file_);
 }
 
-void ResultWriter::writeStep(double time, const std::vector<Field> &nodeFields, const std::vector<Field> &cellFields) {
-  StepRecord record{time, "step_" + std::to_string(steps_.size()), {}};
-  auto validate = [](const Field &f, std::size_t n, const char *where) {
-    if (!attributeType(f.components))
-      throw std::invalid_argument("field '" + f.name + "': " + std::to_string(f.components) +
-                                  " components (1, 3, 6 or 9 allowed)");
-    if (f.values.size() != n * static_cast<std::size_t>(f.components))
-      throw std::invalid_argument("field '" + f.name + "' has " + std::to_string(f.values.size()) + " values, " +
-                                  where + " needs " + std::to_string(n * f.components));
+void ResultWriter::checkStep(double time, const std::vector<Field> &nodeFields,
+                             const std::vector<Field> &cellFields) const {
+  if (!std::isfinite(time)) throw std::invalid_argument("ResultWriter: step time is not finite");
+  if (!steps_.empty() && !(time > steps_.back().time))
+    throw std::invalid_argument("ResultWriter: step time " + roundTripText(time) +
+                                " is not after the previous step's " + roundTripText(steps_.back().time));
+  std::set<std::string> names; // node and cell fields share the step's group
+  auto check = [&](const Field &f, std::size_t tuples, const char *kind) {
+    const std::string which = std::string("ResultWriter: ") + kind + " field '" + f.name + "'";
+    if (f.name.empty() || f.name == "." || f.name.find('/') != std::string::npos)
+      throw std::invalid_argument(which + ": a name must be non-empty, not '.', and contain no '/'");
+    if (!names.insert(f.name).second)
+      throw std::invalid_argument(which + ": another field of this step has the same name");
+    if (!xdmfAttributeType(f.components))
+      throw std::invalid_argument(which + " has " + std::to_string(f.components) +
+                                  " components; 1, 3, 6 or 9 are allowed");
+    const std::size_t expected = tuples * static_cast<std::size_t>(f.components);
+    if (f.values.size() != expected)
+      throw std::invalid_argument(which + " has " + std::to_string(f.values.size()) + " values; " +
+                                  std::to_string(tuples) + " x " + std::to_string(f.components) + " = " +
+                                  std::to_string(expected) + " expected");
   };
-  for (const auto &f : nodeFields) validate(f, numNodes_, "a node field");
-  for (const auto &f : cellFields) validate(f, numCells_, "a cell field");
+  for (const auto &f : nodeFields) check(f, mesh_.numNodes, "node");
+  for (const auto &f : cellFields) check(f, mesh_.numCells, "cell");
+}
 
-  const hid_t group = H5Gcreate2(file_, record.group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attr = H5Acreate2(group, "time", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attr, H5T_NATIVE_DOUBLE, &time);
-  H5Aclose(attr);
-  H5Sclose(space);
-  for (const auto &f : nodeFields) {
-    writeDataset(group, f.name, H5T_NATIVE_DOUBLE, f.values.data(), numNodes_, f.components);
-    record.fields.push_back({Field{f.name, f.components, {}}, true});
+void ResultWriter::writeStep(double time, const std::vector<Field> &nodeFields,
+                             const std::vector<Field> &cellFields) {
+  checkStep(time, nodeFields, cellFields);
+  const std::string group = stepGroupName(steps_.size());
+  XdmfStep step{time, {}};
+  try {
+    const Hdf5Handle g(H5Gcreate2(file_, group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                       "creating group /" + group);
+    writeTimeAttribute(g.get(), time);
+    auto write = [&](const Field &f, std::size_t tuples, Centering center) {
+      writeDataset(g.get(), f.name, H5T_NATIVE_DOUBLE, f.values.data(), tuples, f.components);
+      step.attributes.push_back({f.name, f.components, center, "/" + group + "/" + f.name});
+    };
+    for (const auto &f : nodeFields) write(f, mesh_.numNodes, Centering::Node);
+    for (const auto &f : cellFields) write(f, mesh_.numCells, Centering::Cell);
+  } catch (...) {
+    // Drop the half-written group so the file holds only complete steps and a retry can reuse
+    // the name; the XDMF file still describes the previous steps only.
+    H5Ldelete(file_, group.c_str(), H5P_DEFAULT);
+    throw;
   }
-  for (const auto &f : cellFields) {
-    writeDataset(group, f.name, H5T_NATIVE_DOUBLE, f.values.data(), numCells_, f.components);
-    record.fields.push_back({Field{f.name, f.components, {}}, false});
-  }
-  H5Gclose(group);
-  check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush");
-  steps_.push_back(std::move(record));
+  checkHdf5(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flushing " + hdf5Path().string());
+  steps_.push_back(std::move(step));
   writeXdmf();
 }
 
 void ResultWriter::writeXdmf() const {
-  const std::string h5 = baseName_ + ".h5";
-  std::ostringstream x;
-  x.precision(17);
-  x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
-    << "<Grid Name=\"time series\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  auto grid = [&](double time, const StepRecord *step) {
-    x << "  <Grid Name=\"mesh\" GridType=\"Uniform\">\n"
-      << "    <Time Value=\"" << time << "\"/>\n"
-      << "    <Topology TopologyType=\"Hexahedron\" NumberOfElements=\"" << numCells_ << "\">\n"
-      << "      <DataItem Dimensions=\"" << numCells_ << " 8\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">"
-      << h5 << ":/mesh/topology</DataItem>\n    </Topology>\n"
-      << "    <Geometry GeometryType=\"XYZ\">\n"
-      << "      <DataItem Dimensions=\"" << numNodes_ << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-      << h5 << ":/mesh/coordinates</DataItem>\n    </Geometry>\n";
-    if (step)
-      for (const auto &[f, isNode] : step->fields) {
-        const std::size_t n = isNode ? numNodes_ : numCells_;
-        x << "    <Attribute Name=\"" << f.name << "\" AttributeType=\"" << attributeType(f.components)
-          << "\" Center=\"" << (isNode ? "Node" : "Cell") << "\">\n"
-          << "      <DataItem Dimensions=\"" << n << (f.components > 1 ? " " + std::to_string(f.components) : "")
-          << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ":/" << step->group << "/" << f.name
-          << "</DataItem>\n    </Attribute>\n";
-      }
-    x << "  </Grid>\n";
-  };
-  if (steps_.empty()) grid(0.0, nullptr);
-  for (const auto &s : steps_) grid(s.time, &s);
-  x << "</Grid>\n</Domain>\n</Xdmf>\n";
-
-  const auto target = directory_ / (baseName_ + ".xdmf");
-  const auto temporary = directory_ / (baseName_ + ".xdmf.tmp");
-  {
-    std::ofstream out(temporary);
-    out << x.str();
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::filesystem::rename(temporary, target);
+  replaceFileAtomically(xdmfPath(), composeXdmfTimeSeries(mesh_, steps_));
 }
 
 } // namespace glossa::io

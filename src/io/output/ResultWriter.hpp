@@ -1,8 +1,14 @@
 #pragma once
-// Fields of a run as a time series ParaView opens: <base>.h5 holds the mesh once and one group
-// per written step; <base>.xdmf (XDMF 3, a temporal collection) points into it. Rank 0 writes
-// (the caller gathers). After every step the HDF5 file is flushed and the XDMF file replaced
-// atomically (temporary file + rename), so a run stopped at any moment leaves both readable.
+// Fields of a run as a time series ParaView opens: <base>.h5 holds the mesh once
+// (/mesh/coordinates N x 3 float64, /mesh/topology E x 8 int64 in VTK hexahedron order) and one
+// group per written step (/step_000000, /step_000001, ... with a "time" attribute and one dataset
+// per field); <base>.xdmf (XDMF 3, a temporal collection, XdmfTimeSeries.hpp) points into it.
+//
+// Rank 0 writes (the caller gathers global arrays first). A run killed between calls leaves both
+// files readable with every step written so far: after a step the HDF5 file is flushed, and only
+// then is the XDMF file replaced atomically (AtomicFile.hpp), so it never names data that is not
+// on disk yet. HDF5 itself has no journal: a kill *during* the flush of a step can still damage
+// the .h5 file; that window is milliseconds per step.
 
 #include <array>
 #include <cstdint>
@@ -13,11 +19,15 @@
 #include <Eigen/Core>
 
 #include "io/output/Field.hpp"
+#include "io/output/XdmfTimeSeries.hpp"
 
 namespace glossa::io {
 
 class ResultWriter {
 public:
+  // Creates `directory` if missing and replaces any earlier <baseName>.h5/.xdmf there. Throws
+  // std::invalid_argument for a base name that is not a plain file name or a hexahedron that
+  // names a node outside `nodes`, std::runtime_error if the files cannot be written.
   ResultWriter(const std::filesystem::path &directory, const std::string &baseName,
                const std::vector<Eigen::Vector3d> &nodes,
                const std::vector<std::array<std::int64_t, 8>> &hexes);
@@ -25,23 +35,25 @@ public:
   ResultWriter(const ResultWriter &) = delete;
   ResultWriter &operator=(const ResultWriter &) = delete;
 
-  // Node fields have one tuple per node, cell fields one per hexahedron.
+  // Node fields have one tuple per node, cell fields one per hexahedron. Everything is checked
+  // before anything is written; std::invalid_argument names the offending field when its size is
+  // not n * components, its components are not 1, 3, 6 or 9, its name is empty, contains '/' or
+  // repeats another field's; also when `time` is not finite or not after the previous step's.
   void writeStep(double time, const std::vector<Field> &nodeFields, const std::vector<Field> &cellFields);
   std::size_t stepsWritten() const { return steps_.size(); }
 
+  std::filesystem::path hdf5Path() const { return directory_ / (baseName_ + ".h5"); }
+  std::filesystem::path xdmfPath() const { return directory_ / (baseName_ + ".xdmf"); }
+
 private:
-  struct StepRecord {
-    double time;
-    std::string group;
-    std::vector<std::pair<Field, bool>> fields; // (name/components only, isNode)
-  };
+  void checkStep(double time, const std::vector<Field> &nodeFields, const std::vector<Field> &cellFields) const;
   void writeXdmf() const;
 
   std::filesystem::path directory_;
   std::string baseName_;
-  std::size_t numNodes_, numCells_;
-  std::int64_t file_; // hid_t
-  std::vector<StepRecord> steps_;
+  XdmfMesh mesh_;
+  std::int64_t file_ = -1; // the open HDF5 file (an hid_t; <hdf5.h> stays out of this header)
+  std::vector<XdmfStep> steps_;
 };
 
 } // namespace glossa::io

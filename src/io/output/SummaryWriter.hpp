@@ -1,6 +1,8 @@
 #pragma once
-// summary.json: the run's figures, rewritten atomically (temporary file + rename) whenever the
-// caller asks, so the file on disk is always complete JSON.
+// summary.json: the run's figures (converged, ranks, dofs, elements, wall_seconds, one record
+// per step, final displacements). The caller edits root() and calls write() whenever the file
+// should reflect progress; write() replaces the file atomically (AtomicFile.hpp), so the file
+// on disk is always complete JSON, from either the previous or the latest write(). Rank 0 writes.
 
 #include <filesystem>
 
@@ -10,10 +12,21 @@ namespace glossa::io {
 
 class SummaryWriter {
 public:
-  explicit SummaryWriter(std::filesystem::path file) : file_(std::move(file)) {}
+  // Nothing is written until write(); `file` is the full path, e.g. <output>/summary.json.
+  explicit SummaryWriter(std::filesystem::path file);
+
   nlohmann::json &root() { return root_; }
-  void appendStep(const nlohmann::json &step) { root_["steps"].push_back(step); }
+  const nlohmann::json &root() const { return root_; }
+
+  // Appends to root()["steps"] (created as an array when absent).
+  void appendStep(const nlohmann::json &step);
+
+  // Creates the parent directory if missing. Non-finite numbers come out as null (JSON has no
+  // NaN); invalid UTF-8 in strings is replaced rather than failing the run at its last moment.
+  // Throws std::runtime_error if the file cannot be written.
   void write() const;
+
+  const std::filesystem::path &file() const { return file_; }
 
 private:
   std::filesystem::path file_;

@@ -1,0 +1,72 @@
+#pragma once
+// Runs a deck from inputs/ the way `glossa run` does, for the integration tests.
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "app/DeckSchema.hpp"
+#include "io/deck/Deck.hpp"
+#include "solvers/Simulation.hpp"
+
+namespace glossa::test {
+
+inline std::string inputPath(const std::string &relative) { return std::string(GLOSSA_SOURCE_DIR) + "/inputs/" + relative; }
+
+inline std::filesystem::path scratchDirectory(const std::string &name) {
+  auto dir = std::filesystem::path(GLOSSA_BINARY_DIR) / "test-output" / name;
+  return dir;
+}
+
+inline nlohmann::json runDeck(const std::string &deckFile, const std::vector<std::string> &overrides,
+                              const std::filesystem::path &output,
+                              Teuchos::RCP<const Teuchos::Comm<int>> comm = Tpetra::getDefaultComm()) {
+  const auto schema = app::deckSchema();
+  auto deck = io::Deck::fromFile(deckFile);
+  for (const auto &o : overrides) deck.applyOverride(o, schema);
+  deck.validate(schema);
+  return solvers::runSimulation(deck, comm, {output, true});
+}
+
+struct TraceRow {
+  double time;
+  std::string point;
+  double u[3];
+};
+
+inline std::vector<TraceRow> readTraces(const std::filesystem::path &file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line); // header
+  std::vector<TraceRow> rows;
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    TraceRow r{};
+    std::string cell;
+    std::getline(s, cell, ',');
+    r.time = std::stod(cell);
+    std::getline(s, r.point, ',');
+    for (double &v : r.u) {
+      std::getline(s, cell, ',');
+      v = std::stod(cell);
+    }
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+// y-displacement of `point` at each written time.
+inline std::map<double, double> traceOf(const std::vector<TraceRow> &rows, const std::string &point, int component) {
+  std::map<double, double> out;
+  for (const auto &r : rows)
+    if (r.point == point) out[r.time] = r.u[component];
+  return out;
+}
+
+} // namespace glossa::test

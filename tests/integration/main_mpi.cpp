@@ -1,0 +1,14 @@
+// GoogleTest main for tests that need MPI and Kokkos initialised.
+#include <gtest/gtest.h>
+#include <Tpetra_Core.hpp>
+
+int main(int argc, char **argv) {
+  Tpetra::ScopeGuard scope(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  // Only rank 0 reports, so ctest's output stays readable under mpiexec.
+  if (Tpetra::getDefaultComm()->getRank() != 0) {
+    auto &listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  return RUN_ALL_TESTS();
+}

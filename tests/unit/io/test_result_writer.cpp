@@ -1,0 +1,281 @@
+// ResultWriter: what it writes reads back exactly with the plain HDF5 C API, the XDMF index names
+// exactly the datasets that exist, bad input is refused before anything is written, and a run
+// that stops (writer destroyed, or process killed) after a step leaves that step readable.
+
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "Hdf5Reading.hpp"
+#include "ScratchDirectory.hpp"
+#include "io/output/ResultWriter.hpp"
+
+namespace glossa::io {
+namespace {
+
+using testing::Hdf5File;
+using testing::ScratchDirectory;
+
+// Two unit hexahedra side by side along x, sharing the face x = 1; VTK node order per hex.
+struct TwoHexMesh {
+  std::vector<Eigen::Vector3d> nodes;
+  std::vector<std::array<std::int64_t, 8>> hexes;
+  TwoHexMesh() {
+    auto id = [](int i, int j, int k) { return static_cast<std::int64_t>(i + 3 * (j + 2 * k)); };
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 3; ++i) nodes.emplace_back(0.1 * i + 1.0 / 3.0, 1.7 * j, -0.3 * k);
+    for (int i = 0; i < 2; ++i)
+      hexes.push_back({id(i, 0, 0), id(i + 1, 0, 0), id(i + 1, 1, 0), id(i, 1, 0), id(i, 0, 1), id(i + 1, 0, 1),
+                       id(i + 1, 1, 1), id(i, 1, 1)});
+  }
+};
+
+// Values that are not short decimals, so any rounding on the way would show.
+Field makeField(const std::string &name, int components, std::size_t tuples, double seed) {
+  Field f{name, components, {}};
+  for (std::size_t i = 0; i < tuples * components; ++i) f.values.push_back((seed + i) / 7.0 + 1e-3 * i * i);
+  return f;
+}
+
+struct StepData {
+  double time;
+  std::vector<Field> nodeFields, cellFields;
+};
+
+StepData makeStep(double time, double seed, const TwoHexMesh &mesh) {
+  const auto n = mesh.nodes.size(), e = mesh.hexes.size();
+  return {time,
+          {makeField("displacement", 3, n, seed), makeField("temperature", 1, n, seed + 1)},
+          {makeField("pressure", 1, e, seed + 2), makeField("cauchy_stress", 6, e, seed + 3),
+           makeField("F", 9, e, seed + 4)}};
+}
+
+void write(ResultWriter &writer, const StepData &s) { writer.writeStep(s.time, s.nodeFields, s.cellFields); }
+
+void expectStepReadsBack(const Hdf5File &file, const std::string &group, const StepData &s) {
+  EXPECT_EQ(file.timeOf(group), s.time);
+  for (const auto *fields : {&s.nodeFields, &s.cellFields})
+    for (const Field &f : *fields) {
+      const auto d = file.doubles(group + "/" + f.name);
+      const std::size_t tuples = f.values.size() / f.components;
+      const std::vector<hsize_t> dims = f.components == 1 ? std::vector<hsize_t>{tuples}
+                                                          : std::vector<hsize_t>{tuples, hsize_t(f.components)};
+      EXPECT_EQ(d.dims, dims) << f.name;
+      EXPECT_EQ(d.values, f.values) << f.name; // exact: bit-for-bit doubles
+    }
+}
+
+void expectMeshReadsBack(const Hdf5File &file, const TwoHexMesh &mesh) {
+  const auto xyz = file.doubles("/mesh/coordinates");
+  ASSERT_EQ(xyz.dims, (std::vector<hsize_t>{mesh.nodes.size(), 3}));
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(xyz.values[3 * i + c], mesh.nodes[i][c]);
+  const auto topology = file.int64s("/mesh/topology");
+  ASSERT_EQ(topology.dims, (std::vector<hsize_t>{mesh.hexes.size(), 8}));
+  for (std::size_t e = 0; e < mesh.hexes.size(); ++e)
+    for (int a = 0; a < 8; ++a) EXPECT_EQ(topology.values[8 * e + a], mesh.hexes[e][a]);
+}
+
+std::string readText(const std::filesystem::path &path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The matches point into `text`, which must outlive them.
+std::vector<std::smatch> matches(const std::string &text, const std::string &pattern) {
+  const std::regex re(pattern);
+  return {std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator()};
+}
+
+// Every HDF DataItem of the XDMF file must point into `<base>.h5` at a dataset that exists with
+// the declared dimensions, and every dataset in the file must be referenced.
+void expectXdmfMatchesHdf5(const std::filesystem::path &xdmf, const Hdf5File &file, const std::string &h5Name) {
+  const std::string text = readText(xdmf);
+  ASSERT_NE(text.find("</Xdmf>"), std::string::npos) << "XDMF file is incomplete";
+  std::set<std::string> referenced;
+  const std::string dataItem = R"re(<DataItem Dimensions="([^"]*)"[^>]*Format="HDF">([^<:]*):([^<]*)</DataItem>)re";
+  for (const auto &m : matches(text, dataItem)) {
+    EXPECT_EQ(m[2].str(), h5Name);
+    const std::string path = m[3].str();
+    referenced.insert(path);
+    ASSERT_TRUE(file.hasLink(path)) << path;
+    std::vector<hsize_t> dims;
+    std::istringstream declared(m[1].str());
+    for (hsize_t d; declared >> d;) dims.push_back(d);
+    EXPECT_EQ(dims, file.doubles(path).dims) << path; // reading as double converts int64 exactly here
+  }
+  EXPECT_EQ(referenced, file.datasetPaths());
+}
+
+std::vector<double> xdmfTimes(const std::filesystem::path &xdmf) {
+  std::vector<double> times;
+  const std::string text = readText(xdmf); // the matches point into it
+  for (const auto &m : matches(text, R"re(<Time Value="([^"]*)"/>)re"))
+    times.push_back(std::strtod(m[1].str().c_str(), nullptr));
+  return times;
+}
+
+TEST(ResultWriter, TwoStepsReadBackExactly) {
+  ScratchDirectory dir;
+  const TwoHexMesh mesh;
+  const StepData s0 = makeStep(0.1, 3.0, mesh), s1 = makeStep(1.0 / 3.0, 11.0, mesh);
+  {
+    ResultWriter writer(dir / "out", "results", mesh.nodes, mesh.hexes); // creates the missing directory
+    write(writer, s0);
+    write(writer, s1);
+    EXPECT_EQ(writer.stepsWritten(), 2u);
+  }
+  const Hdf5File file(dir / "out/results.h5");
+  expectMeshReadsBack(file, mesh);
+  expectStepReadsBack(file, "/step_000000", s0);
+  expectStepReadsBack(file, "/step_000001", s1);
+}
+
+TEST(ResultWriter, XdmfNamesExactlyTheDatasetsAndBothTimes) {
+  ScratchDirectory dir;
+  const TwoHexMesh mesh;
+  const StepData s0 = makeStep(0.1, 3.0, mesh), s1 = makeStep(1.0 / 3.0, 11.0, mesh);
+  ResultWriter writer(dir.path(), "results", mesh.nodes, mesh.hexes);
+  {
+    const Hdf5File file(writer.hdf5Path()); // read while the writer still has it open
+    expectXdmfMatchesHdf5(writer.xdmfPath(), file, "results.h5");
+    EXPECT_TRUE(xdmfTimes(writer.xdmfPath()).empty());
+  }
+  write(writer, s0);
+  write(writer, s1);
+  const Hdf5File file(writer.hdf5Path());
+  expectXdmfMatchesHdf5(writer.xdmfPath(), file, "results.h5");
+  EXPECT_EQ(xdmfTimes(writer.xdmfPath()), (std::vector<double>{s0.time, s1.time}));
+
+  const std::string text = readText(writer.xdmfPath());
+  EXPECT_NE(text.find(R"re(CollectionType="Temporal")re"), std::string::npos);
+  EXPECT_EQ(matches(text, R"re(TopologyType="Hexahedron" NumberOfElements="2")re").size(), 2u);
+  EXPECT_EQ(matches(text, R"re(GeometryType="XYZ")re").size(), 2u);
+  const std::map<std::string, std::pair<std::string, std::string>> expected = {
+      {"displacement", {"Vector", "Node"}}, {"temperature", {"Scalar", "Node"}}, {"pressure", {"Scalar", "Cell"}},
+      {"cauchy_stress", {"Tensor6", "Cell"}}, {"F", {"Tensor", "Cell"}}};
+  const auto attributes = matches(text, R"re(<Attribute Name="([^"]*)" AttributeType="([^"]*)" Center="([^"]*)">)re");
+  EXPECT_EQ(attributes.size(), 2 * expected.size());
+  for (const auto &m : attributes) EXPECT_EQ(expected.at(m[1].str()), std::make_pair(m[2].str(), m[3].str()));
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.xdmf.tmp"));
+}
+
+TEST(ResultWriter, RefusesBadFieldsBeforeWritingAnything) {
+  ScratchDirectory dir;
+  const TwoHexMesh mesh;
+  ResultWriter writer(dir.path(), "results", mesh.nodes, mesh.hexes);
+  const Field good = makeField("pressure", 1, 2, 0.0);
+  auto expectRefused = [&](const std::vector<Field> &nodeFields, const std::vector<Field> &cellFields,
+                           const std::string &mentioned, double time = 1.0) {
+    try {
+      writer.writeStep(time, nodeFields, cellFields);
+      ADD_FAILURE() << "no exception for " << mentioned;
+    } catch (const std::invalid_argument &e) {
+      EXPECT_NE(std::string(e.what()).find(mentioned), std::string::npos) << e.what();
+    }
+  };
+  Field shortVector = makeField("velocity", 3, mesh.nodes.size(), 0.0);
+  shortVector.values.pop_back();
+  expectRefused({shortVector}, {good}, "'velocity'");
+  expectRefused({}, {good, makeField("stress", 6, 3, 0.0)}, "'stress'");        // node count, not cell count
+  expectRefused({makeField("odd", 4, mesh.nodes.size(), 0.0)}, {}, "'odd'");    // 4 components
+  expectRefused({makeField("pressure", 1, mesh.nodes.size(), 0.0)}, {good}, "'pressure'"); // same name twice
+  expectRefused({}, {makeField("a/b", 1, 2, 0.0)}, "'a/b'");
+  expectRefused({}, {good}, "not finite", std::nan(""));
+  EXPECT_EQ(writer.stepsWritten(), 0u);
+  EXPECT_FALSE(Hdf5File(writer.hdf5Path()).hasLink("/step_000000"));
+
+  writer.writeStep(1.0, {}, {good});
+  expectRefused({}, {good}, "not after", 1.0); // times must increase
+  EXPECT_EQ(writer.stepsWritten(), 1u);
+}
+
+TEST(ResultWriter, RefusesTopologyNamingMissingNodes) {
+  ScratchDirectory dir;
+  TwoHexMesh mesh;
+  mesh.hexes[1][6] = 12;
+  EXPECT_THROW(ResultWriter(dir.path(), "results", mesh.nodes, mesh.hexes), std::invalid_argument);
+  EXPECT_THROW(ResultWriter(dir.path(), "a/b", TwoHexMesh().nodes, TwoHexMesh().hexes), std::invalid_argument);
+}
+
+TEST(ResultWriter, WriterDestroyedAfterFirstStepLeavesItReadable) {
+  ScratchDirectory dir;
+  const TwoHexMesh mesh;
+  const StepData s0 = makeStep(0.0, 5.0, mesh);
+  {
+    ResultWriter writer(dir.path(), "run", mesh.nodes, mesh.hexes);
+    write(writer, s0);
+  } // nothing else is called: the run "ends" here
+  const Hdf5File file(dir / "run.h5");
+  expectMeshReadsBack(file, mesh);
+  expectStepReadsBack(file, "/step_000000", s0);
+  expectXdmfMatchesHdf5(dir / "run.xdmf", file, "run.h5");
+  EXPECT_EQ(xdmfTimes(dir / "run.xdmf"), std::vector<double>{0.0});
+}
+
+// A real kill: the child process writes one step and dies by SIGKILL with the HDF5 file still
+// open (no destructor, no H5Fclose). Both files must still read back.
+TEST(ResultWriter, KilledProcessLeavesWrittenStepReadable) {
+  ScratchDirectory dir;
+  const TwoHexMesh mesh;
+  const StepData s0 = makeStep(0.25, 9.0, mesh);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    try {
+      ResultWriter writer(dir.path(), "killed", mesh.nodes, mesh.hexes);
+      write(writer, s0);
+      ::raise(SIGKILL);
+    } catch (...) {
+    }
+    ::_exit(3);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "the child failed before being killed";
+  const Hdf5File file(dir / "killed.h5");
+  expectMeshReadsBack(file, mesh);
+  expectStepReadsBack(file, "/step_000000", s0);
+  expectXdmfMatchesHdf5(dir / "killed.xdmf", file, "killed.h5");
+  EXPECT_EQ(xdmfTimes(dir / "killed.xdmf"), std::vector<double>{0.25});
+}
+
+TEST(ResultWriter, NewRunReplacesEarlierFiles) {
+  ScratchDirectory dir;
+  const TwoHexMesh mesh;
+  {
+    ResultWriter first(dir.path(), "results", mesh.nodes, mesh.hexes);
+    write(first, makeStep(1.0, 0.0, mesh));
+  }
+  ResultWriter second(dir.path(), "results", mesh.nodes, mesh.hexes);
+  const Hdf5File file(dir / "results.h5");
+  EXPECT_FALSE(file.hasLink("/step_000000"));
+  expectXdmfMatchesHdf5(dir / "results.xdmf", file, "results.h5");
+}
+
+TEST(ResultWriter, H5dumpReadsTheFileWhenInstalled) {
+  if (!std::filesystem::exists("/usr/bin/h5dump")) GTEST_SKIP() << "/usr/bin/h5dump not installed";
+  ScratchDirectory dir;
+  const TwoHexMesh mesh;
+  {
+    ResultWriter writer(dir.path(), "results", mesh.nodes, mesh.hexes);
+    write(writer, makeStep(0.5, 1.0, mesh));
+  }
+  const std::string command = "/usr/bin/h5dump -H " + (dir / "results.h5").string() + " > /dev/null";
+  EXPECT_EQ(std::system(command.c_str()), 0);
+}
+
+} // namespace
+} // namespace glossa::io
