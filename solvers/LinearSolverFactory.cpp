@@ -40,7 +40,7 @@ ParameterList linearSolverParameters() {
   io::declareDouble(p, "Chebyshev eigenvalue ratio", 20.0, "",
                     "lambda_max / lambda_min of the interval the Chebyshev smoother damps",
                     io::Range::atLeast(2.0));
-  io::declareString(p, "MueLu reuse", "none",
+  io::declareString(p, "MueLu reuse", "RP",
                     "what MueLu keeps between Newton iterations: none (rebuild), RP (aggregates and "
                     "transfer operators; coarse matrices recomputed), full (the whole hierarchy, stale)",
                     {"none", "RP", "full"});

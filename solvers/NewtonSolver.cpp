@@ -28,6 +28,11 @@ ParameterList nonlinearSolverParameters() {
                     "and when the Newton update is below this relative to the displacement "
                     "(weighted RMS norm; absolute floor 1e-9 of the element size)",
                     io::Range::open(0.0, 1.0));
+  io::declareString(p, "forcing term", "Type 2",
+                    "linear tolerance per Newton iteration: constant (the Linear solver tolerance) "
+                    "or Eisenstat-Walker 'Type 2' (loose while far from the solution, down to the "
+                    "Linear solver tolerance)",
+                    {"constant", "Type 1", "Type 2"});
   io::declareString(p, "line search", "full step", "NOX line search",
                     {"full step", "backtrack", "polynomial"});
   return p;
@@ -95,6 +100,14 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
                                                            rcp(new IterationObserver(onIteration, result, *model_)));
   // NOX passes its own relative tolerance to every linear solve: it must be the deck's.
   params->sublist("Direction").sublist("Newton").sublist("Linear Solver").set("Tolerance", linearTolerance_);
+  const std::string forcing = section_.get<std::string>("forcing term");
+  if (forcing != "constant") {
+    auto &newtonParams = params->sublist("Direction").sublist("Newton");
+    newtonParams.set("Forcing Term Method", forcing);
+    newtonParams.set("Forcing Term Minimum Tolerance", linearTolerance_);
+    newtonParams.set("Forcing Term Initial Tolerance", 1e-2);
+    newtonParams.set("Forcing Term Maximum Tolerance", 1e-2);
+  }
 
   // Already converged (e.g. an Uzawa update that changed nothing)? Then no iteration is needed.
   if (std::isfinite(normF0) && normF0 <= residualTolerance) {

@@ -2,6 +2,7 @@
 // from nu, no Uzawa): the top-face centre displacement at every load step, on 4, 8 and 16
 // elements per side (reference: tests/regression/step44_dealii_reference.csv, produced by
 // bench/step44_dealii/run_step44.sh; doc/verification/step44_reference.md).
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -74,19 +75,23 @@ TEST(Step44Block, ConvergesUnderRefinement) {
   EXPECT_LT(u16, 0.0);
 }
 
-// Newton converges quadratically: with e_k = ||f_k|| / ||f_0||, e_{k+1} <= C e_k^2 once e_k is
+// Newton converges quadratically: with e_k = ||f_k|| / max_j ||f_j|| (the first predictor
+// overshoots the load, so the largest residual sets the scale), e_{k+1} <= C e_k^2 once e_k is
 // small and while e_{k+1} is above round-off.
 TEST(Step44Block, NewtonConvergesQuadratically) {
   const auto dir = test::scratchDirectory("step44_quadratic");
   const auto summary = test::runDeck(test::inputPath("verification/step44_block.xml"),
-                                     {"Mesh/Box/cells=4,4,4", "Linear solver/tolerance=1e-12"}, dir);
+                                     {"Mesh/Box/cells=4,4,4", "Linear solver/tolerance=1e-12",
+                                      "Nonlinear solver/forcing term=constant"},
+                                     dir);
   ASSERT_TRUE(summary.at("converged").get<bool>());
   int checked = 0;
   for (const auto &step : summary.at("steps")) {
     const auto norms = step.at("newton_solves").at(0).at("residual_norms").get<std::vector<double>>();
     ASSERT_GE(norms.size(), 3u);
+    const double scale = *std::max_element(norms.begin(), norms.end());
     for (std::size_t k = 1; k + 1 < norms.size(); ++k) {
-      const double e = norms[k] / norms[0], eNext = norms[k + 1] / norms[0];
+      const double e = norms[k] / scale, eNext = norms[k + 1] / scale;
       if (e > 0.1 || eNext < 1e-10) continue; // round-off floor near 1e-11 of the initial residual
       EXPECT_LE(eNext, 10.0 * e * e) << "step at t = " << step.at("time") << ", iteration " << k;
       ++checked;

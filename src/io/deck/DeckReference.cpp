@@ -1,6 +1,8 @@
 #include "io/deck/DeckReference.hpp"
 
 #include <sstream>
+
+#include <Teuchos_Array.hpp>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,14 @@ namespace glossa::io {
 namespace {
 std::string valueText(const Teuchos::ParameterEntry &entry) {
   std::ostringstream s;
+  if (entry.isType<Teuchos::Array<double>>()) {
+    // Short numbers (0.001, not 1.00000000000000002e-03) read better in a reference.
+    const auto &a = Teuchos::getValue<Teuchos::Array<double>>(entry);
+    s << "{";
+    for (int i = 0; i < a.size(); ++i) s << (i ? ", " : "") << a[i];
+    s << "}";
+    return s.str();
+  }
   entry.leftshift(s, false);
   std::string text = s.str();
   if (text.empty()) text = "\"\"";

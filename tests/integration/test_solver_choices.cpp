@@ -1,0 +1,51 @@
+// The deck's solver choices give the same answer (MueLu, Ifpack2 alone, Amesos2 direct), and a
+// step that fails (the whole 400 MPa load in one step) is cut back and recovered, never a crash.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "RunDeck.hpp"
+
+using namespace glossa;
+
+namespace {
+// deal.II step-44, 4 elements per side, t = 1 (doc/verification/step44_reference.md).
+constexpr double kDealII4 = -0.789713e-3;
+
+double topCentre(const nlohmann::json &summary) {
+  return summary.at("final_displacement").at("top_centre").at(1).get<double>();
+}
+} // namespace
+
+TEST(SolverChoices, MueLuIfpack2AndDirectAgree) {
+  const std::string deck = test::inputPath("verification/step44_block.xml");
+  for (const std::string &choice : {"Linear solver/preconditioner=MueLu", "Linear solver/preconditioner=Ifpack2",
+                                    "Linear solver/type=direct"}) {
+    const auto s = test::runDeck(deck, {"Mesh/Box/cells=4,4,4", choice}, test::scratchDirectory("choice"));
+    ASSERT_TRUE(s.at("converged").get<bool>()) << choice;
+    EXPECT_NEAR(topCentre(s), kDealII4, 1e-5 * std::abs(kDealII4)) << choice;
+  }
+}
+
+TEST(TimeStepping, AFailedStepIsCutBackAndRecovered) {
+  const auto s = test::runDeck(test::inputPath("verification/step44_block.xml"),
+                               {"Mesh/Box/cells=4,4,4", "Time/step size=1"}, test::scratchDirectory("cutback"));
+  ASSERT_TRUE(s.at("converged").get<bool>());
+  EXPECT_GT(s.at("steps").size(), 1u) << "the full load in one step should have needed cut-backs";
+  EXPECT_NEAR(topCentre(s), kDealII4, 1e-5 * std::abs(kDealII4));
+}
+
+TEST(TimeStepping, ARunThatCannotConvergeStopsCleanlyWithItsReason) {
+  // One Newton iteration allowed and no room to cut back: the run must stop, say why, and leave
+  // a readable summary.
+  const auto dir = test::scratchDirectory("nonconvergent");
+  const auto s = test::runDeck(test::inputPath("verification/step44_block.xml"),
+                               {"Mesh/Box/cells=2,2,2", "Nonlinear solver/maximum iterations=1", "Time/minimum step size=0.05"},
+                               dir);
+  EXPECT_FALSE(s.at("converged").get<bool>());
+  EXPECT_NE(s.at("failure").get<std::string>().find("below the minimum step size"), std::string::npos);
+  std::ifstream in(dir / "summary.json");
+  const auto onDisk = nlohmann::json::parse(in);
+  EXPECT_FALSE(onDisk.at("converged").get<bool>());
+  EXPECT_FALSE(onDisk.at("running").get<bool>());
+}
