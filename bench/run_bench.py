@@ -80,7 +80,7 @@ def scaling(args):
     ref = dealii_times()
     for n in args.sizes:
         for ranks in (1, 2):
-            for method in ("penalty", "augmented Lagrangian"):
+            for method in args.methods:
                 o = [f"Mesh/Box/cells={n},{n},{n}", f"Incompressibility/method={method}"]
                 row = {"elements_per_side": n, "ranks": ranks, "method": method}
                 row.update(timed(args.glossa, ranks, o, args.repeats))
@@ -90,7 +90,7 @@ def scaling(args):
                 row["speedup_vs_dealii"] = round(float(d["wall_seconds"]) / row["wall_s"], 2) if d else ""
                 print(row, flush=True)
                 rows.append(row)
-                write("step44_scaling.csv", rows)
+                write(args.output_name, rows)
 
 
 def kappa(args):
@@ -113,6 +113,8 @@ def main():
     p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
     p.add_argument("--sizes", default="4,8,16,32", type=lambda s: [int(x) for x in s.split(",")])
     p.add_argument("--kappa-size", default=8, type=int)
+    p.add_argument("--methods", default="penalty,augmented Lagrangian", type=lambda s: s.split(","))
+    p.add_argument("--output-name", default="step44_scaling.csv")
     p.add_argument("--repeats", default=1, type=int)
     args = p.parse_args()
     if args.what in ("scaling", "all"):

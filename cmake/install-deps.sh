@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ccache
   trilinos-all-dev libscotch-dev libptscotch-dev   # Trilinos' link lists name the scotch libraries
   libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
-  libeigen3-dev libgtest-dev nlohmann-json3-dev
+  libeigen3-dev libgtest-dev nlohmann-json3-dev hdf5-tools
   python3-numpy python3-matplotlib                 # plots and reference-table scripts (/usr/bin/python3)
 )
 missing=()

@@ -12,6 +12,7 @@
 #include "io/deck/Deck.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/DeckReference.hpp"
+#include "model/SceneFactory.hpp"
 #include "solvers/Simulation.hpp"
 
 namespace {
@@ -24,7 +25,8 @@ usage:
       (default: the deck's Output/directory). Under mpiexec -np N it runs on N ranks.
       --timers prints Trilinos' timers (MueLu set-up, Belos solve) at the end.
   glossa validate DECK.xml [--set path=value ...]
-      check a deck and print it with every default filled in
+      check a deck (parameters, and the mesh sets and points it names) and print it with
+      every default filled in
   glossa schema [--markdown]
       print every deck parameter (--markdown: the text of doc/deck-reference.md)
   glossa --help | --version
@@ -97,6 +99,8 @@ int main(int argc, char **argv) {
     }
     if (a.command == "validate") {
       const auto deck = loadDeck(a, schema);
+      // Building the scene checks what needs the mesh too (set names, named points).
+      glossa::model::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
       if (root) std::cout << deck.toXml();
       return 0;
     }

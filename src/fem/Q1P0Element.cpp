@@ -11,7 +11,6 @@ namespace glossa::fem {
 namespace {
 
 using materials::Tangent9;
-using Bmatrix = Eigen::Matrix<double, 9, 24>;
 
 struct PointKinematics {
   Eigen::Matrix<double, 8, 3> dNdX;
@@ -19,15 +18,6 @@ struct PointKinematics {
   Eigen::Matrix3d F;
   double J = 1.0;
 };
-
-// Gradient operator: (grad u)_iJ = B(iJ, 3b+k) u_bk, row i*3+J.
-Bmatrix gradientOperator(const Eigen::Matrix<double, 8, 3> &dNdX) {
-  Bmatrix B = Bmatrix::Zero();
-  for (int b = 0; b < 8; ++b)
-    for (int i = 0; i < 3; ++i)
-      for (int J = 0; J < 3; ++J) B(i * 3 + J, 3 * b + i) = dNdX(b, J);
-  return B;
-}
 
 ElementVector flattenNodes(const NodeMatrix &u) {
   ElementVector v;
@@ -71,9 +61,18 @@ bool kinematics(const NodeMatrix &X, const NodeMatrix &u, std::array<PointKinema
 
 void addPoint(Q1P0Result &r, const PointKinematics &pt, const Eigen::Matrix3d &P,
               const Tangent9 &A, Q1P0Output what) {
-  const Bmatrix B = gradientOperator(pt.dNdX);
-  r.residual.noalias() += B.transpose() * flatten(P) * pt.dV;
-  if (what == Q1P0Output::ResidualAndTangent) r.tangent.noalias() += B.transpose() * (A * pt.dV) * B;
+  // R_a = P dN_a/dX; K_ab(i,k) = sum_JL dN_a/dX_J A(iJ,kL) dN_b/dX_L, using the sparsity of the
+  // gradient operator B (a third of the flops of the dense B^T A B).
+  const Eigen::Matrix<double, 8, 3> &dN = pt.dNdX;
+  for (int a = 0; a < 8; ++a) r.residual.segment<3>(3 * a).noalias() += P * dN.row(a).transpose() * pt.dV;
+  if (what == Q1P0Output::ResidualAndTangent) {
+    Eigen::Matrix<double, 9, 24> AB; // (A B)(iJ, 3b+k) = sum_L A(iJ, kL) dN_b/dX_L
+    for (int b = 0; b < 8; ++b)
+      for (int k = 0; k < 3; ++k) AB.col(3 * b + k).noalias() = A.middleCols<3>(3 * k) * dN.row(b).transpose();
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i)
+        r.tangent.row(3 * a + i).noalias() += pt.dV * dN.row(a) * AB.middleRows<3>(3 * i);
+  }
   r.cauchyMean += P * pt.F.transpose() * pt.dV; // int sigma dv = int P F^T dV
 }
 

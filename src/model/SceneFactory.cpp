@@ -127,6 +127,17 @@ mesh::HexMesh buildMesh(const io::Deck &deck) {
   return m;
 }
 
+// The time function of the sublist at `path`; an inconsistent table is a DeckError there.
+TimeFunction timeFunction(const io::Deck &deck, const std::vector<std::string> &path, double endTime) {
+  const ParameterList *list = &deck.root();
+  for (const auto &p : path) list = &list->sublist(p);
+  try {
+    return TimeFunction::fromParameters(*list, endTime);
+  } catch (const std::invalid_argument &e) {
+    throw io::DeckError(deck.where(path) + ": " + e.what());
+  }
+}
+
 std::string knownSets(const mesh::HexMesh &m) {
   std::string s;
   for (const auto &[name, nodes] : m.nodeSets) s += (s.empty() ? "" : ", ") + name;
@@ -181,11 +192,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     const std::string comps = b.get<std::string>("components");
     for (int i = 0; i < 3; ++i) bc.fixed[i] = comps.find("xyz"[i]) != std::string::npos;
     bc.value = vec3(b.get<Array<double>>("value"));
-    try {
-      bc.scale = TimeFunction::fromParameters(b.sublist("time function"), endTime);
-    } catch (const std::invalid_argument &e) {
-      throw io::DeckError(deck.where({"Boundary conditions", name, "time function"}) + ": " + e.what());
-    }
+    bc.scale = timeFunction(deck, {"Boundary conditions", name, "time function"}, endTime);
     scene.dirichlet.push_back(std::move(bc));
   }
 
@@ -201,11 +208,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
                           "'; the mesh has: " + knownSets(m));
     load.faces = m.faceSets.at(set);
     load.traction = vec3(l.get<Array<double>>("traction"));
-    try {
-      load.scale = TimeFunction::fromParameters(l.sublist("time function"), endTime);
-    } catch (const std::invalid_argument &e) {
-      throw io::DeckError(deck.where({"Loads", name, "time function"}) + ": " + e.what());
-    }
+    load.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
     scene.tractions.push_back(std::move(load));
   }
 
