@@ -1,0 +1,44 @@
+#pragma once
+// Isochoric invariants of C-bar = J^{-2/3} F^T F and their first and second derivatives with
+// respect to F (DESIGN.md §1): I1-bar = tr C-bar (the Fung laws, eq. 9-10) and
+// I4-bar = N . C-bar N = lambda-bar_f^2 (the fibre families, eq. 2-6). Both are
+// I_M-bar = J^{-2/3} C : M for a symmetric structural tensor M (M = 1 or M = N (x) N), so one
+// routine serves both. Any energy psi(I_M-bar) then has P = psi' dI/dF and
+// dP/dF = psi'' dI/dF (x) dI/dF + psi' d2I/dF2, insensitive to pure dilatation by construction.
+
+#include <Eigen/Core>
+
+#include "materials/IsochoricMaterial.hpp"
+
+namespace glossa::materials {
+
+struct IsochoricInvariant {
+  double value = 0.0;                            // I_M-bar = J^{-2/3} tr(C M)
+  Eigen::Matrix3d dF = Eigen::Matrix3d::Zero();  // dI/dF_iJ
+  Tangent9 d2F = Tangent9::Zero();               // d2I/dF_iJ dF_kL, row i*3+J, column k*3+L
+};
+
+using Vector9 = Eigen::Matrix<double, 9, 1>;
+
+// A 3x3 tensor as the 9-vector matching Tangent9's index i*3+J.
+inline Vector9 flatten(const Eigen::Matrix3d &A) {
+  Vector9 v;
+  for (int i = 0; i < 3; ++i)
+    for (int J = 0; J < 3; ++J) v(i * 3 + J) = A(i, J);
+  return v;
+}
+
+// Requires det F > 0 and M symmetric.
+IsochoricInvariant isochoricInvariant(const Eigen::Matrix3d &F, const Eigen::Matrix3d &M);
+
+// I1-bar (M = 1).
+inline IsochoricInvariant isochoricI1(const Eigen::Matrix3d &F) {
+  return isochoricInvariant(F, Eigen::Matrix3d::Identity());
+}
+
+// I4-bar = lambda-bar_f^2 for the reference fibre direction N (M = N (x) N).
+inline IsochoricInvariant isochoricI4(const Eigen::Matrix3d &F, const Eigen::Vector3d &N) {
+  return isochoricInvariant(F, N * N.transpose());
+}
+
+}  // namespace glossa::materials

@@ -1,0 +1,73 @@
+#include "materials/MuscleMaterial.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace glossa::materials {
+
+namespace {
+double validatedMatrixFraction(const std::vector<MuscleMaterial::Family> &families) {
+  if (families.size() > static_cast<std::size_t>(kMaxFibreFamilies))
+    throw std::invalid_argument("MuscleMaterial: at most " + std::to_string(kMaxFibreFamilies) +
+                                " fibre families per point");
+  std::vector<FibreFamily> geometry;
+  for (const auto &f : families) geometry.push_back(f.geometry);
+  return validateFibreFamilies(geometry);
+}
+}  // namespace
+
+MuscleMaterial::MuscleMaterial(std::shared_ptr<const IsochoricMaterial> matrix, std::vector<Family> families,
+                               MatrixStressForm form)
+    : matrix_(std::move(matrix)),
+      families_(std::move(families)),
+      form_(form),
+      matrixFraction_(validatedMatrixFraction(families_)) {
+  if (!matrix_) throw std::invalid_argument("MuscleMaterial: matrix law is null");
+}
+
+MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
+  MusclePointResponse r;
+  const int n = familyCount();
+  r.lambdaC = in.lambdaCOld;
+  r.lambdaF = FamilyValues::Ones(n);
+  r.T = FamilyValues::Zero(n);
+  if (in.alpha.size() != n || in.lambdaCOld.size() != n || !(in.F.determinant() > 0.0)) {
+    r.status = HillSolveStatus::InvalidInput;
+    r.failedFamily = n;  // not a family: the point input itself
+    return r;
+  }
+
+  const PointResponse matrix = matrix_->evaluate(in.F);
+  const double wM = matrixWeight(form_, matrixFraction_);
+  r.energy = wM * matrix.energy;
+  r.P = wM * matrix.P;
+  r.dPdF = wM * matrix.dPdF;
+  bool anyTaut = false;
+  PointResponse fibres;  // accumulates the fibre and eq. 5 terms
+  for (int f = 0; f < n; ++f) {
+    const Family &family = families_[f];
+    const FibreStretch s = fibreStretch(in.F, family.geometry.N);
+    const HillFibreResponse h = family.fibre.evaluate({s.lambdaBar, in.alpha(f), in.dt, in.lambdaCOld(f)});
+    if (!succeeded(h.status)) {
+      r.status = h.status;
+      r.failedFamily = f;
+      return r;
+    }
+    anyTaut = anyTaut || h.status != HillSolveStatus::Slack;
+    r.lambdaC(f) = h.lambdaC;
+    r.lambdaF(f) = s.lambdaBar;
+    r.T(f) = h.T;
+    const double phi = family.geometry.volumeFraction;
+    if (form_ == MatrixStressForm::FibreDirectionRemoved)
+      removeMatrixFibreDirectionStress(in.F, family.geometry.N, s, phi, matrix, fibres);
+    addFibreResponse(s, phi, {h.storedEnergy, h.T, h.dTdLambdaF}, fibres);
+  }
+  r.energy += fibres.energy;
+  r.P += fibres.P;
+  r.dPdF += fibres.dPdF;
+  r.status = anyTaut || n == 0 ? HillSolveStatus::Taut : HillSolveStatus::Slack;
+  return r;
+}
+
+}  // namespace glossa::materials
