@@ -8,6 +8,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Core.hpp>
 
+#include "app/CurvesCommand.hpp"
 #include "app/DeckSchema.hpp"
 #include "io/deck/Deck.hpp"
 #include "io/deck/DeckError.hpp"
@@ -29,6 +30,9 @@ usage:
       every default filled in
   glossa schema [--markdown]
       print every deck parameter (--markdown: the text of doc/deck-reference.md)
+  glossa curves [--output DIR]
+      tabulate the muscle curves f_cL, f_cV (both parameter sets), f_p and f_s to
+      DIR/force_length.csv, force_velocity.csv, passive_series.csv (default DIR: ./curves)
   glossa --help | --version
 
 --set overrides any deck parameter, e.g. --set Mesh/Box/cells=16,16,16 (for sweeps).
@@ -95,6 +99,14 @@ int main(int argc, char **argv) {
         if (a.markdown) glossa::io::writeDeckReference(schema, std::cout);
         else std::cout << glossa::io::Deck::fromList(schema, "schema").toXml();
       }
+      return 0;
+    }
+    if (a.command == "curves") {
+      if (!a.deck.empty() || !a.overrides.empty())
+        throw glossa::io::DeckError("glossa curves takes no deck and no --set; see glossa --help");
+      if (root)
+        for (const auto &file : glossa::app::writeCurveTables(a.output.empty() ? "curves" : a.output))
+          std::cout << "wrote " << file.string() << '\n';
       return 0;
     }
     if (a.command == "validate") {
