@@ -119,7 +119,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
 
   auto assembler = Teuchos::rcp(new assembly::Assembler(scene, comm));
   LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), comm->getSize(),
-                              assembler->layout().numGlobalDofs(), true};
+                              assembler->layout().numGlobalDofs(), scene.symmetricTangent};
   const auto &linearSection = D.sublist("Linear solver");
   auto model = Teuchos::rcp(new assembly::ModelEvaluator(assembler, buildLinearSolver(linearSection, context)));
   double lengthScale = 0.0;

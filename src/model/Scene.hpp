@@ -39,6 +39,7 @@ struct Scene {
   std::shared_ptr<const materials::IsochoricMaterial> material;
   materials::VolumetricEnergy volumetric{materials::VolumetricEnergy::Form::SimoTaylor, 0.0};
   ElementFormulation formulation = ElementFormulation::Q1P0;
+  bool symmetricTangent = true; // CG applies; false selects GMRES when the deck says auto
   std::vector<DirichletCondition> dirichlet;
   std::vector<DeadTractionLoad> tractions;
   std::vector<std::string> tracedPoints; // names in mesh.namedPoints, in deck order

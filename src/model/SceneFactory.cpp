@@ -5,10 +5,10 @@
 
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
-#include "materials/NeoHookean.hpp"
 #include "mesh/BoxGenerator.hpp"
 #include "mesh/CookMembraneGenerator.hpp"
 #include "mesh/HexMesh.hpp"
+#include "model/MaterialFactory.hpp"
 
 namespace glossa::model {
 
@@ -41,27 +41,6 @@ ParameterList meshParameters() {
   io::declareString(face, "from", "", "existing face set to select from");
   io::declareDoubleArray(face, "box min", Array<double>(3, -1e300), "m", "lower corner of the selection box", 3);
   io::declareDoubleArray(face, "box max", Array<double>(3, 1e300), "m", "upper corner of the selection box", 3);
-  return p;
-}
-
-ParameterList materialParameters() {
-  ParameterList p;
-  io::declareString(p, "type", "neo-Hookean", "isochoric point law (paper eq. 8)", {"neo-Hookean"});
-  io::declareDouble(p, "shear modulus", 80.194e6, "Pa", "mu", io::Range::positive());
-  io::declareDouble(p, "Poisson's ratio", 0.4999, "",
-                    "nu, gives the bulk modulus kappa = 2 mu (1+nu) / (3 (1-2nu)) unless "
-                    "'bulk modulus' is set",
-                    io::Range::open(-1.0, 0.5));
-  io::declareDouble(p, "bulk modulus", 0.0, "Pa", "kappa; 0 means: from Poisson's ratio",
-                    io::Range::nonNegative());
-  io::declareString(p, "volumetric energy", "simo-taylor",
-                    "U(theta): simo-taylor kappa/4 (theta^2-1-2 ln theta) (as step-44), "
-                    "log-squared kappa/2 ln^2 theta, quadratic kappa/2 (theta-1)^2",
-                    {"simo-taylor", "log-squared", "quadratic"});
-  io::declareString(p, "element", "Q1P0",
-                    "Q1P0: three-field, pressure and dilatation condensed per element; Q1: plain "
-                    "displacement element (locks; for comparison only)",
-                    {"Q1P0", "Q1"});
   return p;
 }
 
@@ -168,14 +147,11 @@ Scene buildScene(const io::Deck &deck, double endTime) {
   scene.mesh = buildMesh(deck);
   mesh::HexMesh &m = scene.mesh;
 
-  const ParameterList &mat = deck.root().sublist("Material");
-  const double mu = mat.get<double>("shear modulus");
-  const double kappaGiven = mat.get<double>("bulk modulus");
-  const double kappa = kappaGiven > 0.0 ? kappaGiven : materials::bulkModulus(mu, mat.get<double>("Poisson's ratio"));
-  scene.material = std::make_shared<materials::NeoHookean>(mu);
-  scene.volumetric = materials::VolumetricEnergy(
-      materials::VolumetricEnergy::formFromName(mat.get<std::string>("volumetric energy")), kappa);
-  scene.formulation = mat.get<std::string>("element") == "Q1" ? ElementFormulation::PlainQ1 : ElementFormulation::Q1P0;
+  const BuiltMaterial material = buildMaterial(deck);
+  scene.material = material.isochoric;
+  scene.volumetric = material.volumetric;
+  scene.formulation = material.plainQ1 ? ElementFormulation::PlainQ1 : ElementFormulation::Q1P0;
+  scene.symmetricTangent = material.symmetricTangent;
 
   const ParameterList &bcs = deck.root().sublist("Boundary conditions");
   for (auto it = bcs.begin(); it != bcs.end(); ++it) {

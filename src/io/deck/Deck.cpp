@@ -100,7 +100,7 @@ void Deck::applyOverride(const std::string &assignment, const Teuchos::Parameter
   Teuchos::ParameterList *user = &list_;
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
     if (valid->isSublist(path[i])) valid = &valid->sublist(path[i]);
-    else if (valid->isSublist(kAnySublist) && user->isSublist(path[i]))
+    else if (valid->isSublist(kAnySublist)) // a repeated section: --set may add one
       valid = &valid->sublist(kAnySublist);
     else
       throw DeckError("--set " + assignment + ": no section '" + path[i] + "' there; known: " +

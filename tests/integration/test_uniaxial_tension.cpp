@@ -1,0 +1,71 @@
+// Homogeneous uniaxial tension of an incompressible block through the full solve (Q1-P0,
+// augmented Lagrangian to 1e-6) against the analytic stress-stretch relations, written here
+// independently of the material code: with F = diag(lambda, lambda^-1/2, lambda^-1/2) and free
+// lateral faces, P11 = (sigma_11 - sigma_22) / lambda where sigma_11 - sigma_22 is
+//   neo-Hookean:  mu (lambda^2 - 1/lambda)
+//   Fung:         2 A B exp(B (I1 - 3)) (lambda^2 - 1/lambda),  I1 = lambda^2 + 2/lambda
+//   + fibres along x (eq. 6, one family, phi = 0.7): + phi lambda T0max 2 a A (lambda - 1) exp(a (lambda - 1)^2)
+// The issue asks for 0.5 %; the deformation is homogeneous, so the match is much closer.
+#include <cmath>
+#include <functional>
+
+#include <gtest/gtest.h>
+
+#include "RunDeck.hpp"
+
+using namespace glossa;
+
+namespace {
+const double A = 1652.0, B = 0.6265;                        // Table I muscle matrix
+const double T0max = 668.8e3, a = 12.43, Ap = 8.568e-4, phi = 0.7; // Table I parallel element
+
+double fungDifference(double l) {
+  const double I1 = l * l + 2.0 / l;
+  return 2.0 * A * B * std::exp(B * (I1 - 3.0)) * (l * l - 1.0 / l);
+}
+
+// The stretch at which P11(lambda) = t, by bisection on [1, 3].
+double stretchFor(double t, const std::function<double(double)> &P11) {
+  double lo = 1.0, hi = 3.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (P11(mid) < t ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+void expectStretch(const std::vector<std::string> &overrides, double traction,
+                   const std::function<double(double)> &P11, const std::string &tag) {
+  auto all = overrides;
+  all.push_back("Loads/pull/traction=" + std::to_string(traction) + ",0,0");
+  const auto s = test::runDeck(test::inputPath("verification/uniaxial_tension.xml"), all,
+                               test::scratchDirectory("uniaxial_" + tag));
+  ASSERT_TRUE(s.at("converged").get<bool>()) << tag;
+  const double L = 1e-3;
+  const auto u = s.at("final_displacement").at("corner").get<std::vector<double>>();
+  const double lambda = 1.0 + u[0] / L;
+  const double exact = stretchFor(traction, P11);
+  EXPECT_NEAR(lambda - 1.0, exact - 1.0, 1e-4 * (exact - 1.0)) << tag;
+  // Incompressible: the lateral stretch is lambda^-1/2.
+  EXPECT_NEAR(1.0 + u[1] / L, 1.0 / std::sqrt(exact), 1e-5) << tag;
+  EXPECT_NEAR(u[1], u[2], 1e-15) << tag;
+}
+} // namespace
+
+TEST(UniaxialTension, NeoHookean) {
+  const double mu = 1000.0;
+  expectStretch({"Material/type=neo-Hookean", "Material/shear modulus=1000"}, 1000.0,
+                [&](double l) { return mu * (l * l - 1.0 / l) / l; }, "neo_hookean");
+}
+
+TEST(UniaxialTension, FungMuscleMatrix) {
+  expectStretch({}, 1000.0, [](double l) { return fungDifference(l) / l; }, "fung");
+}
+
+TEST(UniaxialTension, PassiveFibreReinforcedMuscle) {
+  auto P11 = [](double l) {
+    const double Tp = T0max * 2.0 * a * Ap * (l - 1.0) * std::exp(a * (l - 1.0) * (l - 1.0));
+    return (fungDifference(l) + phi * l * Tp) / l;
+  };
+  expectStretch({"Material/Fibre families/along x/direction=1,0,0"}, 2000.0, P11, "fibre");
+}
