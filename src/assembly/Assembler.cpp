@@ -112,6 +112,26 @@ std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::ve
   return bases;
 }
 
+void Assembler::addExternalForces(double time, Teuchos::ArrayRCP<double> &fData) const {
+  // External forces enter with a minus sign: f = f_int - f_ext.
+  const mesh::HexMesh &mesh = scene_.mesh;
+  for (const auto &load : scene_.tractions) {
+    const Eigen::Vector3d t = load.traction * load.scale(time);
+    for (const auto &face : load.faces) {
+      if (layout_.elementOwner[face.element] != layout_.rank) continue;
+      const auto &hex = mesh.elements[face.element];
+      loads::FaceNodes Xf;
+      for (int k = 0; k < 4; ++k) Xf.row(k) = mesh.nodes[hex[mesh::kHexFaceNodes[face.localFace][k]]].transpose();
+      const loads::FaceForces ff = loads::deadTractionForces(Xf, t);
+      for (int k = 0; k < 4; ++k) {
+        const mesh::NodeId n = hex[mesh::kHexFaceNodes[face.localFace][k]];
+        for (int c = 0; c < 3; ++c)
+          if (!constrained_[3 * n + c]) fData[overlapMap_->getLocalElement(layout_.dof(n, c))] -= ff(3 * k + c);
+      }
+    }
+  }
+}
+
 AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vector<double> &lambda,
                                    const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K) const {
   const mesh::HexMesh &mesh = scene_.mesh;
@@ -164,22 +184,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
         }
       }
     }
-    // External forces enter with a minus sign: f = f_int - f_ext.
-    for (const auto &load : scene_.tractions) {
-      const Eigen::Vector3d t = load.traction * load.scale(time);
-      for (const auto &face : load.faces) {
-        if (layout_.elementOwner[face.element] != layout_.rank) continue;
-        const auto &hex = mesh.elements[face.element];
-        loads::FaceNodes Xf;
-        for (int k = 0; k < 4; ++k) Xf.row(k) = mesh.nodes[hex[mesh::kHexFaceNodes[face.localFace][k]]].transpose();
-        const loads::FaceForces ff = loads::deadTractionForces(Xf, t);
-        for (int k = 0; k < 4; ++k) {
-          const mesh::NodeId n = hex[mesh::kHexFaceNodes[face.localFace][k]];
-          for (int c = 0; c < 3; ++c)
-            if (!constrained_[3 * n + c]) fData[overlapMap_->getLocalElement(layout_.dof(n, c))] -= ff(3 * k + c);
-        }
-      }
-    }
+    addExternalForces(time, fData);
   }
   if (K) K->endAssembly();
   if (f) {
@@ -225,10 +230,12 @@ ElementFields Assembler::elementFields(const Vector &u, const std::vector<double
 }
 
 double Assembler::externalForceNorm(double time) const {
-  // f(u = 0, Lambda = 0) is -f_ext exactly: the reference configuration is stress free.
-  Vector zero(ownedMap_), f(ownedMap_);
-  std::vector<double> lambda(layout_.localElements.size(), 0.0);
-  assemble(zero, time, lambda, nullptr, &f, nullptr);
+  Vector fOverlap(overlapMap_), f(ownedMap_);
+  {
+    auto fData = fOverlap.getDataNonConst(0);
+    addExternalForces(time, fData);
+  }
+  f.doExport(fOverlap, *exporter_, Tpetra::ADD);
   return f.norm2();
 }
 

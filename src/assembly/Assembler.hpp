@@ -79,6 +79,8 @@ public:
 
 private:
   void importToOverlap(const Vector &u, Vector &overlap) const;
+  // Subtracts the dead tractions at time t from the overlap residual (local faces only).
+  void addExternalForces(double time, Teuchos::ArrayRCP<double> &fData) const;
   fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
 
   const model::Scene &scene_;

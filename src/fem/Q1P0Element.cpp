@@ -16,6 +16,7 @@ struct PointKinematics {
   Eigen::Matrix<double, 8, 3> dNdX;
   double dV = 0.0; // reference volume weight
   Eigen::Matrix3d F;
+  Eigen::Matrix3d Finv; // valid when J > 0
   double J = 1.0;
 };
 
@@ -54,6 +55,7 @@ bool kinematics(const NodeMatrix &X, const NodeMatrix &u, std::array<PointKinema
     pts[q].dV = detJ0 * rule[q].weight;
     pts[q].F = Eigen::Matrix3d::Identity() + u.transpose() * pts[q].dNdX;
     pts[q].J = pts[q].F.determinant();
+    if (pts[q].J > 0.0) pts[q].Finv = pts[q].F.inverse();
     minJ = std::min(minJ, pts[q].J);
   }
   return true;
@@ -87,7 +89,7 @@ void volumeAndGradient(const std::array<PointKinematics, 8> &pts, double &V, dou
   for (const auto &pt : pts) {
     V += pt.dV;
     v += pt.J * pt.dV;
-    const Eigen::Matrix3d JFinvT = pt.J * pt.F.inverse().transpose();
+    const Eigen::Matrix3d JFinvT = pt.J * pt.Finv.transpose();
     for (int a = 0; a < 8; ++a) g.segment<3>(3 * a) += JFinvT * pt.dNdX.row(a).transpose() * pt.dV;
   }
 }
@@ -97,7 +99,7 @@ void addDeviatoricAndPressure(Q1P0Result &r, const std::array<PointKinematics, 8
                               const materials::IsochoricMaterial &material, Q1P0Output what) {
   for (const auto &pt : pts) {
     const materials::PointResponse iso = material.evaluate(pt.F);
-    const Eigen::Matrix3d Finv = pt.F.inverse();
+    const Eigen::Matrix3d &Finv = pt.Finv;
     const Eigen::Matrix3d P = iso.P + p * pt.J * Finv.transpose();
     Tangent9 A;
     if (what == Q1P0Output::ResidualAndTangent) A = iso.dPdF + p * cofactorDerivative(Finv, pt.J);
@@ -195,7 +197,7 @@ Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u,
   double V = 0.0, v = 0.0, pressureIntegral = 0.0;
   for (const auto &pt : pts) {
     const materials::PointResponse iso = material.evaluate(pt.F);
-    const Eigen::Matrix3d Finv = pt.F.inverse();
+    const Eigen::Matrix3d &Finv = pt.Finv;
     const Eigen::Matrix3d JFinvT = pt.J * Finv.transpose();
     const double p = volumetric.dU(pt.J);
     const Eigen::Matrix3d P = iso.P + p * JFinvT;
