@@ -32,7 +32,9 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
   r.lambdaC = in.lambdaCOld;
   r.lambdaF = FamilyValues::Ones(n);
   r.T = FamilyValues::Zero(n);
-  if (in.alpha.size() != n || in.lambdaCOld.size() != n || !(in.F.determinant() > 0.0)) {
+  const bool ownDirections = in.directions.cols() == 0;
+  if (in.alpha.size() != n || in.lambdaCOld.size() != n || (!ownDirections && in.directions.cols() != n) ||
+      !(in.F.determinant() > 0.0)) {
     r.status = HillSolveStatus::InvalidInput;
     r.failedFamily = n;  // not a family: the point input itself
     return r;
@@ -47,7 +49,8 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
   PointResponse fibres;  // accumulates the fibre and eq. 5 terms
   for (int f = 0; f < n; ++f) {
     const Family &family = families_[f];
-    const FibreStretch s = fibreStretch(in.F, family.geometry.N);
+    const Eigen::Vector3d N = ownDirections ? family.geometry.N : Eigen::Vector3d(in.directions.col(f));
+    const FibreStretch s = fibreStretch(in.F, N);
     const HillFibreResponse h = family.fibre.evaluate({s.lambdaBar, in.alpha(f), in.dt, in.lambdaCOld(f)});
     if (!succeeded(h.status)) {
       r.status = h.status;
@@ -60,7 +63,7 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
     r.T(f) = h.T;
     const double phi = family.geometry.volumeFraction;
     if (form_ == MatrixStressForm::FibreDirectionRemoved)
-      removeMatrixFibreDirectionStress(in.F, family.geometry.N, s, phi, matrix, fibres);
+      removeMatrixFibreDirectionStress(in.F, N, s, phi, matrix, fibres);
     addFibreResponse(s, phi, {h.storedEnergy, h.T, h.dTdLambdaF}, fibres);
   }
   r.energy += fibres.energy;

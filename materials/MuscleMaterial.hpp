@@ -24,12 +24,17 @@ namespace glossa::materials {
 constexpr int kMaxFibreFamilies = 8;
 // Per-family values, dynamic size <= kMaxFibreFamilies, stored inline.
 using FamilyValues = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxFibreFamilies, 1>;
+// Per-family reference directions as columns, stored inline.
+using FamilyDirections = Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::ColMajor, 3, kMaxFibreFamilies>;
 
 struct MusclePointInput {
   Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
   double dt = 1.0;          // time step [s]
   FamilyValues alpha;       // activation of each family's muscle group, in [0, 1]
   FamilyValues lambdaCOld;  // committed contractile stretch per family
+  // Reference fibre directions at this point (unit columns, one per family) when the direction
+  // varies over the body (a fan, a field read from a file); empty: each family's own N.
+  FamilyDirections directions;
 };
 
 struct MusclePointResponse {
@@ -57,7 +62,8 @@ class MuscleMaterial {
   MuscleMaterial(std::shared_ptr<const IsochoricMaterial> matrix, std::vector<Family> families,
                  MatrixStressForm form = MatrixStressForm::InFull);
 
-  // Requires det F > 0 and alpha, lambdaCOld sized familyCount(); otherwise status InvalidInput.
+  // Requires det F > 0, alpha and lambdaCOld sized familyCount() and directions empty or with
+  // familyCount() columns; otherwise status InvalidInput.
   MusclePointResponse evaluate(const MusclePointInput &in) const;
 
   int familyCount() const { return static_cast<int>(families_.size()); }

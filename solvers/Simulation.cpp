@@ -11,6 +11,7 @@
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "io/deck/ParameterSpec.hpp"
+#include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "io/output/SummaryWriter.hpp"
 #include "io/output/TraceWriter.hpp"
@@ -56,6 +57,9 @@ public:
     const auto &mesh = assembler.scene().mesh;
     if (fields_) results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.nodes, mesh.elements);
     traces_ = std::make_unique<io::TraceWriter>(dir / "traces.csv");
+    if (!assembler.scene().muscles.groups.empty())
+      activation_ = std::make_unique<io::KeyedCsvWriter>(
+          dir / "activation.csv", "group", std::vector<std::string>{"u", "alpha", "ffmr", "mean_fibre_stretch"});
   }
 
   // Displacement of every traced point (on every rank).
@@ -69,9 +73,25 @@ public:
     return out;
   }
 
-  void record(double time, const assembly::Vector &u, const std::vector<double> &lambda, bool writeFields) {
+  // Per muscle group: u, alpha, FFMR = T0s alpha (§6) and the mean fibre stretch, as written
+  // to activation.csv (the converged step's values, before they are committed).
+  std::vector<std::pair<std::string, std::vector<double>>> activationRows(const assembly::MuscleFields &muscle,
+                                                                          const std::vector<double> &input) const {
+    const auto &groups = assembler_.scene().muscles.groups;
+    const auto &alpha = assembler_.muscleHistory().trialActivation();
+    std::vector<std::pair<std::string, std::vector<double>>> rows;
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      rows.push_back({groups[g].name,
+                      {input[g], alpha[g], materials::fractionOfFullMuscleResponse(groups[g].T0s, alpha[g]),
+                       muscle.groupMeanStretch[g]}});
+    return rows;
+  }
+
+  void record(double time, const assembly::Vector &u, const std::vector<double> &lambda, bool writeFields,
+              const assembly::MuscleFields &muscle, const std::vector<double> &input) {
     const std::vector<double> uAll = assembler_.gatherDisplacement(u);
     if (root_) traces_->append(time, pointDisplacements(uAll));
+    if (root_ && activation_) activation_->append(time, activationRows(muscle, input));
     if (!fields_ || !writeFields) return;
     const auto f = assembler_.elementFields(u, lambda);
     std::vector<double> stress;
@@ -81,9 +101,27 @@ public:
     auto theta = assembler_.gatherElementField(f.theta, 1);
     auto minJ = assembler_.gatherElementField(f.minJ, 1);
     auto cauchy = assembler_.gatherElementField(stress, 6);
+    std::vector<io::Field> cells{
+        {"pressure", 1, pressure}, {"dilatation", 1, theta}, {"J", 1, minJ}, {"cauchy_stress", 6, cauchy}};
+    if (assembler_.scene().muscles.hasFibres()) {
+      cells.push_back({"fibre_stress", 1, assembler_.gatherElementField(muscle.fibreStress, 1)});
+      // One column per group, gathered together and split by group on rank 0.
+      const auto &groups = assembler_.scene().muscles.groups;
+      const int G = muscle.groups;
+      const auto stretch = assembler_.gatherElementField(muscle.fibreStretch, G);
+      const auto contractile = assembler_.gatherElementField(muscle.contractileStretch, G);
+      for (int g = 0; g < G && root_; ++g) {
+        std::vector<double> a, b;
+        for (std::size_t e = 0; e < stretch.size() / static_cast<std::size_t>(G); ++e) {
+          a.push_back(stretch[e * G + g]);
+          b.push_back(contractile[e * G + g]);
+        }
+        cells.push_back({"fibre_stretch_" + groups[g].name, 1, a});
+        cells.push_back({"contractile_stretch_" + groups[g].name, 1, b});
+      }
+    }
     if (!root_) return;
-    results_->writeStep(time, {{"displacement", 3, uAll}},
-                        {{"pressure", 1, pressure}, {"dilatation", 1, theta}, {"J", 1, minJ}, {"cauchy_stress", 6, cauchy}});
+    results_->writeStep(time, {{"displacement", 3, uAll}}, cells);
   }
 
 private:
@@ -91,6 +129,7 @@ private:
   bool root_, fields_;
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;
+  std::unique_ptr<io::KeyedCsvWriter> activation_;
 };
 } // namespace
 
@@ -169,7 +208,13 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
 
   assembly::Vector u(assembler->ownedMap());
   std::vector<double> lambda(assembler->numLocalElements(), 0.0);
-  recorder.record(0.0, u, lambda, true);
+  model::MuscleHistory &history = assembler->muscleHistory();
+  auto inputs = [&](double time) {
+    std::vector<double> v;
+    for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g) v.push_back(history.input(static_cast<int>(g), time));
+    return v;
+  };
+  recorder.record(0.0, u, lambda, true, assembler->updateMuscleHistory(u), inputs(0.0));
   writeSummary();
 
   double t = 0.0;
@@ -185,6 +230,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     assembler->applyDirichlet(uTrial, tNew);
     model->setTime(tNew);
     model->setLambda(&lambdaTrial);
+    history.beginStep(tNew, dt); // trial activation; lambda_c stays at its committed value
 
     // The Newton tolerance scales with the load: the external force and the step's initial residual.
     assembly::Vector f0(assembler->ownedMap());
@@ -205,10 +251,14 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     };
     UzawaResult r = uzawa.solve(uTrial, lambdaTrial, tolerance, onNewton, onUzawa);
     model->setLambda(nullptr);
+    // The history at the converged state: lambda_c of every point with this step's activation.
+    assembly::MuscleFields muscle;
+    if (r.converged) muscle = assembler->updateMuscleHistory(uTrial);
 
-    if (!r.converged) {
+    if (!r.converged || !muscle.valid) {
       const NewtonResult &last = r.newton.back();
-      const std::string why = r.elementInverted ? "an element inverted (J <= 0)"
+      const std::string why = !muscle.valid ? "a contractile-stretch solve failed at the converged state"
+                              : r.elementInverted ? "an element inverted (J <= 0) or a muscle point law failed"
                               : !last.failure.empty() ? last.failure.substr(0, last.failure.find('\n'))
                               : !last.converged ? "Newton did not converge"
                                                 : "Uzawa did not reach the dilatation tolerance";
@@ -220,14 +270,15 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
       }
       continue;
     }
-    // Commit.
+    // Commit (the muscle history after the output, whose stresses are those of the converged
+    // state: this step's activation with the committed lambda_c it was solved with).
     u.assign(uTrial);
     lambda = lambdaTrial;
     t = tNew;
     ++stepNumber;
     steps.accept();
     const bool last = t >= steps.endTime() * (1.0 - 1e-12);
-    recorder.record(t, u, lambda, last || stepNumber % every == 0);
+    recorder.record(t, u, lambda, last || stepNumber % every == 0, muscle, history.trialInput());
 
     nlohmann::json step;
     step["time"] = t;
@@ -242,7 +293,14 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     nlohmann::json histories = nlohmann::json::array();
     for (const auto &n : r.newton) histories.push_back({{"residual_norms", n.residualNorms}, {"krylov", n.linearIterationsPerStep}});
     step["newton_solves"] = histories;
+    if (!scene.muscles.groups.empty()) {
+      nlohmann::json activation = nlohmann::json::object();
+      for (const auto &[group, values] : recorder.activationRows(muscle, history.trialInput()))
+        activation[group] = {{"u", values[0]}, {"alpha", values[1]}, {"ffmr", values[2]}, {"mean_fibre_stretch", values[3]}};
+      step["activation"] = activation;
+    }
     doc["steps"].push_back(step);
+    history.commit();
     if (talk)
       std::printf("step %d done  t = %.6g  newton %d  krylov %d  uzawa %d  max|theta-1| %.2e  [%.2f s]\n", stepNumber, t,
                   r.newtonIterations, r.linearIterations, r.solves, r.dilatation.max, since(start));

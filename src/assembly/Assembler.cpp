@@ -10,6 +10,7 @@
 #include "fem/HexShape.hpp"
 #include "fem/Q1P0Element.hpp"
 #include "loads/DeadTraction.hpp"
+#include "model/TissuePointLaw.hpp"
 
 namespace glossa::assembly {
 
@@ -55,6 +56,7 @@ Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
   const double h = std::cbrt(volume / static_cast<double>(mesh.numElements()));
   dirichletScale_ = (scene_.volumetric.kappa() + 4.0 / 3.0 * scene_.material->shearModulus()) * h;
 
+  history_ = model::MuscleHistory(scene_.muscles, layout_.localElements);
   elementLids_.resize(layout_.localElements.size());
   elementGids_.resize(layout_.localElements.size());
   for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
@@ -154,11 +156,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
       const fem::NodeMatrix X = mesh.elementCoordinates(e);
       const fem::NodeMatrix ue = elementDisplacement(i, uData);
       const fem::Q1P0Result r =
-          scene_.formulation == model::ElementFormulation::PlainQ1
-              ? fem::evaluatePlainQ1(X, ue, *scene_.material, scene_.volumetric, what)
-          : bases ? fem::evaluateQ1P0Mixed(X, ue, (*bases)[i], *scene_.material, scene_.volumetric, lambda[i],
-                                           /*extrapolate=*/K == nullptr, what)
-                  : fem::evaluateQ1P0(X, ue, *scene_.material, scene_.volumetric, lambda[i], what);
+          evaluateElement(i, X, ue, lambda[i], bases ? &(*bases)[i] : nullptr, /*extrapolate=*/K == nullptr, what);
       localMinJ = std::min(localMinJ, r.minJ);
       if (!r.valid) {
         localValid = 0;
@@ -215,17 +213,102 @@ ElementFields Assembler::elementFields(const Vector &u, const std::vector<double
     const auto e = layout_.localElements[i];
     const fem::NodeMatrix ue = elementDisplacement(i, uData);
     const fem::NodeMatrix X = mesh.elementCoordinates(e);
-    const auto r = scene_.formulation == model::ElementFormulation::Q1P0
-                       ? fem::evaluateQ1P0(X, ue, *scene_.material, scene_.volumetric, lambda[i],
-                                           fem::Q1P0Output::ResidualOnly)
-                       : fem::evaluatePlainQ1(X, ue, *scene_.material, scene_.volumetric,
-                                              fem::Q1P0Output::ResidualOnly);
+    const auto r = evaluateElement(i, X, ue, lambda[i], nullptr, false, fem::Q1P0Output::ResidualOnly);
     out.theta[i] = r.theta;
     out.pressure[i] = r.pressure;
     out.minJ[i] = r.minJ;
     out.cauchy[i] = r.cauchyMean;
     out.referenceVolume[i] = r.referenceVolume;
   }
+  return out;
+}
+
+fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue,
+                                           double lambda, const fem::MixedBase *base, bool extrapolate,
+                                           fem::Q1P0Output what) const {
+  const auto e = static_cast<std::size_t>(layout_.localElements[i]);
+  const int region = scene_.muscles.hasFibres() ? scene_.muscles.elementRegion[e] : -1;
+  auto kernel = [&](const fem::QuadraturePointLaw &law) {
+    if (scene_.formulation == model::ElementFormulation::PlainQ1)
+      return fem::evaluatePlainQ1(X, ue, law, scene_.volumetric, what);
+    if (base) return fem::evaluateQ1P0Mixed(X, ue, *base, law, scene_.volumetric, lambda, extrapolate, what);
+    return fem::evaluateQ1P0(X, ue, law, scene_.volumetric, lambda, what);
+  };
+  if (region < 0) return kernel(fem::UniformPointLaw(*scene_.material));
+  std::array<const double *, 8> lambdaCOld;
+  for (int q = 0; q < 8; ++q) lambdaCOld[q] = history_.committedLambdaC(i, q);
+  return kernel(model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
+                                      history_.familyActivation(i), history_.dt(), lambdaCOld));
+}
+
+MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  const auto &muscles = scene_.muscles;
+  MuscleFields out;
+  const std::size_t n = layout_.localElements.size();
+  const std::size_t G = muscles.groups.size();
+  out.groups = static_cast<int>(G);
+  out.fibreStretch.assign(n * G, 0.0);
+  out.contractileStretch.assign(n * G, 0.0);
+  out.fibreStress.assign(n, 0.0);
+  // Per group: sum of lambda_f dV and of dV (then reduced over ranks).
+  std::vector<double> weighted(2 * G, 0.0), weightedAll(2 * G, 0.0);
+  int localValid = 1;
+  if (muscles.hasFibres()) {
+    Vector uOverlap(overlapMap_);
+    importToOverlap(u, uOverlap);
+    auto uData = uOverlap.getData(0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto e = static_cast<std::size_t>(layout_.localElements[i]);
+      const int region = muscles.elementRegion[e];
+      if (region < 0) continue;
+      const model::FibreRegion &r = muscles.regions[region];
+      const fem::NodeMatrix X = mesh.elementCoordinates(layout_.localElements[i]);
+      const fem::NodeMatrix ue = elementDisplacement(i, uData);
+      std::array<Eigen::Matrix3d, 8> F;
+      std::array<double, 8> dV;
+      std::array<const double *, 8> lambdaCOld;
+      for (int q = 0; q < 8; ++q) lambdaCOld[q] = history_.committedLambdaC(i, q);
+      model::ElementMuscleResponse response;
+      const model::TissuePointLaw law(*r.law, muscles.directions[e], history_.familyActivation(i), history_.dt(),
+                                      lambdaCOld, &response);
+      materials::PointResponse ignored;
+      bool ok = fem::quadratureDeformationGradients(X, ue, F, dV);
+      for (int q = 0; ok && q < 8; ++q) ok = F[q].determinant() > 0.0 && law.evaluate(q, F[q], ignored);
+      if (!ok) {
+        localValid = 0;
+        continue;
+      }
+      const int families = r.law->familyCount();
+      std::vector<int> count(G, 0);
+      for (int q = 0; q < 8; ++q) {
+        double* lambdaC = history_.trialLambdaC(i, q);
+        for (int f = 0; f < families; ++f) {
+          lambdaC[f] = response.lambdaC[q](f);
+          out.fibreStress[i] += r.law->families()[f].geometry.volumeFraction * response.T[q](f) / 8.0;
+          const int g = r.familyGroup[f];
+          if (g < 0) continue;
+          out.fibreStretch[i * G + g] += response.lambdaF[q](f);
+          out.contractileStretch[i * G + g] += response.lambdaC[q](f);
+          ++count[g];
+          weighted[2 * g] += response.lambdaF[q](f) * dV[q];
+          weighted[2 * g + 1] += dV[q];
+        }
+      }
+      for (std::size_t g = 0; g < G; ++g)
+        if (count[g] > 0) {
+          out.fibreStretch[i * G + g] /= count[g];
+          out.contractileStretch[i * G + g] /= count[g];
+        }
+    }
+  }
+  int globalValid = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
+  out.valid = globalValid == 1;
+  if (G > 0)
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(2 * G), weighted.data(), weightedAll.data());
+  for (std::size_t g = 0; g < G; ++g)
+    out.groupMeanStretch.push_back(weightedAll[2 * g + 1] > 0.0 ? weightedAll[2 * g] / weightedAll[2 * g + 1] : 1.0);
   return out;
 }
 

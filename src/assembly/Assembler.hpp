@@ -16,6 +16,7 @@
 #include "assembly/DofLayout.hpp"
 #include "assembly/TpetraTypes.hpp"
 #include "fem/Q1P0Element.hpp"
+#include "model/MuscleHistory.hpp"
 #include "model/Scene.hpp"
 
 namespace glossa::assembly {
@@ -30,6 +31,20 @@ struct ElementFields {
   std::vector<double> theta, pressure, minJ; // per local element
   std::vector<Eigen::Matrix<double, 3, 3>> cauchy;
   std::vector<double> referenceVolume;
+};
+
+// What the muscle point laws computed at the converged displacement of a step.
+struct MuscleFields {
+  bool valid = true; // false: a local contractile solve failed (on any rank)
+  int groups = 0;
+  // Per local element and group (index i * groups + g): the mean over the element's points and
+  // the group's families of the fibre stretch and the contractile stretch; 0 where the group is
+  // absent.
+  std::vector<double> fibreStretch, contractileStretch;
+  std::vector<double> fibreStress; // per local element: mean of sum_f phi_f T_f [Pa]
+  // Per group, over the whole mesh: the reference-volume-weighted mean fibre stretch of its
+  // families (the pruning measure of §6.1 on a mesh), 1 where the group has no fibres.
+  std::vector<double> groupMeanStretch;
 };
 
 class Assembler {
@@ -64,6 +79,15 @@ public:
   // Element dilatation, pressure, stress, min J (local elements). Collective (imports u).
   ElementFields elementFields(const Vector &u, const std::vector<double> &lambda) const;
 
+  // The muscle history (activation per group, lambda_c per point) of this rank's elements: the
+  // caller begins each step and commits it once converged; assembly reads its trial activation
+  // and committed lambda_c.
+  model::MuscleHistory &muscleHistory() { return history_; }
+  const model::MuscleHistory &muscleHistory() const { return history_; }
+  // Evaluates the muscle point laws at the converged u, writes the trial lambda_c into the
+  // history (commit separately) and returns the fields for output. Collective.
+  MuscleFields updateMuscleHistory(const Vector &u);
+
   // Norm of the external force vector at time t (the scale of the Newton tolerance).
   double externalForceNorm(double time) const;
 
@@ -81,6 +105,9 @@ private:
   void importToOverlap(const Vector &u, Vector &overlap) const;
   // Subtracts the dead tractions at time t from the overlap residual (local faces only).
   void addExternalForces(double time, Teuchos::ArrayRCP<double> &fData) const;
+  // The element kernel with the point law of local element i (its muscle law if it has fibres).
+  fem::Q1P0Result evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue, double lambda,
+                                  const fem::MixedBase *base, bool extrapolate, fem::Q1P0Output what) const;
   fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
 
   const model::Scene &scene_;
@@ -95,6 +122,7 @@ private:
   std::vector<std::array<GO, 24>> elementGids_;
   std::vector<int> nodeMultiplicity_;                    // elements sharing each mesh node
   double dirichletScale_ = 1.0;
+  model::MuscleHistory history_;
 };
 
 } // namespace glossa::assembly

@@ -95,10 +95,13 @@ void volumeAndGradient(const std::array<PointKinematics, 8> &pts, double &V, dou
 }
 
 // Adds int (P_iso + p J F^{-T}) : grad N and its tangent at fixed p.
-void addDeviatoricAndPressure(Q1P0Result &r, const std::array<PointKinematics, 8> &pts, double p,
-                              const materials::IsochoricMaterial &material, Q1P0Output what) {
-  for (const auto &pt : pts) {
-    const materials::PointResponse iso = material.evaluate(pt.F);
+// False if the point law failed at some point.
+bool addDeviatoricAndPressure(Q1P0Result &r, const std::array<PointKinematics, 8> &pts, double p,
+                              const QuadraturePointLaw &law, Q1P0Output what) {
+  materials::PointResponse iso;
+  for (int q = 0; q < 8; ++q) {
+    const PointKinematics &pt = pts[q];
+    if (!law.evaluate(q, pt.F, iso)) return false;
     const Eigen::Matrix3d &Finv = pt.Finv;
     const Eigen::Matrix3d P = iso.P + p * pt.J * Finv.transpose();
     Tangent9 A;
@@ -106,6 +109,7 @@ void addDeviatoricAndPressure(Q1P0Result &r, const std::array<PointKinematics, 8
     addPoint(r, pt, P, A, what);
     r.energy += iso.energy * pt.dV;
   }
+  return true;
 }
 } // namespace
 
@@ -137,9 +141,8 @@ MixedBase mixedBase(const NodeMatrix &X, const NodeMatrix &u, const MixedBase *p
 }
 
 Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const MixedBase &base,
-                             const materials::IsochoricMaterial &material,
-                             const materials::VolumetricEnergy &volumetric, double lambda, bool extrapolate,
-                             Q1P0Output what) {
+                             const QuadraturePointLaw &law, const materials::VolumetricEnergy &volumetric,
+                             double lambda, bool extrapolate, Q1P0Output what) {
   Q1P0Result r;
   std::array<PointKinematics, 8> pts;
   if (!base.valid || !kinematics(X, u, pts, r.minJ) || !(r.minJ > 0.0)) return r;
@@ -152,7 +155,10 @@ Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const Mix
   r.referenceVolume = V;
   r.theta = theta;
   r.pressure = p;
-  addDeviatoricAndPressure(r, pts, p, material, what);
+  if (!addDeviatoricAndPressure(r, pts, p, law, what)) {
+    r.lawFailed = true;
+    return r;
+  }
   const double Rp = v - theta * V;
   const double Rtheta = V * (volumetric.dU(theta) - p + lambda);
   const double d2U = volumetric.d2U(theta);
@@ -164,8 +170,7 @@ Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const Mix
   return r;
 }
 
-Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
-                        const materials::IsochoricMaterial &material,
+Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
                         const materials::VolumetricEnergy &volumetric, double lambda,
                         Q1P0Output what) {
   Q1P0Result r;
@@ -179,7 +184,10 @@ Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
   r.referenceVolume = V;
   r.theta = v / V;
   r.pressure = volumetric.dU(r.theta) + lambda;
-  addDeviatoricAndPressure(r, pts, r.pressure, material, what);
+  if (!addDeviatoricAndPressure(r, pts, r.pressure, law, what)) {
+    r.lawFailed = true;
+    return r;
+  }
   if (what == Q1P0Output::ResidualAndTangent)
     r.tangent.noalias() += (volumetric.d2U(r.theta) / V) * g * g.transpose();
   r.energy += V * (volumetric.energy(r.theta) + lambda * (r.theta - 1.0));
@@ -188,15 +196,19 @@ Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
   return r;
 }
 
-Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u,
-                           const materials::IsochoricMaterial &material,
+Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
                            const materials::VolumetricEnergy &volumetric, Q1P0Output what) {
   Q1P0Result r;
   std::array<PointKinematics, 8> pts;
   if (!kinematics(X, u, pts, r.minJ) || !(r.minJ > 0.0)) return r;
   double V = 0.0, v = 0.0, pressureIntegral = 0.0;
-  for (const auto &pt : pts) {
-    const materials::PointResponse iso = material.evaluate(pt.F);
+  materials::PointResponse iso;
+  for (int q = 0; q < 8; ++q) {
+    const PointKinematics &pt = pts[q];
+    if (!law.evaluate(q, pt.F, iso)) {
+      r.lawFailed = true;
+      return r;
+    }
     const Eigen::Matrix3d &Finv = pt.Finv;
     const Eigen::Matrix3d JFinvT = pt.J * Finv.transpose();
     const double p = volumetric.dU(pt.J);
@@ -218,6 +230,18 @@ Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u,
   r.cauchyMean /= v;
   r.valid = true;
   return r;
+}
+
+bool quadratureDeformationGradients(const NodeMatrix &X, const NodeMatrix &u, std::array<Eigen::Matrix3d, 8> &F,
+                                    std::array<double, 8> &dV) {
+  std::array<PointKinematics, 8> pts;
+  double minJ = 0.0;
+  if (!kinematics(X, u, pts, minJ)) return false;
+  for (int q = 0; q < 8; ++q) {
+    F[q] = pts[q].F;
+    dV[q] = pts[q].dV;
+  }
+  return true;
 }
 
 } // namespace glossa::fem

@@ -9,9 +9,12 @@
 // This equals step-44's cell-wise static condensation of its DGPM_0 pressure and dilatation.
 // Eigen fixed-size only: no Trilinos, unit-tested alone.
 
+#include <array>
+
 #include <Eigen/Core>
 
 #include "fem/HexShape.hpp"
+#include "fem/QuadraturePointLaw.hpp"
 #include "materials/IsochoricMaterial.hpp"
 #include "materials/VolumetricEnergy.hpp"
 
@@ -21,7 +24,9 @@ using ElementVector = Eigen::Matrix<double, 24, 1>; // dof 3*a + i
 using ElementMatrix = Eigen::Matrix<double, 24, 24>;
 
 struct Q1P0Result {
-  bool valid = false;        // false: J <= 0 at a quadrature point (or a degenerate element)
+  bool valid = false;        // false: J <= 0 at a quadrature point, a degenerate element, or a
+                             // point law that failed (lawFailed)
+  bool lawFailed = false;
   ElementVector residual = ElementVector::Zero(); // internal force [N]
   ElementMatrix tangent = ElementMatrix::Zero();
   double theta = 1.0;                             // element dilatation v/V
@@ -36,10 +41,15 @@ enum class Q1P0Output { ResidualOnly, ResidualAndTangent };
 
 // X: reference nodal coordinates; u: nodal displacements; lambda: the element's augmented
 // Lagrange multiplier.
-Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
-                        const materials::IsochoricMaterial &material,
+Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
                         const materials::VolumetricEnergy &volumetric, double lambda,
                         Q1P0Output what = Q1P0Output::ResidualAndTangent);
+inline Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u,
+                               const materials::IsochoricMaterial &material,
+                               const materials::VolumetricEnergy &volumetric, double lambda,
+                               Q1P0Output what = Q1P0Output::ResidualAndTangent) {
+  return evaluateQ1P0(X, u, UniformPointLaw(material), volumetric, lambda, what);
+}
 
 // The three-field Newton iterate of one element (deal.II step-44 style): dilatation theta and
 // pressure p are element unknowns updated by the linearised local equations, not recomputed
@@ -66,15 +76,32 @@ MixedBase mixedBase(const NodeMatrix &X, const NodeMatrix &u, const MixedBase *p
 // Residual and tangent with the element state of the iterate: `base`'s own state when
 // `extrapolate` is false (u must then be base.u), or the Newton update from `base` to u.
 Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const MixedBase &base,
-                             const materials::IsochoricMaterial &material,
-                             const materials::VolumetricEnergy &volumetric, double lambda,
-                             bool extrapolate, Q1P0Output what = Q1P0Output::ResidualAndTangent);
+                             const QuadraturePointLaw &law, const materials::VolumetricEnergy &volumetric,
+                             double lambda, bool extrapolate,
+                             Q1P0Output what = Q1P0Output::ResidualAndTangent);
+inline Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const MixedBase &base,
+                                    const materials::IsochoricMaterial &material,
+                                    const materials::VolumetricEnergy &volumetric, double lambda,
+                                    bool extrapolate, Q1P0Output what = Q1P0Output::ResidualAndTangent) {
+  return evaluateQ1P0Mixed(X, u, base, UniformPointLaw(material), volumetric, lambda, extrapolate, what);
+}
 
 // The same element without the mixed treatment: U(J) at every quadrature point (plain Q1),
 // kept to show volumetric locking (Cook's membrane test).
-Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u,
-                           const materials::IsochoricMaterial &material,
+Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
                            const materials::VolumetricEnergy &volumetric,
                            Q1P0Output what = Q1P0Output::ResidualAndTangent);
+inline Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u,
+                                  const materials::IsochoricMaterial &material,
+                                  const materials::VolumetricEnergy &volumetric,
+                                  Q1P0Output what = Q1P0Output::ResidualAndTangent) {
+  return evaluatePlainQ1(X, u, UniformPointLaw(material), volumetric, what);
+}
+
+// The deformation gradients and reference volume weights at the 8 quadrature points
+// (gaussHex2() order); false for a degenerate reference element. Used to evaluate point laws
+// outside an assembly (history updates, output of fibre stretches).
+bool quadratureDeformationGradients(const NodeMatrix &X, const NodeMatrix &u, std::array<Eigen::Matrix3d, 8> &F,
+                                    std::array<double, 8> &dV);
 
 } // namespace glossa::fem

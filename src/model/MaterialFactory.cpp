@@ -1,16 +1,162 @@
 #include "model/MaterialFactory.hpp"
 
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
-#include "materials/FibreReinforcedMaterial.hpp"
+#include "materials/ContractileCurveSets.hpp"
 #include "materials/FungIsotropic.hpp"
+#include "materials/HillMuscleFibre.hpp"
 #include "materials/NeoHookean.hpp"
 #include "materials/ParallelElement.hpp"
+#include "materials/SeriesElement.hpp"
+#include "model/FibreDirectionField.hpp"
 
 namespace glossa::model {
 
 using Teuchos::Array;
 using Teuchos::ParameterList;
+
+namespace {
+
+ParameterList fibreFamilyParameters() {
+  ParameterList family;
+  io::declareString(family, "direction field", "constant",
+                    "constant: 'direction' everywhere; radial fan: from 'fan centre' to each element's "
+                    "centroid (in the plane normal to 'fan plane normal' if that is not zero); file: "
+                    "vectors read from 'file'",
+                    {"constant", "radial fan", "file"});
+  io::declareDoubleArray(family, "direction", Array<double>(3, 0.0), "",
+                         "reference fibre direction (normalised; must not be zero)", 3);
+  io::declareDoubleArray(family, "fan centre", Array<double>(3, 0.0), "m", "the point the fan radiates from", 3);
+  io::declareDoubleArray(family, "fan plane normal", Array<double>(3, 0.0), "",
+                         "normal of the plane the fan lies in; zero: a spherical fan", 3);
+  io::declareString(family, "file", "",
+                    "text file of lines 'id nx ny nz' (0-based ids, '#' comments), relative to the deck");
+  io::declareString(family, "file gives", "element", "what the file's ids number", {"element", "node"});
+  io::declareString(family, "element set", "", "elements the family is present in; empty: all");
+  io::declareString(family, "muscle group", "",
+                    "the muscle group (in 'Muscle groups') that activates the family; empty: passive fibres");
+  return family;
+}
+
+ParameterList muscleGroupParameters() {
+  ParameterList g;
+  io::declareDouble(g, "T0s", 1.0, "", "scale of the contractile force (FFMR = T0s alpha)", io::Range::closed(0, 1));
+  io::declareDouble(g, "T0max", 0.0, "Pa", "maximum isometric stress; 0: the Fibre law's",
+                    io::Range::nonNegative());
+  io::declareString(g, "curves", materials::defaultContractileCurveSet(),
+                    "force-length and force-velocity curve set (doc/materials.md)",
+                    {"physiological", "paper-table-II"});
+  io::declareDouble(g, "rise time", 0.150, "s", "tau_R of the activation dynamics (eq. 24)", io::Range::positive());
+  io::declareDouble(g, "fall time", 0.150, "s", "tau_F of the activation dynamics (eq. 24)", io::Range::positive());
+  io::declareDouble(g, "minimum activation", 0.0, "", "alpha_min (eq. 24)", io::Range::closed(0, 0.999));
+  io::declareDouble(g, "initial activation", 0.0, "", "alpha at t = 0, in [alpha_min, 1]", io::Range::closed(0, 1));
+  io::declareDouble(g, "neural input scale", 1.0, "", "u(t) = scale x neural input(t), clamped to [0, 1]",
+                    io::Range::closed(0, 1));
+  g.set("neural input", TimeFunction::validParameters("constant"), "the neural input's time course");
+  return g;
+}
+
+Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
+
+std::string knownElementSets(const mesh::HexMesh &m) {
+  std::string s;
+  for (const auto &[name, elements] : m.elementSets) s += (s.empty() ? "" : ", ") + name;
+  return s.empty() ? "(none)" : s;
+}
+
+// One family as the deck gives it: where it is, which way it points, which group drives it.
+struct FamilySpec {
+  std::string name;
+  int group = -1;
+  std::vector<mesh::ElementId> elements;
+  std::vector<Eigen::Vector3d> directions; // per entry of `elements`
+};
+
+FamilySpec readFamily(const io::Deck &deck, const mesh::HexMesh &m, const std::string &name,
+                      const MuscleArchitecture &muscles) {
+  const std::vector<std::string> path{"Material", "Fibre families", name};
+  const ParameterList &f = deck.root().sublist("Material").sublist("Fibre families").sublist(name);
+  FamilySpec spec;
+  spec.name = name;
+  const auto set = f.get<std::string>("element set");
+  if (set.empty()) {
+    spec.elements.resize(m.numElements());
+    for (std::size_t e = 0; e < m.numElements(); ++e) spec.elements[e] = static_cast<mesh::ElementId>(e);
+  } else if (m.elementSets.count(set)) {
+    spec.elements = m.elementSets.at(set);
+  } else {
+    throw io::DeckError(deck.where([&] { auto p = path; p.push_back("element set"); return p; }()) +
+                        ": no element set '" + set + "'; the mesh has: " + knownElementSets(m));
+  }
+  const auto group = f.get<std::string>("muscle group");
+  if (!group.empty()) {
+    spec.group = muscles.groupIndex(group);
+    if (spec.group < 0) {
+      std::string known;
+      for (const auto &g : muscles.groups) known += (known.empty() ? "" : ", ") + g.name;
+      throw io::DeckError(deck.where({"Material", "Fibre families", name, "muscle group"}) + ": no muscle group '" +
+                          group + "' in Material/Muscle groups (" + (known.empty() ? "none declared" : known) + ")");
+    }
+  }
+  const auto field = f.get<std::string>("direction field");
+  try {
+    if (field == "constant") {
+      spec.directions = constantDirections(vec3(f.get<Array<double>>("direction")), spec.elements.size());
+    } else if (field == "radial fan") {
+      spec.directions = radialFanDirections(m, spec.elements, vec3(f.get<Array<double>>("fan centre")),
+                                            vec3(f.get<Array<double>>("fan plane normal")));
+    } else {
+      const auto file = f.get<std::string>("file");
+      if (file.empty()) throw std::invalid_argument("'direction field' is file but 'file' is empty");
+      std::filesystem::path p(file);
+      if (p.is_relative()) p = std::filesystem::path(deck.file()).parent_path() / p;
+      spec.directions = directionsFromFile(
+          p, f.get<std::string>("file gives") == "node" ? DirectionsPer::Node : DirectionsPer::Element, m, spec.elements);
+    }
+  } catch (const std::exception &e) {
+    throw io::DeckError(deck.where({"Material", "Fibre families", name, field == "file" ? "file" : "direction field"}) +
+                        ": " + e.what());
+  }
+  return spec;
+}
+
+MuscleGroup readGroup(const io::Deck &deck, const std::string &name, double endTime) {
+  const ParameterList &g = deck.root().sublist("Material").sublist("Muscle groups").sublist(name);
+  const std::vector<std::string> path{"Material", "Muscle groups", name};
+  MuscleGroup group;
+  group.name = name;
+  group.T0s = g.get<double>("T0s");
+  materials::ActivationParameters a;
+  a.tauR = g.get<double>("rise time");
+  a.tauF = g.get<double>("fall time");
+  a.alphaMin = g.get<double>("minimum activation");
+  group.activation = materials::ActivationDynamics(a);
+  group.initialActivation = g.get<double>("initial activation");
+  if (group.initialActivation < a.alphaMin)
+    throw io::DeckError(deck.where({"Material", "Muscle groups", name, "initial activation"}) + " = " +
+                        std::to_string(group.initialActivation) + " is below the minimum activation " +
+                        std::to_string(a.alphaMin));
+  const ParameterList &input = g.sublist("neural input");
+  for (double v : input.get<Array<double>>("values"))
+    if (v < 0.0 || v > 1.0)
+      throw io::DeckError(deck.where({"Material", "Muscle groups", name, "neural input", "values"}) +
+                          ": a neural input must lie in [0, 1], got " + std::to_string(v));
+  TimeFunction shape = TimeFunction::constant();
+  try {
+    shape = TimeFunction::fromParameters(input, endTime);
+  } catch (const std::invalid_argument &e) {
+    throw io::DeckError(deck.where({"Material", "Muscle groups", name, "neural input"}) + ": " + e.what());
+  }
+  const double scale = g.get<double>("neural input scale");
+  group.input = shape.scaled(scale);
+  return group;
+}
+
+} // namespace
 
 ParameterList materialParameters() {
   ParameterList p;
@@ -34,25 +180,34 @@ ParameterList materialParameters() {
                     "U(theta): simo-taylor kappa/4 (theta^2-1-2 ln theta) (as step-44), "
                     "log-squared kappa/2 ln^2 theta, quadratic kappa/2 (theta-1)^2",
                     {"simo-taylor", "log-squared", "quadratic"});
+  io::declareDouble(p, "density", 1060.0, "kg/m^3",
+                    "mass density for body forces (muscle 1060, adipose 920, cartilage 1000, bone 1900)",
+                    io::Range::positive());
   io::declareString(p, "element", "Q1P0",
                     "Q1P0: three-field, pressure and dilatation condensed per element; Q1: plain "
                     "displacement element (locks; for comparison only)",
                     {"Q1P0", "Q1"});
   ParameterList &fibres = p.sublist("Fibre families", false,
-                                    "passive fibre families reinforcing the matrix (rule of mixtures, "
-                                    "eq. 3; tension only), one sublist each, constant direction");
-  ParameterList &family = fibres.sublist(io::kAnySublist);
-  io::declareDoubleArray(family, "direction", Array<double>(3, 0.0), "",
-                         "reference fibre direction (normalised; must not be zero)", 3);
-  ParameterList &law = p.sublist("Fibre law", false, "the passive fibre law and the mixture");
+                                    "fibre families reinforcing the matrix (rule of mixtures, eq. 3; tension "
+                                    "only), one sublist each; active when a muscle group drives them");
+  fibres.set(io::kAnySublist, fibreFamilyParameters(), "one fibre family");
+  ParameterList groups;
+  groups.set(io::kAnySublist, muscleGroupParameters(), "one muscle group");
+  p.set("Muscle groups", groups, "muscle groups: activation dynamics and neural input, one sublist each");
+  ParameterList &law = p.sublist("Fibre law", false, "the Hill fibre (eq. 11-18) and the mixture");
   io::declareDouble(law, "total fibre fraction", materials::kDefaultTotalFibreFraction, "",
-                    "sum of the families' volume fractions, split equally (paper: 0.7)", io::Range::closed(0, 1));
+                    "sum of the volume fractions of the families present at a point, split equally (paper: 0.7)",
+                    io::Range::closed(0, 1));
   io::declareDouble(law, "T0max", materials::ParallelElement::kTableIT0max, "Pa",
                     "maximum isometric stress (Table I)", io::Range::positive());
   io::declareDouble(law, "parallel a", materials::ParallelElement::kTableIa, "",
                     "exponent coefficient of the parallel element (eq. 17)", io::Range::positive());
   io::declareDouble(law, "parallel A", materials::ParallelElement::kTableIA, "",
                     "amplitude of the parallel element, a fraction of T0max (eq. 17)", io::Range::positive());
+  io::declareDouble(law, "series c1", materials::SeriesElement::kTableIc1, "",
+                    "amplitude of the series element, a fraction of T0max (eq. 18)", io::Range::positive());
+  io::declareDouble(law, "series c2", materials::SeriesElement::kTableIc2, "",
+                    "exponent of the series element (eq. 18)", io::Range::positive());
   io::declareString(law, "stress form", "in-full",
                     "matrix stress with fibres: in-full (eq. 6, the paper's), fibre-direction-removed "
                     "(eq. 5; non-symmetric tangent, GMRES), mixture-weighted (eq. 2/4)",
@@ -60,7 +215,7 @@ ParameterList materialParameters() {
   return p;
 }
 
-BuiltMaterial buildMaterial(const io::Deck &deck) {
+BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double endTime) {
   const ParameterList &mat = deck.root().sublist("Material");
   BuiltMaterial built;
   std::shared_ptr<const materials::IsochoricMaterial> matrix;
@@ -68,30 +223,74 @@ BuiltMaterial buildMaterial(const io::Deck &deck) {
     matrix = std::make_shared<materials::FungIsotropic>(mat.get<double>("Fung A"), mat.get<double>("Fung B"));
   else
     matrix = std::make_shared<materials::NeoHookean>(mat.get<double>("shear modulus"));
+  built.isochoric = matrix;
+  built.density = mat.get<double>("density");
+
+  MuscleArchitecture &muscles = built.muscles;
+  const ParameterList &groups = mat.sublist("Muscle groups");
+  for (auto it = groups.begin(); it != groups.end(); ++it) muscles.groups.push_back(readGroup(deck, groups.name(it), endTime));
 
   const ParameterList &fibres = mat.sublist("Fibre families");
-  std::vector<Eigen::Vector3d> directions;
-  for (auto it = fibres.begin(); it != fibres.end(); ++it) {
-    const auto &d = fibres.sublist(fibres.name(it)).get<Array<double>>("direction");
-    directions.emplace_back(d[0], d[1], d[2]);
-    if (directions.back().norm() == 0.0)
-      throw io::DeckError(deck.where({"Material", "Fibre families", fibres.name(it), "direction"}) +
-                          " is zero; give the fibre direction");
-  }
-  if (directions.empty()) {
-    built.isochoric = matrix;
-  } else {
-    const ParameterList &law = mat.sublist("Fibre law");
-    const auto form = materials::matrixStressFormFromName(law.get<std::string>("stress form"));
-    built.isochoric = std::make_shared<materials::FibreReinforcedMaterial>(
-        matrix, materials::equalFractionFamilies(directions, law.get<double>("total fibre fraction")),
-        std::make_shared<materials::ParallelElement>(law.get<double>("T0max"), law.get<double>("parallel a"),
-                                                     law.get<double>("parallel A")),
-        form);
-    built.symmetricTangent = form != materials::MatrixStressForm::FibreDirectionRemoved;
+  std::vector<FamilySpec> families;
+  for (auto it = fibres.begin(); it != fibres.end(); ++it) families.push_back(readFamily(deck, m, fibres.name(it), muscles));
+  if (families.size() > static_cast<std::size_t>(materials::kMaxFibreFamilies))
+    throw io::DeckError(deck.where({"Material", "Fibre families"}) + ": at most " +
+                        std::to_string(materials::kMaxFibreFamilies) + " fibre families");
+
+  const ParameterList &law = mat.sublist("Fibre law");
+  const auto form = materials::matrixStressFormFromName(law.get<std::string>("stress form"));
+  built.symmetricTangent = families.empty() || form != materials::MatrixStressForm::FibreDirectionRemoved;
+  if (!families.empty()) {
+    // Per element: the families present (in deck order) and their directions.
+    std::vector<std::vector<int>> present(m.numElements());
+    std::vector<std::vector<Eigen::Vector3d>> directions(m.numElements());
+    for (std::size_t f = 0; f < families.size(); ++f)
+      for (std::size_t k = 0; k < families[f].elements.size(); ++k) {
+        const auto e = static_cast<std::size_t>(families[f].elements[k]);
+        present[e].push_back(static_cast<int>(f));
+        directions[e].push_back(families[f].directions[k]);
+      }
+    const double T0maxLaw = law.get<double>("T0max");
+    const materials::ParallelElement parallel(T0maxLaw, law.get<double>("parallel a"), law.get<double>("parallel A"));
+    const double total = law.get<double>("total fibre fraction");
+    auto hill = [&](int group) {
+      if (group < 0) // passive: a contractile element that never pulls
+        return materials::HillMuscleFibre(parallel, materials::SeriesElement(T0maxLaw, law.get<double>("series c1"),
+                                                                             law.get<double>("series c2")),
+                                          materials::ContractileElement(T0maxLaw, 0.0, materials::physiologicalCurves()));
+      const ParameterList &g = mat.sublist("Muscle groups").sublist(muscles.groups[group].name);
+      const double T0max = g.get<double>("T0max") > 0.0 ? g.get<double>("T0max") : T0maxLaw;
+      return materials::HillMuscleFibre(
+          parallel, materials::SeriesElement(T0max, law.get<double>("series c1"), law.get<double>("series c2")),
+          materials::ContractileElement(T0max, muscles.groups[group].T0s,
+                                        materials::contractileCurvesFromName(g.get<std::string>("curves"))));
+    };
+    std::map<std::vector<int>, int> regionOf;
+    muscles.elementRegion.assign(m.numElements(), -1);
+    muscles.directions.resize(m.numElements());
+    for (std::size_t e = 0; e < m.numElements(); ++e) {
+      if (present[e].empty()) continue;
+      auto [it, inserted] = regionOf.emplace(present[e], static_cast<int>(muscles.regions.size()));
+      if (inserted) {
+        FibreRegion region;
+        std::vector<materials::MuscleMaterial::Family> laws;
+        const double phi = total / static_cast<double>(present[e].size());
+        for (int f : present[e]) {
+          laws.push_back({materials::FibreFamily{Eigen::Vector3d::UnitX(), phi}, hill(families[f].group)});
+          region.familyGroup.push_back(families[f].group);
+          region.familyNames.push_back(families[f].name);
+        }
+        region.law = std::make_shared<materials::MuscleMaterial>(matrix, std::move(laws), form);
+        muscles.regions.push_back(std::move(region));
+      }
+      muscles.elementRegion[e] = it->second;
+      materials::FamilyDirections N(3, static_cast<Eigen::Index>(present[e].size()));
+      for (std::size_t k = 0; k < present[e].size(); ++k) N.col(static_cast<Eigen::Index>(k)) = directions[e][k];
+      muscles.directions[e] = N;
+    }
   }
 
-  const double mu = built.isochoric->shearModulus();
+  const double mu = matrix->shearModulus();
   const double kappaGiven = mat.get<double>("bulk modulus");
   const double kappa = kappaGiven > 0.0 ? kappaGiven : materials::bulkModulus(mu, mat.get<double>("Poisson's ratio"));
   built.volumetric = materials::VolumetricEnergy(

@@ -1,7 +1,7 @@
 #pragma once
 // The scene: what is simulated, independent of how it is solved (DESIGN.md §3). The mesh, the
-// material, boundary conditions and loads with their time functions, and the named points whose
-// displacement is traced. No Trilinos.
+// material with its fibres and muscle groups, boundary conditions and loads with their time
+// functions, and the named points whose displacement is traced. No Trilinos.
 
 #include <array>
 #include <memory>
@@ -11,6 +11,7 @@
 #include "materials/IsochoricMaterial.hpp"
 #include "materials/VolumetricEnergy.hpp"
 #include "mesh/HexMesh.hpp"
+#include "model/MuscleArchitecture.hpp"
 #include "model/TimeFunction.hpp"
 
 namespace glossa::model {
@@ -36,7 +37,11 @@ struct DeadTractionLoad {
 
 struct Scene {
   mesh::HexMesh mesh;
+  // The matrix law: the whole material where no fibres are; its shear modulus scales the
+  // penalty. Fibres and muscle groups (with the matrix in their point laws) are in `muscles`.
   std::shared_ptr<const materials::IsochoricMaterial> material;
+  MuscleArchitecture muscles;
+  double density = 1060.0; // [kg/m^3]
   materials::VolumetricEnergy volumetric{materials::VolumetricEnergy::Form::SimoTaylor, 0.0};
   ElementFormulation formulation = ElementFormulation::Q1P0;
   bool symmetricTangent = true; // CG applies; false selects GMRES when the deck says auto

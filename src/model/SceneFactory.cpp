@@ -147,8 +147,10 @@ Scene buildScene(const io::Deck &deck, double endTime) {
   scene.mesh = buildMesh(deck);
   mesh::HexMesh &m = scene.mesh;
 
-  const BuiltMaterial material = buildMaterial(deck);
+  BuiltMaterial material = buildMaterial(deck, m, endTime);
   scene.material = material.isochoric;
+  scene.muscles = std::move(material.muscles);
+  scene.density = material.density;
   scene.volumetric = material.volumetric;
   scene.formulation = material.plainQ1 ? ElementFormulation::PlainQ1 : ElementFormulation::Q1P0;
   scene.symmetricTangent = material.symmetricTangent;

@@ -17,12 +17,19 @@ TimeFunction TimeFunction::table(std::vector<double> times, std::vector<double> 
   return TimeFunction(Kind::Table, 0.0, std::move(times), std::move(values));
 }
 
-Teuchos::ParameterList TimeFunction::validParameters() {
+TimeFunction TimeFunction::steps(std::vector<double> times, std::vector<double> values) {
+  TimeFunction f = table(std::move(times), std::move(values));
+  f.kind_ = Kind::Steps;
+  return f;
+}
+
+Teuchos::ParameterList TimeFunction::validParameters(const std::string &defaultType) {
   Teuchos::ParameterList p("time function");
-  io::declareString(p, "type", "ramp",
+  io::declareString(p, "type", defaultType,
                     "constant: 1 at all times; ramp: t/duration up to 1; table: piecewise linear "
-                    "in 'times'/'values', constant beyond the ends",
-                    {"constant", "ramp", "table"});
+                    "in 'times'/'values', constant beyond the ends; steps: values[i] from times[i] "
+                    "to the next time (values[0] before the first)",
+                    {"constant", "ramp", "table", "steps"});
   io::declareDouble(p, "ramp duration", 0.0, "s",
                     "time over which a ramp rises from 0 to 1; 0 means the run's end time",
                     io::Range::nonNegative());
@@ -40,10 +47,11 @@ TimeFunction TimeFunction::fromParameters(const Teuchos::ParameterList &list, do
   }
   const auto &t = list.get<Teuchos::Array<double>>("times");
   const auto &v = list.get<Teuchos::Array<double>>("values");
-  return table(std::vector<double>(t.begin(), t.end()), std::vector<double>(v.begin(), v.end()));
+  std::vector<double> times(t.begin(), t.end()), values(v.begin(), v.end());
+  return type == "steps" ? steps(std::move(times), std::move(values)) : table(std::move(times), std::move(values));
 }
 
-double TimeFunction::operator()(double t) const {
+double TimeFunction::shape(double t) const {
   switch (kind_) {
   case Kind::Constant: return 1.0;
   case Kind::Ramp: return std::clamp(t / duration_, 0.0, 1.0);
@@ -54,6 +62,10 @@ double TimeFunction::operator()(double t) const {
     const std::size_t i = static_cast<std::size_t>(hi - times_.begin());
     const double s = (t - times_[i - 1]) / (times_[i] - times_[i - 1]);
     return (1 - s) * values_[i - 1] + s * values_[i];
+  }
+  case Kind::Steps: {
+    const auto hi = std::upper_bound(times_.begin(), times_.end(), t);
+    return hi == times_.begin() ? values_.front() : values_[static_cast<std::size_t>(hi - times_.begin()) - 1];
   }
   }
   return 1.0;

@@ -1,7 +1,8 @@
 #pragma once
-// A scalar function of time that scales a load or a prescribed displacement: constant, a linear
-// ramp from 0 to 1 over a duration (deal.II step-44 ramps its pressure over the whole run), or a
-// piecewise-linear table.
+// A scalar function of time that scales a load or a prescribed displacement, or gives a muscle
+// group's neural input: constant, a linear ramp from 0 to 1 over a duration (deal.II step-44
+// ramps its pressure over the whole run), a piecewise-linear table, or piecewise-constant steps
+// (an input switched on and off).
 
 #include <string>
 #include <vector>
@@ -12,24 +13,35 @@ namespace glossa::model {
 
 class TimeFunction {
 public:
-  enum class Kind { Constant, Ramp, Table };
+  enum class Kind { Constant, Ramp, Table, Steps };
 
   static TimeFunction constant() { return TimeFunction(Kind::Constant, 0.0, {}, {}); }
   static TimeFunction ramp(double duration) { return TimeFunction(Kind::Ramp, duration, {}, {}); }
   static TimeFunction table(std::vector<double> times, std::vector<double> values);
+  // values[i] from times[i] until times[i+1]; values[0] before times[0].
+  static TimeFunction steps(std::vector<double> times, std::vector<double> values);
 
   // The parameters of a "time function" sublist, and the function they describe.
-  static Teuchos::ParameterList validParameters();
+  static Teuchos::ParameterList validParameters(const std::string &defaultType = "ramp");
   // `endTime` is the run's end time, the default ramp duration.
   static TimeFunction fromParameters(const Teuchos::ParameterList &list, double endTime);
 
-  double operator()(double t) const;
+  double operator()(double t) const { return scale_ * shape(t); }
+  // The same function times `factor`.
+  TimeFunction scaled(double factor) const {
+    TimeFunction f = *this;
+    f.scale_ *= factor;
+    return f;
+  }
 
 private:
   TimeFunction(Kind kind, double duration, std::vector<double> times, std::vector<double> values)
       : kind_(kind), duration_(duration), times_(std::move(times)), values_(std::move(values)) {}
 
+  double shape(double t) const;
+
   Kind kind_;
+  double scale_ = 1.0;
   double duration_;
   std::vector<double> times_, values_;
 };

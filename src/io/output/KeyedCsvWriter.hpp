@@ -1,0 +1,39 @@
+#pragma once
+// A CSV time series keyed by name: "time,<key>,<value columns...>", one row per key per call
+// (traces.csv keys by point, activation.csv by muscle group). Numbers with 17 significant digits
+// (they read back bit-exactly, which the regression suite relies on). Rank 0 writes.
+//
+// Each call's rows are composed first and handed to the file in one write, then flushed, so a
+// run killed between calls leaves every earlier row complete; a kill during a call can at worst
+// cut its last row short, which a reader recognises by the missing fields.
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace glossa::io {
+
+class KeyedCsvWriter {
+public:
+  // Creates (or empties) `file` and writes the header "time,<keyColumn>,<valueColumns>"; creates
+  // the parent directory if missing. Throws std::runtime_error if the file cannot be written.
+  KeyedCsvWriter(const std::filesystem::path &file, const std::string &keyColumn,
+                 const std::vector<std::string> &valueColumns);
+
+  // Each row: a key and one value per value column. Throws std::invalid_argument (before writing
+  // anything) for a key that CSV cannot carry unquoted (empty, or containing ',', '"', '\n' or
+  // '\r') or a row of the wrong width; std::runtime_error if writing fails (e.g. a full disk).
+  void append(double time, const std::vector<std::pair<std::string, std::vector<double>>> &rows);
+
+  const std::filesystem::path &file() const { return file_; }
+
+private:
+  std::filesystem::path file_;
+  std::string keyColumn_;
+  std::size_t width_;
+  std::ofstream out_;
+};
+
+} // namespace glossa::io

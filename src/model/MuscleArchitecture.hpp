@@ -1,0 +1,46 @@
+#pragma once
+// Where the fibres are and which muscle drives them (DESIGN.md §1, §2): the muscle groups with
+// their activation dynamics and neural input, and, per element, the fibre families present with
+// their reference directions. Elements with the same families share one point law
+// (materials::MuscleMaterial), whose families' volume fractions split the total fibre fraction
+// equally among the families present (eq. 3, paper §5.2). Passive fibre families are Hill
+// fibres whose contractile element never activates (group -1). No Trilinos.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "materials/ActivationDynamics.hpp"
+#include "materials/MuscleMaterial.hpp"
+#include "model/TimeFunction.hpp"
+
+namespace glossa::model {
+
+struct MuscleGroup {
+  std::string name;
+  double T0s = 1.0;                            // scales the contractile force, in [0, 1]
+  materials::ActivationDynamics activation;    // eq. 24
+  TimeFunction input = TimeFunction::constant(); // neural input u(t), clamped to [0, 1]
+  double initialActivation = 0.0;              // alpha(0), in [alpha_min, 1]
+};
+
+// Elements that carry the same fibre families.
+struct FibreRegion {
+  std::shared_ptr<const materials::MuscleMaterial> law;
+  std::vector<int> familyGroup;   // per family of `law`: its muscle group, -1 for passive fibres
+  std::vector<std::string> familyNames;
+};
+
+struct MuscleArchitecture {
+  std::vector<MuscleGroup> groups;
+  std::vector<FibreRegion> regions;
+  std::vector<int> elementRegion;                    // per mesh element; -1: matrix only
+  std::vector<materials::FamilyDirections> directions; // per mesh element, one column per family
+
+  bool hasFibres() const { return !regions.empty(); }
+  int groupIndex(const std::string &name) const; // -1 if absent
+};
+
+} // namespace glossa::model

@@ -1,0 +1,83 @@
+#include "model/MuscleHistory.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace glossa::model {
+
+int MuscleArchitecture::groupIndex(const std::string &name) const {
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    if (groups[g].name == name) return static_cast<int>(g);
+  return -1;
+}
+
+MuscleHistory::MuscleHistory(const MuscleArchitecture &architecture, const std::vector<mesh::ElementId> &elements)
+    : architecture_(&architecture) {
+  std::size_t n = 0;
+  for (const auto e : elements) {
+    const int r = architecture.hasFibres() ? architecture.elementRegion.at(static_cast<std::size_t>(e)) : -1;
+    region_.push_back(r);
+    offset_.push_back(n);
+    if (r >= 0) n += 8 * static_cast<std::size_t>(architecture.regions[r].law->familyCount());
+  }
+  // The zero-strain configuration is the optimal length: lambda_c = 1 (MuscleMaterial::initialLambdaC).
+  lambdaC_.assign(n, 1.0);
+  lambdaCTrial_ = lambdaC_;
+  for (const auto &g : architecture.groups) alpha_.push_back(g.initialActivation);
+  alphaTrial_ = alpha_;
+  inputTrial_.assign(alpha_.size(), 0.0);
+  override_.assign(alpha_.size(), std::nullopt);
+}
+
+double MuscleHistory::input(int group, double t) const {
+  const double u = override_[group] ? *override_[group] : architecture_->groups[group].input(t);
+  return std::clamp(u, 0.0, 1.0);
+}
+
+void MuscleHistory::overrideInput(int group, std::optional<double> u) {
+  if (group < 0 || group >= static_cast<int>(override_.size()))
+    throw std::out_of_range("MuscleHistory::overrideInput: no muscle group " + std::to_string(group));
+  override_[group] = u;
+}
+
+void MuscleHistory::beginStep(double tNew, double dt) {
+  if (!(dt > 0.0)) throw std::invalid_argument("MuscleHistory::beginStep: dt must be positive");
+  dt_ = dt;
+  timeTrial_ = tNew;
+  if (!architecture_) return;
+  for (std::size_t g = 0; g < alpha_.size(); ++g) {
+    inputTrial_[g] = input(static_cast<int>(g), tNew);
+    alphaTrial_[g] = architecture_->groups[g].activation.step(alpha_[g], inputTrial_[g], dt);
+  }
+  lambdaCTrial_ = lambdaC_;
+}
+
+materials::FamilyValues MuscleHistory::familyActivation(std::size_t i) const {
+  const FibreRegion &region = architecture_->regions[region_[i]];
+  materials::FamilyValues a(region.law->familyCount());
+  for (int f = 0; f < a.size(); ++f) {
+    const int g = region.familyGroup[f];
+    a(f) = g < 0 ? 0.0 : alphaTrial_[g];
+  }
+  return a;
+}
+
+int MuscleHistory::familyCount(std::size_t i) const {
+  return region_[i] < 0 ? 0 : architecture_->regions[region_[i]].law->familyCount();
+}
+
+const double *MuscleHistory::committedLambdaC(std::size_t i, int q) const {
+  return lambdaC_.data() + offset_[i] + static_cast<std::size_t>(q * familyCount(i));
+}
+
+double *MuscleHistory::trialLambdaC(std::size_t i, int q) {
+  return lambdaCTrial_.data() + offset_[i] + static_cast<std::size_t>(q * familyCount(i));
+}
+
+void MuscleHistory::commit() {
+  lambdaC_ = lambdaCTrial_;
+  alpha_ = alphaTrial_;
+  time_ = timeTrial_;
+}
+
+} // namespace glossa::model

@@ -1,0 +1,62 @@
+#pragma once
+// The history of the active muscle on one rank (issue 3, item 5): the activation of every
+// muscle group and the contractile stretch lambda_c of every fibre family at every quadrature
+// point of the rank's elements, each as a committed value and a trial value.
+//
+// A step begins from the committed state: beginStep() computes the trial activation by backward
+// Euler (eq. 24) from the committed one and u(t_new); the Newton iterations evaluate the point
+// law with the committed lambda_c (they never write history); when the step converges the caller
+// writes the trial lambda_c at the converged displacement and commits. A failed step simply
+// begins again: nothing committed has changed. So a controller may evaluate many candidate
+// inputs from one committed state.
+
+#include <optional>
+#include <vector>
+
+#include "materials/MuscleMaterial.hpp"
+#include "mesh/HexMesh.hpp"
+#include "model/MuscleArchitecture.hpp"
+
+namespace glossa::model {
+
+class MuscleHistory {
+public:
+  MuscleHistory() = default;
+  // `elements`: the mesh ids of the rank's elements, in its local order.
+  MuscleHistory(const MuscleArchitecture &architecture, const std::vector<mesh::ElementId> &elements);
+
+  bool active() const { return architecture_ != nullptr && architecture_->hasFibres(); }
+
+  // Trial activation of every group at tNew = t_committed + dt (dt > 0).
+  void beginStep(double tNew, double dt);
+  // A controller's input for a group, replacing the deck's u(t) until cleared (nullopt).
+  void overrideInput(int group, std::optional<double> u);
+  double input(int group, double t) const;
+
+  double dt() const { return dt_; }
+  double committedTime() const { return time_; }
+  const std::vector<double> &committedActivation() const { return alpha_; }
+  const std::vector<double> &trialActivation() const { return alphaTrial_; }
+  const std::vector<double> &trialInput() const { return inputTrial_; }
+
+  // Activation per family of local element i (its region's families), from the trial values.
+  materials::FamilyValues familyActivation(std::size_t localElement) const;
+  // lambda_c of point q of local element i: committed (read) and trial (written).
+  const double *committedLambdaC(std::size_t localElement, int q) const;
+  double *trialLambdaC(std::size_t localElement, int q);
+  int familyCount(std::size_t localElement) const;
+
+  void commit();
+
+private:
+  const MuscleArchitecture *architecture_ = nullptr;
+  std::vector<int> region_;         // per local element
+  std::vector<std::size_t> offset_; // per local element: first lambda_c value (8 points x families)
+  std::vector<double> lambdaC_, lambdaCTrial_;
+  std::vector<double> alpha_, alphaTrial_, inputTrial_;
+  std::vector<std::optional<double>> override_;
+  // dt before the first step: any positive value (the reference state has no rate).
+  double time_ = 0.0, dt_ = 1.0, timeTrial_ = 0.0;
+};
+
+} // namespace glossa::model

@@ -1,0 +1,58 @@
+#pragma once
+// The point law of one element carrying muscle fibres, as the element kernel sees it
+// (fem::QuadraturePointLaw): the region's MuscleMaterial with the element's fibre directions,
+// its groups' trial activation, the step size and each point's committed lambda_c. Optionally
+// records what the point law computed (new lambda_c, fibre stretch and tension per family) for
+// the history update and the output; Newton iterations leave those null.
+
+#include <array>
+
+#include "fem/QuadraturePointLaw.hpp"
+#include "materials/MuscleMaterial.hpp"
+
+namespace glossa::model {
+
+// What the point law computed at the 8 points of an element.
+struct ElementMuscleResponse {
+  std::array<materials::FamilyValues, 8> lambdaC, lambdaF, T;
+  materials::HillSolveStatus status = materials::HillSolveStatus::Taut;
+};
+
+class TissuePointLaw final : public fem::QuadraturePointLaw {
+public:
+  // `lambdaCOld(q)` points at familyCount() committed values for point q.
+  TissuePointLaw(const materials::MuscleMaterial &law, const materials::FamilyDirections &directions,
+                 const materials::FamilyValues &alpha, double dt,
+                 std::array<const double *, 8> lambdaCOld, ElementMuscleResponse *record = nullptr)
+      : law_(law), lambdaCOld_(lambdaCOld), record_(record) {
+    input_.directions = directions;
+    input_.alpha = alpha;
+    input_.dt = dt;
+  }
+
+  bool evaluate(int q, const Eigen::Matrix3d &F, materials::PointResponse &out) const override {
+    const int n = law_.familyCount();
+    input_.F = F;
+    input_.lambdaCOld = Eigen::Map<const Eigen::VectorXd>(lambdaCOld_[q], n);
+    const materials::MusclePointResponse r = law_.evaluate(input_);
+    if (record_) {
+      record_->lambdaC[q] = r.lambdaC;
+      record_->lambdaF[q] = r.lambdaF;
+      record_->T[q] = r.T;
+      if (!r.ok()) record_->status = r.status;
+    }
+    if (!r.ok()) return false;
+    out.energy = r.energy;
+    out.P = r.P;
+    out.dPdF = r.dPdF;
+    return true;
+  }
+
+private:
+  const materials::MuscleMaterial &law_;
+  mutable materials::MusclePointInput input_;
+  std::array<const double *, 8> lambdaCOld_;
+  ElementMuscleResponse *record_;
+};
+
+} // namespace glossa::model
