@@ -10,6 +10,7 @@
 
 #include "app/CurvesCommand.hpp"
 #include "app/DeckSchema.hpp"
+#include "app/PointCommand.hpp"
 #include "io/deck/Deck.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/DeckReference.hpp"
@@ -30,6 +31,11 @@ usage:
       every default filled in
   glossa schema [--markdown]
       print every deck parameter (--markdown: the text of doc/deck-reference.md)
+  glossa point DECK.xml [--output FILE] [--set path=value ...]
+      drive one material point of the deck's Material along the deck's Point path
+      (uniaxial, simple shear or a table of F) with its muscle groups' inputs; writes
+      stress, fibre and contractile stretches, tensions and activations to FILE
+      (default: point.csv)
   glossa curves [--output DIR]
       tabulate the muscle curves f_cL, f_cV (both parameter sets), f_p and f_s to
       DIR/force_length.csv, force_velocity.csv, passive_series.csv (default DIR: ./curves)
@@ -107,6 +113,15 @@ int main(int argc, char **argv) {
       if (root)
         for (const auto &file : glossa::app::writeCurveTables(a.output.empty() ? "curves" : a.output))
           std::cout << "wrote " << file.string() << '\n';
+      return 0;
+    }
+    if (a.command == "point") {
+      const auto deck = loadDeck(a, schema);
+      if (root) {
+        const std::string file = a.output.empty() ? "point.csv" : a.output;
+        const int rows = glossa::app::runPointDriver(deck, file);
+        std::cout << "wrote " << rows << " rows to " << file << '\n';
+      }
       return 0;
     }
     if (a.command == "validate") {

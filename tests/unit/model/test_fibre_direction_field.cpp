@@ -1,0 +1,89 @@
+// Fibre direction fields against directions computed by hand on a box mesh.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "mesh/BoxGenerator.hpp"
+#include "model/FibreDirectionField.hpp"
+
+using namespace glossa;
+
+namespace {
+// 2 x 1 x 1 elements on [0,2] x [0,1] x [0,1]: centroids (0.5, .5, .5) and (1.5, .5, .5).
+mesh::HexMesh twoCells() { return mesh::generateBox({0, 0, 0}, {2, 1, 1}, {2, 1, 1}); }
+
+std::filesystem::path writeFile(const std::string &name, const std::string &text) {
+  const auto dir = std::filesystem::path(GLOSSA_BINARY_DIR) / "test-output" / "fibre_fields";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+void expectParallel(const Eigen::Vector3d &a, const Eigen::Vector3d &b) {
+  EXPECT_NEAR(a.norm(), 1.0, 1e-14);
+  EXPECT_NEAR(std::abs(a.dot(b.normalized())), 1.0, 1e-14) << a.transpose() << " vs " << b.transpose();
+}
+} // namespace
+
+TEST(FibreDirectionField, ConstantIsNormalisedAndRefusesZero) {
+  const auto d = model::constantDirections({0, 3, 4}, 2);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_TRUE(d[1].isApprox(Eigen::Vector3d(0, 0.6, 0.8)));
+  EXPECT_THROW(model::constantDirections(Eigen::Vector3d::Zero(), 1), std::invalid_argument);
+}
+
+TEST(FibreDirectionField, RadialFanPointsFromTheCentreToEachCentroid) {
+  const auto m = twoCells();
+  const auto d = model::radialFanDirections(m, {0, 1}, {1, 0.5, -1}, Eigen::Vector3d::Zero());
+  expectParallel(d[0], Eigen::Vector3d(-0.5, 0, 1.5));
+  expectParallel(d[1], Eigen::Vector3d(0.5, 0, 1.5));
+  EXPECT_GT(d[0].z(), 0.0); // from the centre outwards
+  // In the plane y = const the fan drops its y component.
+  const auto p = model::radialFanDirections(m, {0, 1}, {1, -3, -1}, {0, 1, 0});
+  expectParallel(p[1], Eigen::Vector3d(0.5, 0, 1.5));
+  // A centroid on the centre has no direction.
+  try {
+    model::radialFanDirections(m, {0, 1}, {1.5, 0.5, 0.5}, Eigen::Vector3d::Zero());
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument &e) {
+    EXPECT_NE(std::string(e.what()).find("element 1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FibreDirectionField, ElementFileWithCommentsAndCommas) {
+  const auto m = twoCells();
+  const auto f = writeFile("elements.txt", "# id nx ny nz\n0, 2, 0, 0\n\n1\t0 0 -5  # down\n");
+  const auto d = model::directionsFromFile(f, model::DirectionsPer::Element, m, {0, 1});
+  EXPECT_TRUE(d[0].isApprox(Eigen::Vector3d::UnitX()));
+  EXPECT_TRUE(d[1].isApprox(-Eigen::Vector3d::UnitZ()));
+}
+
+TEST(FibreDirectionField, NodeFileAveragesAxiallyOverTheElement) {
+  const auto m = twoCells();
+  std::string text;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) // alternate signs: the same axial fibre
+    text += std::to_string(n) + (n % 2 ? " -1 -1 0\n" : " 1 1 0\n");
+  const auto d = model::directionsFromFile(writeFile("nodes.txt", text), model::DirectionsPer::Node, m, {0, 1});
+  for (const auto &v : d) expectParallel(v, Eigen::Vector3d(1, 1, 0));
+}
+
+TEST(FibreDirectionField, FileErrorsNameFileAndLine) {
+  const auto m = twoCells();
+  auto message = [&](const std::string &text, model::DirectionsPer per = model::DirectionsPer::Element) {
+    try {
+      model::directionsFromFile(writeFile("bad.txt", text), per, m, {0, 1});
+    } catch (const std::runtime_error &e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("0 1 0 0\n1 1 0\n").find("bad.txt:2: expected 'id nx ny nz'"), std::string::npos);
+  EXPECT_NE(message("0 1 0 0\n7 1 0 0\n").find("bad.txt:2: element id 7 is out of range [0, 1]"), std::string::npos);
+  EXPECT_NE(message("0 1 0 0\n0 1 0 0\n").find("bad.txt:2: element 0 is given twice"), std::string::npos);
+  EXPECT_NE(message("0 0 0 0\n").find("bad.txt:1: the direction of element 0 is zero"), std::string::npos);
+  EXPECT_NE(message("0 1 0 0\n").find("no direction for element 1"), std::string::npos);
+  EXPECT_NE(message("0 1 0 0\n", model::DirectionsPer::Node).find("no direction for node 1 of element 0"),
+            std::string::npos);
+  EXPECT_THROW(model::directionsFromFile("/nonexistent/fibres.txt", model::DirectionsPer::Element, m, {0}),
+               std::runtime_error);
+}
