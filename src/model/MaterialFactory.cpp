@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <tuple>
 
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
@@ -45,8 +46,13 @@ ParameterList fibreFamilyParameters() {
 ParameterList muscleGroupParameters() {
   ParameterList g;
   io::declareDouble(g, "T0s", 1.0, "", "scale of the contractile force (FFMR = T0s alpha)", io::Range::closed(0, 1));
-  io::declareDouble(g, "T0max", 0.0, "Pa", "maximum isometric stress; 0: the Fibre law's",
-                    io::Range::nonNegative());
+  // The Hill elements of the group; 0 takes the Fibre law's value (Table I by default).
+  for (const auto &[name, unit, doc] : {std::tuple{"T0max", "Pa", "maximum isometric stress"},
+                                        {"parallel a", "", "exponent coefficient of the parallel element (eq. 17)"},
+                                        {"parallel A", "", "amplitude of the parallel element (eq. 17)"},
+                                        {"series c1", "", "amplitude of the series element (eq. 18)"},
+                                        {"series c2", "", "exponent of the series element (eq. 18)"}})
+    io::declareDouble(g, name, 0.0, unit, std::string(doc) + "; 0: the Fibre law's", io::Range::nonNegative());
   io::declareString(g, "curves", materials::defaultContractileCurveSet(),
                     "force-length and force-velocity curve set (doc/materials.md)",
                     {"physiological", "paper-table-II"});
@@ -250,20 +256,23 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
         present[e].push_back(static_cast<int>(f));
         directions[e].push_back(families[f].directions[k]);
       }
-    const double T0maxLaw = law.get<double>("T0max");
-    const materials::ParallelElement parallel(T0maxLaw, law.get<double>("parallel a"), law.get<double>("parallel A"));
     const double total = law.get<double>("total fibre fraction");
     auto hill = [&](int group) {
-      if (group < 0) // passive: a contractile element that never pulls
-        return materials::HillMuscleFibre(parallel, materials::SeriesElement(T0maxLaw, law.get<double>("series c1"),
-                                                                             law.get<double>("series c2")),
-                                          materials::ContractileElement(T0maxLaw, 0.0, materials::physiologicalCurves()));
-      const ParameterList &g = mat.sublist("Muscle groups").sublist(muscles.groups[group].name);
-      const double T0max = g.get<double>("T0max") > 0.0 ? g.get<double>("T0max") : T0maxLaw;
+      // A group's own Hill parameter where it sets one, else the Fibre law's.
+      const ParameterList *g = group < 0 ? nullptr : &mat.sublist("Muscle groups").sublist(muscles.groups[group].name);
+      auto value = [&](const char *name) {
+        return g && g->get<double>(name) > 0.0 ? g->get<double>(name) : law.get<double>(name);
+      };
+      const double T0max = value("T0max");
+      const materials::ParallelElement parallel(T0max, value("parallel a"), value("parallel A"));
+      const materials::SeriesElement series(T0max, value("series c1"), value("series c2"));
+      if (!g) // passive: a contractile element that never pulls
+        return materials::HillMuscleFibre(parallel, series,
+                                          materials::ContractileElement(T0max, 0.0, materials::physiologicalCurves()));
       return materials::HillMuscleFibre(
-          parallel, materials::SeriesElement(T0max, law.get<double>("series c1"), law.get<double>("series c2")),
+          parallel, series,
           materials::ContractileElement(T0max, muscles.groups[group].T0s,
-                                        materials::contractileCurvesFromName(g.get<std::string>("curves"))));
+                                        materials::contractileCurvesFromName(g->get<std::string>("curves"))));
     };
     std::map<std::vector<int>, int> regionOf;
     muscles.elementRegion.assign(m.numElements(), -1);
