@@ -60,6 +60,35 @@ private:
   NewtonResult &r_;
   assembly::ModelEvaluator &model_;
 };
+
+// ||f|| <= max(tolerance, floor): the floor is what round-off leaves of a residual assembled from
+// element terms of size forceScale (AssemblyStatus, from the last assembly), kRoundOffFactor
+// machine epsilons of it (the observed floor is 1-2 epsilons of it). Without it a load that is tiny against the stiffness
+// (bone under gravity, the first steps of a ramp) asks for a residual below round-off and every
+// step is cut back to nothing.
+class NormFAboveRoundOff : public NOX::StatusTest::Generic {
+public:
+  static constexpr double kRoundOffFactor = 10.0;
+  NormFAboveRoundOff(double tolerance, const assembly::ModelEvaluator &model) : tolerance_(tolerance), model_(model) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic &problem, NOX::StatusTest::CheckType) override {
+    normF_ = problem.getSolutionGroup().getNormF();
+    floor_ = kRoundOffFactor * std::numeric_limits<double>::epsilon() * model_.lastStatus().forceScale;
+    status_ = normF_ <= std::max(tolerance_, floor_) ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream &print(std::ostream &stream, int indent) const override {
+    for (int i = 0; i < indent; ++i) stream << ' ';
+    return stream << status_ << "||F|| = " << normF_ << " <= max(" << tolerance_ << ", round-off floor " << floor_
+                  << ")\n";
+  }
+
+private:
+  double tolerance_;
+  const assembly::ModelEvaluator &model_;
+  double normF_ = 0.0, floor_ = 0.0;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
 } // namespace
 
 NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const ParameterList &section, double lengthScale,
@@ -81,7 +110,7 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
   const double normF0 = group->getNormF();
   result.residualNorms.push_back(normF0);
 
-  auto normF = rcp(new NormF(residualTolerance, NormF::Unscaled));
+  auto normF = rcp(new NormFAboveRoundOff(residualTolerance, *model_));
   auto update = rcp(new NormWRMS(section_.get<double>("update tolerance"), 1e-9 * lengthScale_));
   auto converged = rcp(new Combo(Combo::AND));
   converged->addStatusTest(normF);

@@ -57,6 +57,9 @@ public:
     const auto &mesh = assembler.scene().mesh;
     if (fields_) results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.nodes, mesh.elements);
     traces_ = std::make_unique<io::TraceWriter>(dir / "traces.csv");
+    if (!assembler.scene().dirichlet.empty())
+      reactions_ = std::make_unique<io::KeyedCsvWriter>(dir / "reactions.csv", "condition",
+                                                        std::vector<std::string>{"fx", "fy", "fz"});
     if (!assembler.scene().muscles.groups.empty())
       activation_ = std::make_unique<io::KeyedCsvWriter>(
           dir / "activation.csv", "group", std::vector<std::string>{"u", "alpha", "ffmr", "mean_fibre_stretch"});
@@ -87,12 +90,27 @@ public:
     return rows;
   }
 
-  void record(double time, const assembly::Vector &u, const std::vector<double> &lambda, bool writeFields,
-              const assembly::MuscleFields &muscle, const std::vector<double> &input) {
+  // The reaction of every Dirichlet condition [N] (collective).
+  std::vector<std::pair<std::string, std::vector<double>>> reactionRows(const assembly::Vector &u, double time,
+                                                                        const std::vector<double> &lambda) const {
+    const auto forces = assembler_.reactions(u, time, lambda);
+    std::vector<std::pair<std::string, std::vector<double>>> rows;
+    for (std::size_t b = 0; b < forces.size(); ++b)
+      rows.push_back({assembler_.scene().dirichlet[b].name, {forces[b].x(), forces[b].y(), forces[b].z()}});
+    return rows;
+  }
+
+  // Returns the reactions it wrote (for the summary).
+  std::vector<std::pair<std::string, std::vector<double>>> record(double time, const assembly::Vector &u,
+                                                                  const std::vector<double> &lambda, bool writeFields,
+                                                                  const assembly::MuscleFields &muscle,
+                                                                  const std::vector<double> &input) {
     const std::vector<double> uAll = assembler_.gatherDisplacement(u);
+    const auto reactions = reactionRows(u, time, lambda);
     if (root_) traces_->append(time, pointDisplacements(uAll));
+    if (root_ && reactions_) reactions_->append(time, reactions);
     if (root_ && activation_) activation_->append(time, activationRows(muscle, input));
-    if (!fields_ || !writeFields) return;
+    if (!fields_ || !writeFields) return reactions;
     const auto f = assembler_.elementFields(u, lambda);
     std::vector<double> stress;
     for (const auto &s : f.cauchy)
@@ -120,8 +138,8 @@ public:
         cells.push_back({"contractile_stretch_" + groups[g].name, 1, b});
       }
     }
-    if (!root_) return;
-    results_->writeStep(time, {{"displacement", 3, uAll}}, cells);
+    if (root_) results_->writeStep(time, {{"displacement", 3, uAll}}, cells);
+    return reactions;
   }
 
 private:
@@ -129,7 +147,7 @@ private:
   bool root_, fields_;
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;
-  std::unique_ptr<io::KeyedCsvWriter> activation_;
+  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_;
 };
 } // namespace
 
@@ -278,7 +296,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     ++stepNumber;
     steps.accept();
     const bool last = t >= steps.endTime() * (1.0 - 1e-12);
-    recorder.record(t, u, lambda, last || stepNumber % every == 0, muscle, history.trialInput());
+    const auto reactions = recorder.record(t, u, lambda, last || stepNumber % every == 0, muscle, history.trialInput());
 
     nlohmann::json step;
     step["time"] = t;
@@ -293,6 +311,9 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     nlohmann::json histories = nlohmann::json::array();
     for (const auto &n : r.newton) histories.push_back({{"residual_norms", n.residualNorms}, {"krylov", n.linearIterationsPerStep}});
     step["newton_solves"] = histories;
+    nlohmann::json reactionJson = nlohmann::json::object();
+    for (const auto &[name, force] : reactions) reactionJson[name] = force;
+    step["reactions"] = reactionJson;
     if (!scene.muscles.groups.empty()) {
       nlohmann::json activation = nlohmann::json::object();
       for (const auto &[group, values] : recorder.activationRows(muscle, history.trialInput()))

@@ -9,6 +9,7 @@
 
 #include "fem/HexShape.hpp"
 #include "fem/Q1P0Element.hpp"
+#include "loads/BodyForce.hpp"
 #include "loads/DeadTraction.hpp"
 #include "model/TissuePointLaw.hpp"
 
@@ -114,7 +115,7 @@ std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::ve
   return bases;
 }
 
-void Assembler::addExternalForces(double time, Teuchos::ArrayRCP<double> &fData) const {
+void Assembler::addExternalForces(double time, Teuchos::ArrayRCP<double> &fData, bool constrainedToo) const {
   // External forces enter with a minus sign: f = f_int - f_ext.
   const mesh::HexMesh &mesh = scene_.mesh;
   for (const auto &load : scene_.tractions) {
@@ -128,8 +129,22 @@ void Assembler::addExternalForces(double time, Teuchos::ArrayRCP<double> &fData)
       for (int k = 0; k < 4; ++k) {
         const mesh::NodeId n = hex[mesh::kHexFaceNodes[face.localFace][k]];
         for (int c = 0; c < 3; ++c)
-          if (!constrained_[3 * n + c]) fData[overlapMap_->getLocalElement(layout_.dof(n, c))] -= ff(3 * k + c);
+          if (constrainedToo || !constrained_[3 * n + c])
+            fData[overlapMap_->getLocalElement(layout_.dof(n, c))] -= ff(3 * k + c);
       }
+    }
+  }
+  for (const auto &load : scene_.bodyForces) {
+    const Eigen::Vector3d b = scene_.density * load.scale(time) * load.acceleration;
+    if (b.isZero()) continue;
+    for (const auto e : load.elements) {
+      if (layout_.elementOwner[e] != layout_.rank) continue;
+      const auto &hex = mesh.elements[e];
+      const loads::HexForces fe = loads::bodyForces(mesh.elementCoordinates(e), b);
+      for (int a = 0; a < 8; ++a)
+        for (int c = 0; c < 3; ++c)
+          if (constrainedToo || !constrained_[3 * hex[a] + c])
+            fData[overlapMap_->getLocalElement(layout_.dof(hex[a], c))] -= fe(3 * a + c);
     }
   }
 }
@@ -146,7 +161,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
     K->setAllToScalar(0.0);
   }
   int localValid = 1;
-  double localMinJ = std::numeric_limits<double>::infinity();
+  double localMinJ = std::numeric_limits<double>::infinity(), localForceSquares = 0.0;
   const auto what = K ? fem::Q1P0Output::ResidualAndTangent : fem::Q1P0Output::ResidualOnly;
   {
     auto fData = fOverlap.getDataNonConst(0);
@@ -163,6 +178,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
         continue;
       }
       fem::ElementVector re = r.residual;
+      localForceSquares += r.forceScale * r.forceScale;
       fem::ElementMatrix ke = r.tangent;
       for (int l = 0; l < 24; ++l) {
         if (!constrained_[3 * hex[l / 3] + l % 3]) continue;
@@ -193,6 +209,9 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
   int globalValid = 0;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localMinJ, Teuchos::outArg(status.minJ));
+  double forceSquares = 0.0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, localForceSquares, Teuchos::outArg(forceSquares));
+  status.forceScale = std::sqrt(forceSquares);
   status.valid = globalValid == 1;
   return status;
 }
@@ -309,6 +328,38 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(2 * G), weighted.data(), weightedAll.data());
   for (std::size_t g = 0; g < G; ++g)
     out.groupMeanStretch.push_back(weightedAll[2 * g + 1] > 0.0 ? weightedAll[2 * g] / weightedAll[2 * g + 1] : 1.0);
+  return out;
+}
+
+std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, const std::vector<double> &lambda) const {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  Vector uOverlap(overlapMap_), fOverlap(overlapMap_), f(ownedMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  {
+    auto fData = fOverlap.getDataNonConst(0);
+    for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+      const auto r = evaluateElement(i, mesh.elementCoordinates(layout_.localElements[i]), elementDisplacement(i, uData),
+                                     lambda[i], nullptr, false, fem::Q1P0Output::ResidualOnly);
+      for (int l = 0; l < 24; ++l) fData[elementLids_[i][l]] += r.residual(l);
+    }
+    addExternalForces(time, fData, /*constrainedToo=*/true);
+  }
+  f.doExport(fOverlap, *exporter_, Tpetra::ADD);
+  auto fOwned = f.getData(0);
+  std::vector<double> local(3 * scene_.dirichlet.size(), 0.0), global(local.size(), 0.0);
+  for (std::size_t b = 0; b < scene_.dirichlet.size(); ++b) {
+    const auto &bc = scene_.dirichlet[b];
+    for (mesh::NodeId n : bc.nodes) {
+      if (layout_.nodeOwner[n] != layout_.rank) continue;
+      for (int c = 0; c < 3; ++c)
+        if (bc.fixed[c]) local[3 * b + c] += fOwned[ownedMap_->getLocalElement(layout_.dof(n, c))];
+    }
+  }
+  if (!local.empty())
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
+  std::vector<Eigen::Vector3d> out;
+  for (std::size_t b = 0; b < scene_.dirichlet.size(); ++b) out.emplace_back(global[3 * b], global[3 * b + 1], global[3 * b + 2]);
   return out;
 }
 

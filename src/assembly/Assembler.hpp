@@ -24,6 +24,9 @@ namespace glossa::assembly {
 struct AssemblyStatus {
   bool valid = true;   // false: J <= 0 in some element (on any rank)
   double minJ = 1.0;   // global minimum over quadrature points
+  // sqrt(sum over elements of forceScale^2) (fem::Q1P0Result): the size of the terms that
+  // cancel in the assembled residual, whose round-off sets the residual's floor.
+  double forceScale = 0.0;
 };
 
 // Element-constant results for output and for the Uzawa update.
@@ -88,6 +91,11 @@ public:
   // history (commit separately) and returns the fields for output. Collective.
   MuscleFields updateMuscleHistory(const Vector &u);
 
+  // The reaction of every Dirichlet condition (scene order): the sum over its nodes of the
+  // internal minus external force in its fixed components, i.e. the force the support exerts.
+  // A node in several conditions counts in each. Collective.
+  std::vector<Eigen::Vector3d> reactions(const Vector &u, double time, const std::vector<double> &lambda) const;
+
   // Norm of the external force vector at time t (the scale of the Newton tolerance).
   double externalForceNorm(double time) const;
 
@@ -103,8 +111,9 @@ public:
 
 private:
   void importToOverlap(const Vector &u, Vector &overlap) const;
-  // Subtracts the dead tractions at time t from the overlap residual (local faces only).
-  void addExternalForces(double time, Teuchos::ArrayRCP<double> &fData) const;
+  // Subtracts the dead tractions and body forces at time t from the overlap residual (local
+  // faces and elements only); at constrained dofs only if `constrainedToo`.
+  void addExternalForces(double time, Teuchos::ArrayRCP<double> &fData, bool constrainedToo = false) const;
   // The element kernel with the point law of local element i (its muscle law if it has fibres).
   fem::Q1P0Result evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue, double lambda,
                                   const fem::MixedBase *base, bool extrapolate, fem::Q1P0Output what) const;

@@ -166,6 +166,7 @@ Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const Mix
   if (what == Q1P0Output::ResidualAndTangent) r.tangent.noalias() += (d2U / V) * g * g.transpose();
   r.energy += V * (volumetric.energy(theta) + lambda * (theta - 1.0)) + p * Rp;
   r.cauchyMean /= v;
+  r.forceScale = std::hypot(r.residual.norm(), volumetric.d2U(theta) * std::cbrt(V * V));
   r.valid = true;
   return r;
 }
@@ -192,6 +193,7 @@ Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const Quadratu
     r.tangent.noalias() += (volumetric.d2U(r.theta) / V) * g * g.transpose();
   r.energy += V * (volumetric.energy(r.theta) + lambda * (r.theta - 1.0));
   r.cauchyMean /= v;
+  r.forceScale = std::hypot(r.residual.norm(), volumetric.d2U(r.theta) * std::cbrt(V * V));
   r.valid = true;
   return r;
 }
@@ -228,6 +230,7 @@ Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u, const Quadr
   r.theta = v / V;
   r.pressure = pressureIntegral / v;
   r.cauchyMean /= v;
+  r.forceScale = std::hypot(r.residual.norm(), volumetric.d2U(r.theta) * std::cbrt(V * V));
   r.valid = true;
   return r;
 }

@@ -34,6 +34,10 @@ struct Q1P0Result {
   double referenceVolume = 0.0;
   double energy = 0.0;                            // int psi_iso dV + V U(theta) + Lambda V (theta-1)
   double minJ = 1.0;                              // smallest J at the quadrature points
+  // Size of the terms that cancel in the residual: |residual| and the volumetric stiffness times
+  // the element's area, U''(theta) V^(2/3), whose product with a volume difference of relative
+  // round-off epsilon is the residual's round-off floor.
+  double forceScale = 0.0;
   Eigen::Matrix3d cauchyMean = Eigen::Matrix3d::Zero(); // (1/v) int sigma dv
 };
 

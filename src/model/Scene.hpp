@@ -35,6 +35,15 @@ struct DeadTractionLoad {
   TimeFunction scale = TimeFunction::constant();
 };
 
+// A dead body force rho a on a set of elements (gravity: a = g), scaled in time; rho is the
+// material's density.
+struct BodyForceLoad {
+  std::string name;
+  std::vector<mesh::ElementId> elements; // sorted
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero(); // [m/s^2]
+  TimeFunction scale = TimeFunction::constant();
+};
+
 struct Scene {
   mesh::HexMesh mesh;
   // The matrix law: the whole material where no fibres are; its shear modulus scales the
@@ -47,6 +56,7 @@ struct Scene {
   bool symmetricTangent = true; // CG applies; false selects GMRES when the deck says auto
   std::vector<DirichletCondition> dirichlet;
   std::vector<DeadTractionLoad> tractions;
+  std::vector<BodyForceLoad> bodyForces;
   std::vector<std::string> tracedPoints; // names in mesh.namedPoints, in deck order
 };
 

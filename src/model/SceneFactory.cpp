@@ -5,6 +5,7 @@
 
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
+#include "loads/BodyForce.hpp"
 #include "mesh/BoxGenerator.hpp"
 #include "mesh/CookMembraneGenerator.hpp"
 #include "mesh/HexMesh.hpp"
@@ -59,10 +60,21 @@ ParameterList dirichletParameters() {
 ParameterList loadParameters() {
   ParameterList p;
   io::declareString(p, "type", "dead traction",
-                    "dead traction: force per reference area, fixed direction", {"dead traction"});
-  io::declareString(p, "face set", "", "faces the load acts on");
-  io::declareDoubleArray(p, "traction", Array<double>(3, 0.0), "Pa", "traction vector at scale 1", 3);
-  p.set("time function", TimeFunction::validParameters(), "scales the traction in time");
+                    "dead traction: force per reference area, fixed direction; gravity: the weight "
+                    "rho g of the material (density), by posture or direction; body force: rho a for "
+                    "any acceleration a",
+                    {"dead traction", "gravity", "body force"});
+  io::declareString(p, "face set", "", "dead traction: faces the load acts on");
+  io::declareDoubleArray(p, "traction", Array<double>(3, 0.0), "Pa", "dead traction: traction vector at scale 1", 3);
+  io::declareString(p, "posture", "upright",
+                    "gravity: upright (along -y) or supine (along -x) in the body frame of doc/loads.md "
+                    "(x anterior, y superior, z left), or custom ('direction')",
+                    {"upright", "supine", "custom"});
+  io::declareDouble(p, "g", 9.81, "m/s^2", "gravity: its magnitude", io::Range::nonNegative());
+  io::declareDoubleArray(p, "direction", Array<double>(3, 0.0), "", "gravity, custom posture: direction of gravity", 3);
+  io::declareDoubleArray(p, "acceleration", Array<double>(3, 0.0), "m/s^2", "body force: a at scale 1", 3);
+  io::declareString(p, "element set", "", "gravity, body force: elements it acts on; empty: all");
+  p.set("time function", TimeFunction::validParameters(), "scales the load in time");
   return p;
 }
 
@@ -178,6 +190,38 @@ Scene buildScene(const io::Deck &deck, double endTime) {
   for (auto it = loads.begin(); it != loads.end(); ++it) {
     const std::string &name = loads.name(it);
     const ParameterList &l = loads.sublist(name);
+    const auto type = l.get<std::string>("type");
+    if (type != "dead traction") {
+      BodyForceLoad body;
+      body.name = name;
+      const auto set = l.get<std::string>("element set");
+      if (set.empty()) {
+        for (std::size_t e = 0; e < m.numElements(); ++e) body.elements.push_back(static_cast<mesh::ElementId>(e));
+      } else if (m.elementSets.count(set)) {
+        body.elements = m.elementSets.at(set);
+      } else {
+        std::string known;
+        for (const auto &[n, elements] : m.elementSets) known += (known.empty() ? "" : ", ") + n;
+        throw io::DeckError(deck.where({"Loads", name, "element set"}) + ": no element set '" + set +
+                            "'; the mesh has: " + (known.empty() ? "(none)" : known));
+      }
+      const double g = l.get<double>("g");
+      const auto posture = l.get<std::string>("posture");
+      if (type == "body force") {
+        body.acceleration = vec3(l.get<Array<double>>("acceleration"));
+      } else if (posture == "custom") {
+        const Eigen::Vector3d d = vec3(l.get<Array<double>>("direction"));
+        if (!(d.norm() > 0.0))
+          throw io::DeckError(deck.where({"Loads", name, "direction"}) + " is zero; a custom posture needs the "
+                              "direction of gravity");
+        body.acceleration = g * d.normalized();
+      } else {
+        body.acceleration = loads::postureGravity(posture, g);
+      }
+      body.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
+      scene.bodyForces.push_back(std::move(body));
+      continue;
+    }
     DeadTractionLoad load;
     load.name = name;
     const std::string set = l.get<std::string>("face set");
