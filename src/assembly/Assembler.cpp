@@ -11,6 +11,8 @@
 #include "fem/Q1P0Element.hpp"
 #include "loads/BodyForce.hpp"
 #include "loads/DeadTraction.hpp"
+#include "loads/ExternalMuscle.hpp"
+#include "loads/FollowerPressure.hpp"
 #include "model/TissuePointLaw.hpp"
 
 namespace glossa::assembly {
@@ -199,6 +201,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
       }
     }
     addExternalForces(time, fData);
+    if (!addFollowerLoads(uData, time, fData, K, false, nullptr)) localValid = 0;
   }
   if (K) K->endAssembly();
   if (f) {
@@ -240,6 +243,65 @@ ElementFields Assembler::elementFields(const Vector &u, const std::vector<double
     out.referenceVolume[i] = r.referenceVolume;
   }
   return out;
+}
+
+bool Assembler::addFollowerLoads(const Teuchos::ArrayRCP<const double> &uData, double time,
+                                 Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo,
+                                 model::MuscleHistory *history) const {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  bool valid = true;
+  // Subtracts an external force block (n nodes) and its tangent: residual -= f, K -= df/du.
+  auto scatter = [&](const mesh::NodeId *nodes, int n, const double *f, const double *df /* 3n x 3n, col-major */) {
+    std::array<GO, 12> gids{};
+    for (int k = 0; k < n; ++k)
+      for (int c = 0; c < 3; ++c) gids[3 * k + c] = layout_.dof(nodes[k], c);
+    for (int r = 0; r < 3 * n; ++r) {
+      const bool fixedRow = constrained_[3 * nodes[r / 3] + r % 3];
+      if (fixedRow && !constrainedToo) continue;
+      fData[overlapMap_->getLocalElement(gids[r])] -= f[r];
+      if (!K || fixedRow) continue;
+      std::array<double, 12> row{};
+      for (int c = 0; c < 3 * n; ++c)
+        row[c] = constrained_[3 * nodes[c / 3] + c % 3] ? 0.0 : -df[r + 3 * n * c];
+      K->sumIntoGlobalValues(gids[r], Teuchos::ArrayView<const GO>(gids.data(), 3 * n),
+                             Teuchos::ArrayView<const double>(row.data(), 3 * n));
+    }
+  };
+  for (const auto &load : scene_.pressures) {
+    for (const auto &face : load.faces) {
+      if (layout_.elementOwner[face.element] != layout_.rank) continue;
+      const auto &hex = mesh.elements[face.element];
+      std::array<mesh::NodeId, 4> nodes{};
+      loads::FaceNodes Xf, uf;
+      for (int k = 0; k < 4; ++k) {
+        nodes[k] = hex[mesh::kHexFaceNodes[face.localFace][k]];
+        Xf.row(k) = mesh.nodes[nodes[k]].transpose();
+        for (int c = 0; c < 3; ++c) uf(k, c) = uData[overlapMap_->getLocalElement(layout_.dof(nodes[k], c))];
+      }
+      loads::FaceTangent Kf;
+      const loads::FaceForces ff = loads::followerPressureForces(Xf, uf, load.pressure.atGaussPoints(Xf, time), K ? &Kf : nullptr);
+      scatter(nodes.data(), 4, ff.data(), Kf.data());
+    }
+  }
+  for (std::size_t m = 0; m < scene_.muscles.external.size(); ++m) {
+    const auto &muscle = scene_.muscles.external[m];
+    const double alpha = history_.groupActivation(muscle.group);
+    for (std::size_t k = 0; k < muscle.nodes.size(); ++k) {
+      const mesh::NodeId node = muscle.nodes[k];
+      if (layout_.nodeOwner[node] != layout_.rank) continue;
+      Eigen::Vector3d u;
+      for (int c = 0; c < 3; ++c) u(c) = uData[overlapMap_->getLocalElement(layout_.dof(node, c))];
+      const auto r = muscle.law->evaluate(muscle.fibres[k], u, alpha, history_.dt(),
+                                          history_.committedExternalLambdaC(m, k));
+      if (!materials::succeeded(r.hill.status) || !r.force.allFinite()) {
+        valid = false;
+        continue;
+      }
+      if (history) history->trialExternalLambdaC(m, k) = r.hill.lambdaC;
+      scatter(&node, 1, r.force.data(), r.dForceDu.data());
+    }
+  }
+  return valid;
 }
 
 fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue,
@@ -321,6 +383,14 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
         }
     }
   }
+  if (!muscles.external.empty()) {
+    // The external fibres' lambda_c at the converged u (their forces are not needed here).
+    Vector uOverlap(overlapMap_), fOverlap(overlapMap_);
+    importToOverlap(u, uOverlap);
+    auto uData = uOverlap.getData(0);
+    auto fData = fOverlap.getDataNonConst(0);
+    if (!addFollowerLoads(uData, 0.0, fData, nullptr, false, &history_)) localValid = 0;
+  }
   int globalValid = 0;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
   out.valid = globalValid == 1;
@@ -344,6 +414,7 @@ std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, 
       for (int l = 0; l < 24; ++l) fData[elementLids_[i][l]] += r.residual(l);
     }
     addExternalForces(time, fData, /*constrainedToo=*/true);
+    addFollowerLoads(uData, time, fData, nullptr, /*constrainedToo=*/true, nullptr);
   }
   f.doExport(fOverlap, *exporter_, Tpetra::ADD);
   auto fOwned = f.getData(0);

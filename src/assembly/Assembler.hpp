@@ -117,6 +117,13 @@ private:
   // The element kernel with the point law of local element i (its muscle law if it has fibres).
   fem::Q1P0Result evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue, double lambda,
                                   const fem::MixedBase *base, bool extrapolate, fem::Q1P0Output what) const;
+  // The displacement-dependent loads (follower pressures, external muscles) at u: subtracted
+  // from the overlap residual (at constrained dofs only if `constrainedToo`) and, with K, their
+  // tangent subtracted from K (unconstrained rows and columns). With `history`, the external
+  // muscles' new lambda_c are written to its trial values. False if a load could not be
+  // evaluated (an external fibre's local solve failed) on this rank.
+  bool addFollowerLoads(const Teuchos::ArrayRCP<const double> &uOverlap, double time, Teuchos::ArrayRCP<double> &fData,
+                        FEMatrix *K, bool constrainedToo, model::MuscleHistory *history) const;
   fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
 
   const model::Scene &scene_;

@@ -13,6 +13,7 @@
 #include "materials/NeoHookean.hpp"
 #include "materials/ParallelElement.hpp"
 #include "materials/SeriesElement.hpp"
+#include "loads/ExternalMuscle.hpp"
 #include "model/FibreDirectionField.hpp"
 
 namespace glossa::model {
@@ -162,6 +163,77 @@ MuscleGroup readGroup(const io::Deck &deck, const std::string &name, double endT
   return group;
 }
 
+// The Hill fibre of a muscle group: its own parameters where it sets them, else the Fibre law's;
+// group -1: a passive fibre (a contractile element that never pulls).
+materials::HillMuscleFibre hillFibre(const ParameterList &mat, const MuscleArchitecture &muscles, int group) {
+  const ParameterList &law = mat.sublist("Fibre law");
+  const ParameterList *g = group < 0 ? nullptr : &mat.sublist("Muscle groups").sublist(muscles.groups[group].name);
+  auto value = [&](const char *name) {
+    return g && g->get<double>(name) > 0.0 ? g->get<double>(name) : law.get<double>(name);
+  };
+  const double T0max = value("T0max");
+  const materials::ParallelElement parallel(T0max, value("parallel a"), value("parallel A"));
+  const materials::SeriesElement series(T0max, value("series c1"), value("series c2"));
+  if (!g) return materials::HillMuscleFibre(parallel, series, materials::ContractileElement(T0max, 0.0, materials::physiologicalCurves()));
+  return materials::HillMuscleFibre(parallel, series,
+                                    materials::ContractileElement(T0max, muscles.groups[group].T0s,
+                                                                  materials::contractileCurvesFromName(g->get<std::string>("curves"))));
+}
+
+ParameterList externalMuscleParameters() {
+  ParameterList e;
+  io::declareString(e, "muscle group", "", "the muscle group (in 'Muscle groups') that activates it");
+  io::declareString(e, "insertion face set", "", "faces whose nodes the fibres insert into");
+  io::declareString(e, "origin rule", "spacing",
+                    "where each insertion node's fibre starts: spacing (eq. 26): P^O = P^I scaled by 'cs' "
+                    "across 'axis' about the origin, moved by 'height' along 'axis'",
+                    {"spacing"});
+  io::declareDouble(e, "cs", 1.0, "", "spacing rule: lateral scale of the origins (eq. 26)", io::Range::positive());
+  io::declareDouble(e, "height", 2e-3, "m", "spacing rule: distance of the origins along 'axis' (eq. 26: h)");
+  io::declareString(e, "axis", "y", "spacing rule: the direction the fibres run", {"x", "y", "z"});
+  io::declareDouble(e, "fibre fraction", materials::kDefaultTotalFibreFraction, "",
+                    "phi_f of the external portion (eq. 23; Table I: 0.7)", io::Range::open(0, 1.0000001));
+  return e;
+}
+
+ExternalMuscleGroup readExternalMuscle(const io::Deck &deck, const mesh::HexMesh &m, const std::string &name,
+                                       const MuscleArchitecture &muscles) {
+  const ParameterList &mat = deck.root().sublist("Material");
+  const ParameterList &e = mat.sublist("External muscles").sublist(name);
+  ExternalMuscleGroup out;
+  out.name = name;
+  const auto group = e.get<std::string>("muscle group");
+  out.group = muscles.groupIndex(group);
+  if (out.group < 0)
+    throw io::DeckError(deck.where({"Material", "External muscles", name, "muscle group"}) + ": no muscle group '" +
+                        group + "' in Material/Muscle groups");
+  const auto set = e.get<std::string>("insertion face set");
+  if (!m.faceSets.count(set)) {
+    std::string known;
+    for (const auto &[n, faces] : m.faceSets) known += (known.empty() ? "" : ", ") + n;
+    throw io::DeckError(deck.where({"Material", "External muscles", name, "insertion face set"}) + ": no face set '" +
+                        set + "'; the mesh has: " + known);
+  }
+  std::vector<std::array<std::int64_t, 4>> faces;
+  for (const auto &f : m.faceSets.at(set)) {
+    std::array<std::int64_t, 4> nodes{};
+    for (int k = 0; k < 4; ++k) nodes[k] = m.elements[f.element][mesh::kHexFaceNodes[f.localFace][k]];
+    faces.push_back(nodes);
+  }
+  const auto areas = loads::tributaryAreas(faces, m.nodes);
+  const int axis = e.get<std::string>("axis")[0] - 'x';
+  for (const auto &[node, area] : areas) {
+    loads::ExternalFibre fibre;
+    fibre.insertion = m.nodes[node];
+    fibre.origin = loads::spacingRuleOrigin(fibre.insertion, e.get<double>("cs"), e.get<double>("height"), axis);
+    fibre.area = area;
+    out.nodes.push_back(node);
+    out.fibres.push_back(fibre);
+  }
+  out.law = std::make_shared<loads::ExternalMuscle>(hillFibre(mat, muscles, out.group), e.get<double>("fibre fraction"));
+  return out;
+}
+
 } // namespace
 
 ParameterList materialParameters() {
@@ -200,6 +272,10 @@ ParameterList materialParameters() {
   ParameterList groups;
   groups.set(io::kAnySublist, muscleGroupParameters(), "one muscle group");
   p.set("Muscle groups", groups, "muscle groups: activation dynamics and neural input, one sublist each");
+  ParameterList external;
+  external.set(io::kAnySublist, externalMuscleParameters(), "one external muscle");
+  p.set("External muscles", external,
+        "muscles outside the mesh (eq. 22-23): fibres from fixed origins pulling on the nodes of a face set");
   ParameterList &law = p.sublist("Fibre law", false, "the Hill fibre (eq. 11-18) and the mixture");
   io::declareDouble(law, "total fibre fraction", materials::kDefaultTotalFibreFraction, "",
                     "sum of the volume fractions of the families present at a point, split equally (paper: 0.7)",
@@ -243,6 +319,10 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
     throw io::DeckError(deck.where({"Material", "Fibre families"}) + ": at most " +
                         std::to_string(materials::kMaxFibreFamilies) + " fibre families");
 
+  const ParameterList &externals = mat.sublist("External muscles");
+  for (auto it = externals.begin(); it != externals.end(); ++it)
+    muscles.external.push_back(readExternalMuscle(deck, m, externals.name(it), muscles));
+
   const ParameterList &law = mat.sublist("Fibre law");
   const auto form = materials::matrixStressFormFromName(law.get<std::string>("stress form"));
   built.symmetricTangent = families.empty() || form != materials::MatrixStressForm::FibreDirectionRemoved;
@@ -257,23 +337,7 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
         directions[e].push_back(families[f].directions[k]);
       }
     const double total = law.get<double>("total fibre fraction");
-    auto hill = [&](int group) {
-      // A group's own Hill parameter where it sets one, else the Fibre law's.
-      const ParameterList *g = group < 0 ? nullptr : &mat.sublist("Muscle groups").sublist(muscles.groups[group].name);
-      auto value = [&](const char *name) {
-        return g && g->get<double>(name) > 0.0 ? g->get<double>(name) : law.get<double>(name);
-      };
-      const double T0max = value("T0max");
-      const materials::ParallelElement parallel(T0max, value("parallel a"), value("parallel A"));
-      const materials::SeriesElement series(T0max, value("series c1"), value("series c2"));
-      if (!g) // passive: a contractile element that never pulls
-        return materials::HillMuscleFibre(parallel, series,
-                                          materials::ContractileElement(T0max, 0.0, materials::physiologicalCurves()));
-      return materials::HillMuscleFibre(
-          parallel, series,
-          materials::ContractileElement(T0max, muscles.groups[group].T0s,
-                                        materials::contractileCurvesFromName(g->get<std::string>("curves"))));
-    };
+    auto hill = [&](int group) { return hillFibre(mat, muscles, group); };
     std::map<std::vector<int>, int> regionOf;
     muscles.elementRegion.assign(m.numElements(), -1);
     muscles.directions.resize(m.numElements());

@@ -13,7 +13,9 @@
 #include <Eigen/Core>
 
 #include "materials/ActivationDynamics.hpp"
+#include "loads/ExternalMuscle.hpp"
 #include "materials/MuscleMaterial.hpp"
+#include "mesh/HexMesh.hpp"
 #include "model/TimeFunction.hpp"
 
 namespace glossa::model {
@@ -33,11 +35,23 @@ struct FibreRegion {
   std::vector<std::string> familyNames;
 };
 
+// An external muscle (eq. 22-23): fibres from fixed origins to the nodes of an insertion face
+// set, pulling with phi_f lambda_f T_f on each node's tributary area; activated with its group.
+struct ExternalMuscleGroup {
+  std::string name;
+  int group = -1;
+  std::shared_ptr<const loads::ExternalMuscle> law;
+  std::vector<mesh::NodeId> nodes;          // insertion nodes
+  std::vector<loads::ExternalFibre> fibres; // per node: origin, reference insertion, area
+};
+
 struct MuscleArchitecture {
   std::vector<MuscleGroup> groups;
   std::vector<FibreRegion> regions;
   std::vector<int> elementRegion;                    // per mesh element; -1: matrix only
   std::vector<materials::FamilyDirections> directions; // per mesh element, one column per family
+
+  std::vector<ExternalMuscleGroup> external;
 
   bool hasFibres() const { return !regions.empty(); }
   int groupIndex(const std::string &name) const; // -1 if absent

@@ -23,6 +23,8 @@ MuscleHistory::MuscleHistory(const MuscleArchitecture &architecture, const std::
   // The zero-strain configuration is the optimal length: lambda_c = 1 (MuscleMaterial::initialLambdaC).
   lambdaC_.assign(n, 1.0);
   lambdaCTrial_ = lambdaC_;
+  for (const auto &m : architecture.external) externalLambdaC_.emplace_back(m.fibres.size(), 1.0);
+  externalLambdaCTrial_ = externalLambdaC_;
   for (const auto &g : architecture.groups) alpha_.push_back(g.initialActivation);
   alphaTrial_ = alpha_;
   inputTrial_.assign(alpha_.size(), 0.0);
@@ -50,6 +52,7 @@ void MuscleHistory::beginStep(double tNew, double dt) {
     alphaTrial_[g] = architecture_->groups[g].activation.step(alpha_[g], inputTrial_[g], dt);
   }
   lambdaCTrial_ = lambdaC_;
+  externalLambdaCTrial_ = externalLambdaC_;
 }
 
 materials::FamilyValues MuscleHistory::familyActivation(std::size_t i) const {
@@ -76,6 +79,7 @@ double *MuscleHistory::trialLambdaC(std::size_t i, int q) {
 
 void MuscleHistory::commit() {
   lambdaC_ = lambdaCTrial_;
+  externalLambdaC_ = externalLambdaCTrial_;
   alpha_ = alphaTrial_;
   time_ = timeTrial_;
 }

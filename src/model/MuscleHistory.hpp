@@ -25,7 +25,9 @@ public:
   // `elements`: the mesh ids of the rank's elements, in its local order.
   MuscleHistory(const MuscleArchitecture &architecture, const std::vector<mesh::ElementId> &elements);
 
-  bool active() const { return architecture_ != nullptr && architecture_->hasFibres(); }
+  bool active() const {
+    return architecture_ != nullptr && (architecture_->hasFibres() || !architecture_->external.empty());
+  }
 
   // Trial activation of every group at tNew = t_committed + dt (dt > 0).
   void beginStep(double tNew, double dt);
@@ -45,6 +47,11 @@ public:
   const double *committedLambdaC(std::size_t localElement, int q) const;
   double *trialLambdaC(std::size_t localElement, int q);
   int familyCount(std::size_t localElement) const;
+  // lambda_c of fibre k of external muscle m (every rank keeps all; the node's owner updates it).
+  double committedExternalLambdaC(std::size_t muscle, std::size_t k) const { return externalLambdaC_[muscle][k]; }
+  double &trialExternalLambdaC(std::size_t muscle, std::size_t k) { return externalLambdaCTrial_[muscle][k]; }
+  // Trial activation of a group (-1: passive, 0).
+  double groupActivation(int group) const { return group < 0 ? 0.0 : alphaTrial_[group]; }
 
   void commit();
 
@@ -53,6 +60,7 @@ private:
   std::vector<int> region_;         // per local element
   std::vector<std::size_t> offset_; // per local element: first lambda_c value (8 points x families)
   std::vector<double> lambdaC_, lambdaCTrial_;
+  std::vector<std::vector<double>> externalLambdaC_, externalLambdaCTrial_;
   std::vector<double> alpha_, alphaTrial_, inputTrial_;
   std::vector<std::optional<double>> override_;
   // dt before the first step: any positive value (the reference state has no rate).

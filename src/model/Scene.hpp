@@ -11,6 +11,7 @@
 #include "materials/IsochoricMaterial.hpp"
 #include "materials/VolumetricEnergy.hpp"
 #include "mesh/HexMesh.hpp"
+#include "loads/PressureField.hpp"
 #include "model/MuscleArchitecture.hpp"
 #include "model/TimeFunction.hpp"
 
@@ -44,6 +45,13 @@ struct BodyForceLoad {
   TimeFunction scale = TimeFunction::constant();
 };
 
+// A follower pressure sigma = -p I on the deformed faces of a set, p = p(X, t) (loads/PressureField).
+struct FollowerPressureLoad {
+  std::string name;
+  std::vector<mesh::ElementFace> faces;
+  loads::PressureField pressure = loads::PressureField::uniform(0.0);
+};
+
 struct Scene {
   mesh::HexMesh mesh;
   // The matrix law: the whole material where no fibres are; its shear modulus scales the
@@ -57,6 +65,7 @@ struct Scene {
   std::vector<DirichletCondition> dirichlet;
   std::vector<DeadTractionLoad> tractions;
   std::vector<BodyForceLoad> bodyForces;
+  std::vector<FollowerPressureLoad> pressures;
   std::vector<std::string> tracedPoints; // names in mesh.namedPoints, in deck order
 };
 

@@ -9,6 +9,7 @@
 #include "mesh/BoxGenerator.hpp"
 #include "mesh/CookMembraneGenerator.hpp"
 #include "mesh/HexMesh.hpp"
+#include "mesh/ThickCylinderGenerator.hpp"
 #include "model/MaterialFactory.hpp"
 
 namespace glossa::model {
@@ -21,7 +22,7 @@ Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 
 ParameterList meshParameters() {
   ParameterList p;
-  io::declareString(p, "type", "box", "built-in generator", {"box", "cook-membrane"});
+  io::declareString(p, "type", "box", "built-in generator", {"box", "cook-membrane", "thick cylinder"});
   ParameterList &box = p.sublist("Box", false, "a structured box of hexahedra (type = box); face "
                                               "and node sets xmin, xmax, ymin, ymax, zmin, zmax");
   io::declareDoubleArray(box, "origin", Array<double>(3, 0.0), "m", "corner with the smallest coordinates", 3);
@@ -35,6 +36,14 @@ ParameterList meshParameters() {
   io::declareInt(cook, "cells through thickness", 1, "elements along z", io::Range::closed(1, 1000));
   io::declareDouble(cook, "thickness", 1.0, "mm", "extrusion depth", io::Range::positive());
   io::declareDouble(cook, "scale", 1e-3, "m/mm", "length unit of the corner coordinates", io::Range::positive());
+  ParameterList &cylinder = p.sublist("Thick cylinder", false,
+                                      "a quarter of a thick-walled cylinder (type = thick cylinder) about z, "
+                                      "from +x to +y; sets inner, outer, y0, x0, zmin, zmax; named point inner");
+  io::declareDouble(cylinder, "inner radius", 1e-3, "m", "", io::Range::positive());
+  io::declareDouble(cylinder, "outer radius", 2e-3, "m", "", io::Range::positive());
+  io::declareDouble(cylinder, "height", 0.25e-3, "m", "extent along z", io::Range::positive());
+  io::declareIntArray(cylinder, "cells", Array<int>(std::vector<int>{8, 8, 1}), "radial, circumferential, axial", 3,
+                      io::Range::closed(1, 1000));
   ParameterList &faces = p.sublist("Face sets", false,
                                    "derived face sets: the faces of an existing set whose centroid "
                                    "lies in a box");
@@ -63,8 +72,16 @@ ParameterList loadParameters() {
                     "dead traction: force per reference area, fixed direction; gravity: the weight "
                     "rho g of the material (density), by posture or direction; body force: rho a for "
                     "any acceleration a",
-                    {"dead traction", "gravity", "body force"});
-  io::declareString(p, "face set", "", "dead traction: faces the load acts on");
+                    {"dead traction", "gravity", "body force", "follower pressure"});
+  io::declareString(p, "face set", "", "dead traction, follower pressure: faces the load acts on");
+  io::declareDouble(p, "pressure", 0.0, "Pa",
+                    "follower pressure: p_max, sigma = -p I on the deformed faces (p > 0 compresses, p < 0 "
+                    "is suction)");
+  io::declareString(p, "profile", "uniform",
+                    "follower pressure: uniform, or linear from 0 at 'P_A' to p_max at 'P_P' (paper §8.3)",
+                    {"uniform", "linear"});
+  io::declareDoubleArray(p, "P_A", Array<double>(3, 0.0), "m", "linear profile: where p = 0", 3);
+  io::declareDoubleArray(p, "P_P", Array<double>(3, 0.0), "m", "linear profile: where p = p_max", 3);
   io::declareDoubleArray(p, "traction", Array<double>(3, 0.0), "Pa", "dead traction: traction vector at scale 1", 3);
   io::declareString(p, "posture", "upright",
                     "gravity: upright (along -y) or supine (along -x) in the body frame of doc/loads.md "
@@ -95,6 +112,11 @@ mesh::HexMesh buildMesh(const io::Deck &deck) {
       const auto &c = b.get<Array<int>>("cells");
       m = mesh::generateBox(vec3(b.get<Array<double>>("origin")), vec3(b.get<Array<double>>("lengths")),
                             {c[0], c[1], c[2]});
+    } else if (p.get<std::string>("type") == "thick cylinder") {
+      const auto &c = p.sublist("Thick cylinder");
+      const auto &n = c.get<Array<int>>("cells");
+      m = mesh::generateThickCylinder(c.get<double>("inner radius"), c.get<double>("outer radius"),
+                                      c.get<double>("height"), {n[0], n[1], n[2]});
     } else {
       const auto &c = p.sublist("Cook membrane");
       m = mesh::generateCookMembrane(c.get<int>("cells per side"), c.get<int>("cells through thickness"),
@@ -191,6 +213,30 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     const std::string &name = loads.name(it);
     const ParameterList &l = loads.sublist(name);
     const auto type = l.get<std::string>("type");
+    if (type == "follower pressure") {
+      FollowerPressureLoad load;
+      load.name = name;
+      const std::string set = l.get<std::string>("face set");
+      if (!m.faceSets.count(set))
+        throw io::DeckError(deck.where({"Loads", name, "face set"}) + ": no face set '" + set +
+                            "'; the mesh has: " + knownSets(m));
+      load.faces = m.faceSets.at(set);
+      const TimeFunction b = timeFunction(deck, {"Loads", name, "time function"}, endTime);
+      const double pMax = l.get<double>("pressure");
+      if (l.get<std::string>("profile") == "uniform") {
+        load.pressure = loads::PressureField::uniform(pMax, b);
+      } else {
+        try {
+          load.pressure = loads::PressureField::linear(pMax, vec3(l.get<Array<double>>("P_A")),
+                                                       vec3(l.get<Array<double>>("P_P")), b);
+        } catch (const std::invalid_argument &e) {
+          throw io::DeckError(deck.where({"Loads", name, "P_P"}) + ": " + e.what());
+        }
+      }
+      scene.pressures.push_back(std::move(load));
+      scene.symmetricTangent = false; // a follower load's tangent is not symmetric: GMRES
+      continue;
+    }
     if (type != "dead traction") {
       BodyForceLoad body;
       body.name = name;

@@ -1,5 +1,7 @@
 // Time functions against their definitions, including the piecewise-constant steps used for
 // neural inputs and the scaling that gives a constant input below 1.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "model/TimeFunction.hpp"
@@ -33,4 +35,15 @@ TEST(TimeFunction, FromParametersReadsSteps) {
   const auto f = TimeFunction::fromParameters(p, 1.0);
   EXPECT_EQ(f(0.49), 1.0);
   EXPECT_EQ(f(0.5), 0.0);
+}
+
+TEST(TimeFunction, BreathingFromParametersIsEq27HalfWave) {
+  auto p = TimeFunction::validParameters();
+  p.set("type", std::string("breathing"));
+  const auto f = TimeFunction::fromParameters(p, 1.0);
+  const double omega = 2 * M_PI / 2.5;
+  EXPECT_NEAR(f(0.3), std::pow(std::sin(omega * 0.3), 1.75), 1e-15);
+  EXPECT_EQ(f(1.5), 0.0); // second half of the breath: no pressure
+  p.set("rectification", std::string("full-wave"));
+  EXPECT_NEAR(TimeFunction::fromParameters(p, 1.0)(1.5), std::pow(std::abs(std::sin(omega * 1.5)), 1.75), 1e-15);
 }

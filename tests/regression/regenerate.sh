@@ -1,0 +1,14 @@
+#!/bin/sh
+# Regenerates the stored reference trace of a deck, on purpose only (never called by a test):
+#   sh tests/regression/regenerate.sh inputs/paper/s7_1_a_internal.xml [build]
+# runs the deck on 1 rank and copies its traces.csv to tests/regression/<deck name>.csv.
+# Review the difference (git diff) and say why in the commit message.
+set -e
+deck="$1"
+build="${2:-build}"
+[ -f "$deck" ] || { echo "usage: $0 DECK.xml [BUILD_DIR]" >&2; exit 2; }
+name=$(basename "$deck" .xml)
+out=$(mktemp -d)
+"$build/glossa" run "$deck" --output "$out" --quiet
+cp "$out/traces.csv" "$(dirname "$0")/$name.csv"
+echo "wrote $(dirname "$0")/$name.csv"
