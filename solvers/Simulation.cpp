@@ -1,6 +1,7 @@
 #include "solvers/Simulation.hpp"
 
 #include <chrono>
+#include <map>
 #include <cstdio>
 #include <iostream>
 #include <sys/resource.h>
@@ -123,6 +124,21 @@ public:
         {"pressure", 1, pressure}, {"dilatation", 1, theta}, {"J", 1, minJ}, {"cauchy_stress", 6, cauchy}};
     if (assembler_.scene().muscles.hasFibres()) {
       cells.push_back({"fibre_stress", 1, assembler_.gatherElementField(muscle.fibreStress, 1)});
+      // Reference fibre directions per family (zero where the family is absent), for ParaView's
+      // glyphs; the mesh is replicated, so rank 0 has them all.
+      const auto &muscles = assembler_.scene().muscles;
+      std::map<std::string, std::vector<double>> directions;
+      const std::size_t elements = assembler_.scene().mesh.numElements();
+      for (const auto &region : muscles.regions)
+        for (const auto &name : region.familyNames) directions.try_emplace(name, 3 * elements, 0.0);
+      for (std::size_t e = 0; e < elements && root_; ++e) {
+        const int r = muscles.elementRegion[e];
+        if (r < 0) continue;
+        for (std::size_t f = 0; f < muscles.regions[r].familyNames.size(); ++f)
+          for (int c = 0; c < 3; ++c)
+            directions[muscles.regions[r].familyNames[f]][3 * e + c] = muscles.directions[e](c, static_cast<Eigen::Index>(f));
+      }
+      for (auto &[name, values] : directions) cells.push_back({"fibre_direction_" + name, 3, std::move(values)});
       // One column per group, gathered together and split by group on rank 0.
       const auto &groups = assembler_.scene().muscles.groups;
       const int G = muscle.groups;
