@@ -43,3 +43,25 @@ TEST(PaperBlockScenes, WiderExternalOriginsPullTheTopFaceOutwards) {
   EXPECT_GT(c.at("P")[0], 0.0);  // cs = 2: pulled out
   EXPECT_GT(c.at("P")[0] - b.at("P")[0], 0.2 * L);
 }
+
+// Newton stays quadratic with the external muscle's tangent (case (b), first 20 ms, the muscle
+// activating): e_{k+1} <= 10 e_k^2 for e = |f| / |f_0| in the first solve of each step, once
+// e < 1e-2 and above round-off.
+TEST(PaperBlockScenes, NewtonIsQuadraticWithTheExternalMuscle) {
+  const auto s = test::runDeck(test::inputPath("paper/s7_1_b_external_cs1.xml"),
+                               {"Time/end time=0.02", "Linear solver/tolerance=1e-10",
+                                "Nonlinear solver/forcing term=constant"},
+                               test::scratchDirectory("s7_1_b_newton"));
+  ASSERT_TRUE(s.at("converged").get<bool>());
+  int checked = 0;
+  for (const auto &step : s.at("steps")) {
+    const auto r = step.at("newton_solves").front().at("residual_norms").get<std::vector<double>>();
+    for (std::size_t k = 1; k + 1 < r.size(); ++k) {
+      const double e = r[k] / r[0], next = r[k + 1] / r[0];
+      if (e > 1e-2 || next < 1e-10) continue;
+      EXPECT_LE(next, 10.0 * e * e) << "t = " << step.at("time") << ", iteration " << k;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 3);
+}
