@@ -251,16 +251,17 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   recorder.record(0.0, u, lambda, true, assembler->updateMuscleHistory(u), inputs(0.0));
   writeSummary();
 
-  double t = 0.0;
-  int stepNumber = 0, converged = 1;
-  std::string failure;
-  while (t < steps.endTime() * (1.0 - 1e-12)) {
-    const double dt = steps.nextStep(t);
-    const double tNew = t + dt;
-    const auto stepStart = Clock::now();
-    const double solveStart = model->assemblySeconds();
-    assembly::Vector uTrial(u, Teuchos::Copy);
-    std::vector<double> lambdaTrial = lambda;
+  // One step from the committed state to tNew: u and lambda hold the committed state on entry
+  // and the trial state on return; the muscle history's trial values are this step's. Nothing is
+  // committed here, so a controller may attempt many inputs from one state.
+  struct StepAttempt {
+    UzawaResult uzawa;
+    assembly::MuscleFields muscle;
+    bool ok = false;
+    std::string why;
+  };
+  auto attemptStep = [&](double tNew, double dt, assembly::Vector &uTrial, std::vector<double> &lambdaTrial) {
+    StepAttempt out;
     assembler->applyDirichlet(uTrial, tNew);
     model->setTime(tNew);
     model->setLambda(&lambdaTrial);
@@ -274,7 +275,6 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     if (!(reference > 0.0)) reference = 1.0;
     const double tolerance = newton.relativeResidualTolerance() * reference;
 
-    if (talk) std::printf("step %d  t = %.6g  dt = %.3g\n", stepNumber + 1, tNew, dt);
     auto onNewton = [&](int k, double normF, int krylov) {
       if (talk) std::printf("    newton %2d  |f| = %.3e  krylov %d\n", k, normF, krylov);
     };
@@ -283,19 +283,39 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
         std::printf("  uzawa %d: newton %d  krylov %d  max|theta-1| = %.2e  mean %.2e\n", k, n.iterations,
                     n.linearIterations, e.max, e.mean);
     };
-    UzawaResult r = uzawa.solve(uTrial, lambdaTrial, tolerance, onNewton, onUzawa);
+    out.uzawa = uzawa.solve(uTrial, lambdaTrial, tolerance, onNewton, onUzawa);
     model->setLambda(nullptr);
     // The history at the converged state: lambda_c of every point with this step's activation.
-    assembly::MuscleFields muscle;
-    if (r.converged) muscle = assembler->updateMuscleHistory(uTrial);
-
-    if (!r.converged || !muscle.valid) {
+    if (out.uzawa.converged) out.muscle = assembler->updateMuscleHistory(uTrial);
+    out.ok = out.uzawa.converged && out.muscle.valid;
+    if (!out.ok) {
+      const UzawaResult &r = out.uzawa;
       const NewtonResult &last = r.newton.back();
-      const std::string why = !muscle.valid ? "a contractile-stretch solve failed at the converged state"
-                              : r.elementInverted ? "an element inverted (J <= 0) or a muscle point law failed"
-                              : !last.failure.empty() ? last.failure.substr(0, last.failure.find('\n'))
-                              : !last.converged ? "Newton did not converge"
-                                                : "Uzawa did not reach the dilatation tolerance";
+      out.why = !out.muscle.valid ? "a contractile-stretch solve failed at the converged state"
+                : r.elementInverted ? "an element inverted (J <= 0) or a muscle point law failed"
+                : !last.failure.empty() ? last.failure.substr(0, last.failure.find('\n'))
+                : !last.converged ? "Newton did not converge"
+                                  : "Uzawa did not reach the dilatation tolerance";
+    }
+    return out;
+  };
+
+  double t = 0.0;
+  int stepNumber = 0, converged = 1;
+  std::string failure;
+  while (t < steps.endTime() * (1.0 - 1e-12)) {
+    const double dt = steps.nextStep(t);
+    const double tNew = t + dt;
+    const auto stepStart = Clock::now();
+    const double solveStart = model->assemblySeconds();
+    assembly::Vector uTrial(u, Teuchos::Copy);
+    std::vector<double> lambdaTrial = lambda;
+    if (talk) std::printf("step %d  t = %.6g  dt = %.3g\n", stepNumber + 1, tNew, dt);
+    StepAttempt attempt = attemptStep(tNew, dt, uTrial, lambdaTrial);
+    UzawaResult &r = attempt.uzawa;
+    assembly::MuscleFields &muscle = attempt.muscle;
+    if (!attempt.ok) {
+      const std::string &why = attempt.why;
       if (talk) std::printf("  step failed at t = %.6g: %s; cutting back\n", tNew, why.c_str());
       if (!steps.cutBack()) {
         failure = "step to t = " + std::to_string(tNew) + " failed (" + why + ") below the minimum step size";
