@@ -22,6 +22,9 @@ enum class StopReason {
 };
 std::string toString(StopReason reason);
 
+// `best` is the first genome, in evaluation order (batch by batch, each in order), whose
+// objective is below every earlier one: a caller that keeps the trial state of each candidate
+// that beats all earlier ones holds the winner's state when minimise() returns.
 struct GeneticAlgorithmResult {
   Genome best;  // the genome of bestObjective
   double bestObjective = 0.0;

@@ -152,6 +152,36 @@ TEST(ElitistGeneticAlgorithmBinary, BestObjectiveNeverIncreasesAndIsTheBestSeenS
   EXPECT_DOUBLE_EQ(deceptiveTrap(r.best), r.bestObjective);
 }
 
+TEST(ElitistGeneticAlgorithmBinary, BestIsTheFirstEvaluatedGenomeOfTheLowestObjective) {
+  // The caller keeps the trial state of a candidate only when it beats every earlier one; that
+  // candidate must be the GA's answer, also when many genomes tie (here objectives take only
+  // four values).
+  auto coarse = [](const Genome &g) {
+    int ones = 0;
+    for (double u : g) ones += u == 1.0;
+    return ones == 4 ? 1.0 : 2.0 + ones % 3; // 126 genomes share the minimum, none a corner
+  };
+  for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+    GeneticAlgorithmParameters p;
+    p.populationSize = 8;
+    p.generations = 12;
+    p.stagnationGenerations = 0;
+    p.seed = seed;
+    RecordingEvaluator eval{coarse};
+    const GeneticAlgorithmResult r = ElitistGeneticAlgorithm(p).minimise(9, eval.callback());
+    Genome firstBest;
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const auto &batch : eval.batches)
+      for (const Genome &g : batch)
+        if (coarse(g) < lowest) {
+          lowest = coarse(g);
+          firstBest = g;
+        }
+    EXPECT_EQ(r.best, firstBest) << "seed " << seed;
+    EXPECT_EQ(r.bestObjective, lowest);
+  }
+}
+
 TEST(ElitistGeneticAlgorithmBinary, SameSeedSameRunOtherSeedsDiffer) {
   GeneticAlgorithmParameters p;
   p.populationSize = 20;
