@@ -17,6 +17,10 @@
 #include "io/output/SummaryWriter.hpp"
 #include "io/output/TraceWriter.hpp"
 #include "model/SceneFactory.hpp"
+#include "control/ControlObjective.hpp"
+#include "control/ElitistGeneticAlgorithm.hpp"
+#include "control/MusclePruning.hpp"
+#include "solvers/ControlSection.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/NewtonSolver.hpp"
 #include "solvers/TimeStepping.hpp"
@@ -173,6 +177,7 @@ void declareSolverParameters(Teuchos::ParameterList &schema) {
   schema.set("Nonlinear solver", nonlinearSolverParameters(), "Newton's method (NOX)");
   schema.set("Linear solver", linearSolverParameters(), "Krylov solver and preconditioner (Belos, MueLu, Ifpack2, Amesos2)");
   schema.set("Output", outputParameters(), "result files");
+  schema.set("Control", controlParameters(), "neural control of the muscle groups (paper §6.1)");
 }
 
 nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
@@ -248,7 +253,9 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g) v.push_back(history.input(static_cast<int>(g), time));
     return v;
   };
-  recorder.record(0.0, u, lambda, true, assembler->updateMuscleHistory(u), inputs(0.0));
+  const assembly::MuscleFields initialMuscle = assembler->updateMuscleHistory(u);
+  const std::vector<double> recorderStretch = initialMuscle.groupMeanStretch;
+  recorder.record(0.0, u, lambda, true, initialMuscle, inputs(0.0));
   writeSummary();
 
   // One step from the committed state to tNew: u and lambda hold the committed state on entry
@@ -260,6 +267,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     bool ok = false;
     std::string why;
   };
+  bool inCandidate = false; // a controller's candidate solve: no per-iteration progress
   auto attemptStep = [&](double tNew, double dt, assembly::Vector &uTrial, std::vector<double> &lambdaTrial) {
     StepAttempt out;
     assembler->applyDirichlet(uTrial, tNew);
@@ -276,10 +284,10 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     const double tolerance = newton.relativeResidualTolerance() * reference;
 
     auto onNewton = [&](int k, double normF, int krylov) {
-      if (talk) std::printf("    newton %2d  |f| = %.3e  krylov %d\n", k, normF, krylov);
+      if (talk && !inCandidate) std::printf("    newton %2d  |f| = %.3e  krylov %d\n", k, normF, krylov);
     };
     auto onUzawa = [&](int k, const NewtonResult &n, const DilatationError &e) {
-      if (talk)
+      if (talk && !inCandidate)
         std::printf("  uzawa %d: newton %d  krylov %d  max|theta-1| = %.2e  mean %.2e\n", k, n.iterations,
                     n.linearIterations, e.max, e.mean);
     };
@@ -300,6 +308,133 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     return out;
   };
 
+  // Neural control (issue 5): per step, the elitist GA picks the inputs of the controlled groups
+  // that keep the control points at their reference positions (eq. 25), each candidate a full
+  // step solve from the committed state; the winner's state is committed.
+  const ControlSetup control = buildControl(deck, scene);
+  std::unique_ptr<io::KeyedCsvWriter> controls;
+  if (control.enabled && root)
+    controls = std::make_unique<io::KeyedCsvWriter>(
+        dir / "controls.csv", "group", std::vector<std::string>{"u", "evaluated", "objective", "candidates"});
+  std::vector<double> committedStretch = recorderStretch;
+  control::Genome previousBest;
+  struct ControlOutcome {
+    std::vector<double> inputs;
+    std::vector<int> evaluated;
+    double objective = 0.0;
+    std::size_t candidates = 0;
+    int generations = 0;
+    std::string stop;
+    Eigen::VectorXd pointErrors;
+  };
+  auto controlledStep = [&](int stepIndex, double tNew, double dt, assembly::Vector &uTrial,
+                            std::vector<double> &lambdaTrial, StepAttempt &attempt, ControlOutcome &outcome) {
+    const std::size_t G = scene.muscles.groups.size();
+    // Pruning: the controlled groups whose mean fibre stretch at the committed state exceeds its
+    // reference value (1: no pre-strain), plus those always evaluated.
+    std::vector<double> stretch, reference;
+    std::vector<bool> always;
+    std::vector<std::string> names;
+    for (const auto &g : scene.muscles.groups) names.push_back(g.name);
+    const auto alwaysMask = control.parameters.alwaysEvaluatedMask(names);
+    for (int g : control.groups) {
+      stretch.push_back(committedStretch[g]);
+      reference.push_back(1.0);
+      always.push_back(alwaysMask[g]);
+    }
+    std::vector<int> local = control.parameters.pruning
+                                 ? control::groupsInTension(stretch, reference, control.parameters.pruningTolerance, always)
+                                 : std::vector<int>();
+    if (!control.parameters.pruning)
+      for (std::size_t i = 0; i < control.groups.size(); ++i) local.push_back(static_cast<int>(i));
+    std::vector<int> evaluated;
+    for (int i : local) evaluated.push_back(control.groups[i]);
+    outcome.evaluated = evaluated;
+
+    Eigen::Matrix3Xd goal(3, control.pointNodes.size());
+    for (std::size_t p = 0; p < control.pointNodes.size(); ++p) goal.col(p) = scene.mesh.nodes[control.pointNodes[p]];
+    const control::ControlObjective objective(goal, control.weights);
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<double> bestInputs;
+    assembly::Vector uBest(u, Teuchos::Copy);
+    std::vector<double> lambdaBest;
+    StepAttempt attemptBest;
+    Eigen::VectorXd bestErrors;
+    auto apply = [&](const std::vector<double> &inputs) {
+      for (std::size_t g = 0; g < G; ++g)
+        if (std::find(control.groups.begin(), control.groups.end(), static_cast<int>(g)) != control.groups.end())
+          history.overrideInput(static_cast<int>(g), inputs[g]);
+    };
+    auto evaluate = [&](const std::vector<control::Genome> &genomes) {
+      std::vector<double> values;
+      for (const auto &genome : genomes) {
+        const std::vector<double> inputs = control::inputsFromGenome(evaluated, genome, G);
+        apply(inputs);
+        assembly::Vector uC(u, Teuchos::Copy);
+        std::vector<double> lambdaC = lambda;
+        inCandidate = true;
+        StepAttempt a = attemptStep(tNew, dt, uC, lambdaC);
+        inCandidate = false;
+        double value = std::numeric_limits<double>::infinity();
+        Eigen::VectorXd errors;
+        if (a.ok) {
+          const std::vector<double> all = assembler->gatherDisplacement(uC);
+          Eigen::Matrix3Xd x(3, control.pointNodes.size());
+          for (std::size_t p = 0; p < control.pointNodes.size(); ++p) {
+            const auto n = control.pointNodes[p];
+            x.col(p) = scene.mesh.nodes[n] + Eigen::Vector3d(all[3 * n], all[3 * n + 1], all[3 * n + 2]);
+          }
+          const auto v = objective.evaluate(x);
+          value = v.total;
+          errors = v.distance;
+        }
+        // The winner is the first candidate to beat every earlier one: keep its state.
+        if (value < best) {
+          best = value;
+          bestInputs = inputs;
+          uBest.assign(uC);
+          lambdaBest = lambdaC;
+          attemptBest = a;
+          bestErrors = errors;
+        }
+        values.push_back(value);
+      }
+      return values;
+    };
+    control::GeneticAlgorithmParameters gaParameters = control.parameters.ga;
+    gaParameters.seed += static_cast<std::uint64_t>(stepIndex); // fresh draws per control step
+    const control::ElitistGeneticAlgorithm ga(gaParameters);
+    std::vector<control::Genome> seeds;
+    if (control.parameters.seedWithPreviousBest && !previousBest.empty()) {
+      std::vector<double> inputs(G, 0.0);
+      for (std::size_t i = 0; i < control.groups.size() && i < previousBest.size(); ++i)
+        inputs[control.groups[i]] = previousBest[i];
+      seeds.push_back(control::genomeFromInputs(evaluated, inputs));
+    }
+    const auto result = ga.minimise(evaluated.size(), evaluate, seeds);
+    outcome.candidates = result.evaluations;
+    outcome.generations = result.generations;
+    outcome.stop = control::toString(result.stopReason);
+    outcome.objective = best;
+    outcome.pointErrors = bestErrors;
+    if (!std::isfinite(best)) {
+      attempt = attemptBest;
+      attempt.ok = false;
+      attempt.why = "no candidate input converged";
+      return;
+    }
+    // The winner's trial history (activation and lambda_c at its converged state), then its state.
+    apply(bestInputs);
+    history.beginStep(tNew, dt);
+    attemptBest.muscle = assembler->updateMuscleHistory(uBest);
+    uTrial.assign(uBest);
+    lambdaTrial = lambdaBest;
+    attempt = attemptBest;
+    outcome.inputs = bestInputs;
+    previousBest.assign(control.groups.size(), 0.0);
+    for (std::size_t i = 0; i < control.groups.size(); ++i) previousBest[i] = bestInputs[control.groups[i]];
+  };
+
   double t = 0.0;
   int stepNumber = 0, converged = 1;
   std::string failure;
@@ -311,7 +446,10 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     assembly::Vector uTrial(u, Teuchos::Copy);
     std::vector<double> lambdaTrial = lambda;
     if (talk) std::printf("step %d  t = %.6g  dt = %.3g\n", stepNumber + 1, tNew, dt);
-    StepAttempt attempt = attemptStep(tNew, dt, uTrial, lambdaTrial);
+    StepAttempt attempt;
+    ControlOutcome outcome;
+    if (control.enabled) controlledStep(stepNumber, tNew, dt, uTrial, lambdaTrial, attempt, outcome);
+    else attempt = attemptStep(tNew, dt, uTrial, lambdaTrial);
     UzawaResult &r = attempt.uzawa;
     assembly::MuscleFields &muscle = attempt.muscle;
     if (!attempt.ok) {
@@ -356,7 +494,32 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
         activation[group] = {{"u", values[0]}, {"alpha", values[1]}, {"ffmr", values[2]}, {"mean_fibre_stretch", values[3]}};
       step["activation"] = activation;
     }
+    if (control.enabled) {
+      nlohmann::json c;
+      c["objective"] = outcome.objective;
+      c["candidates"] = outcome.candidates;
+      c["generations"] = outcome.generations;
+      c["stop"] = outcome.stop;
+      nlohmann::json inputs = nlohmann::json::object(), errors = nlohmann::json::object();
+      std::vector<std::pair<std::string, std::vector<double>>> rows;
+      for (int g : control.groups) {
+        const bool evaluated = std::find(outcome.evaluated.begin(), outcome.evaluated.end(), g) != outcome.evaluated.end();
+        inputs[scene.muscles.groups[g].name] = outcome.inputs[g];
+        rows.push_back({scene.muscles.groups[g].name,
+                        {outcome.inputs[g], evaluated ? 1.0 : 0.0, outcome.objective, static_cast<double>(outcome.candidates)}});
+      }
+      for (std::size_t p = 0; p < control.pointNames.size(); ++p)
+        errors[control.pointNames[p]] = outcome.pointErrors(static_cast<Eigen::Index>(p));
+      c["inputs"] = inputs;
+      c["point_errors"] = errors;
+      step["control"] = c;
+      if (controls) controls->append(t, rows);
+      if (talk)
+        std::printf("  control: objective %.3e  candidates %zu  generations %d (%s)\n", outcome.objective,
+                    outcome.candidates, outcome.generations, outcome.stop.c_str());
+    }
     doc["steps"].push_back(step);
+    committedStretch = muscle.groupMeanStretch;
     history.commit();
     if (talk)
       std::printf("step %d done  t = %.6g  newton %d  krylov %d  uzawa %d  max|theta-1| %.2e  [%.2f s]\n", stepNumber, t,

@@ -247,7 +247,7 @@ ElementFields Assembler::elementFields(const Vector &u, const std::vector<double
 
 bool Assembler::addFollowerLoads(const Teuchos::ArrayRCP<const double> &uData, double time,
                                  Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo,
-                                 model::MuscleHistory *history) const {
+                                 model::MuscleHistory *history, std::vector<double> *externalStretch) const {
   const mesh::HexMesh &mesh = scene_.mesh;
   bool valid = true;
   // Subtracts an external force block (n nodes) and its tangent: residual -= f, K -= df/du.
@@ -298,6 +298,11 @@ bool Assembler::addFollowerLoads(const Teuchos::ArrayRCP<const double> &uData, d
         continue;
       }
       if (history) history->trialExternalLambdaC(m, k) = r.hill.lambdaC;
+      if (externalStretch && muscle.group >= 0) {
+        const double L0 = (muscle.fibres[k].origin - muscle.fibres[k].insertion).norm();
+        (*externalStretch)[2 * muscle.group] += r.lambdaF * L0;
+        (*externalStretch)[2 * muscle.group + 1] += L0;
+      }
       scatter(&node, 1, r.force.data(), r.dForceDu.data());
     }
   }
@@ -383,21 +388,26 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
         }
     }
   }
+  std::vector<double> external(2 * G, 0.0), externalAll(2 * G, 0.0);
   if (!muscles.external.empty()) {
     // The external fibres' lambda_c at the converged u (their forces are not needed here).
     Vector uOverlap(overlapMap_), fOverlap(overlapMap_);
     importToOverlap(u, uOverlap);
     auto uData = uOverlap.getData(0);
     auto fData = fOverlap.getDataNonConst(0);
-    if (!addFollowerLoads(uData, 0.0, fData, nullptr, false, &history_)) localValid = 0;
+    if (!addFollowerLoads(uData, 0.0, fData, nullptr, false, &history_, &external)) localValid = 0;
   }
   int globalValid = 0;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
   out.valid = globalValid == 1;
-  if (G > 0)
+  if (G > 0) {
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(2 * G), weighted.data(), weightedAll.data());
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(2 * G), external.data(), externalAll.data());
+  }
   for (std::size_t g = 0; g < G; ++g)
-    out.groupMeanStretch.push_back(weightedAll[2 * g + 1] > 0.0 ? weightedAll[2 * g] / weightedAll[2 * g + 1] : 1.0);
+    out.groupMeanStretch.push_back(weightedAll[2 * g + 1] > 0.0    ? weightedAll[2 * g] / weightedAll[2 * g + 1]
+                                   : externalAll[2 * g + 1] > 0.0 ? externalAll[2 * g] / externalAll[2 * g + 1]
+                                                                   : std::numeric_limits<double>::quiet_NaN());
   return out;
 }
 

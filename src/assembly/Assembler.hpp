@@ -46,7 +46,8 @@ struct MuscleFields {
   std::vector<double> fibreStretch, contractileStretch;
   std::vector<double> fibreStress; // per local element: mean of sum_f phi_f T_f [Pa]
   // Per group, over the whole mesh: the reference-volume-weighted mean fibre stretch of its
-  // families (the pruning measure of §6.1 on a mesh), 1 where the group has no fibres.
+  // internal families (the pruning measure of §6.1 on a mesh); for a group with external fibres
+  // only, their reference-length-weighted mean stretch; NaN for a group with no fibres.
   std::vector<double> groupMeanStretch;
 };
 
@@ -122,8 +123,10 @@ private:
   // tangent subtracted from K (unconstrained rows and columns). With `history`, the external
   // muscles' new lambda_c are written to its trial values. False if a load could not be
   // evaluated (an external fibre's local solve failed) on this rank.
+  // With `externalStretch` (2 per group): adds lambda_f L_0 and L_0 of the external fibres.
   bool addFollowerLoads(const Teuchos::ArrayRCP<const double> &uOverlap, double time, Teuchos::ArrayRCP<double> &fData,
-                        FEMatrix *K, bool constrainedToo, model::MuscleHistory *history) const;
+                        FEMatrix *K, bool constrainedToo, model::MuscleHistory *history,
+                        std::vector<double> *externalStretch = nullptr) const;
   fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
 
   const model::Scene &scene_;

@@ -1,0 +1,113 @@
+#include "solvers/ControlSection.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "io/deck/DeckError.hpp"
+#include "io/deck/ParameterSpec.hpp"
+
+namespace glossa::solvers {
+
+using Teuchos::Array;
+using Teuchos::ParameterList;
+
+namespace {
+std::vector<std::string> splitList(const std::string &s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) {
+    const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
+    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
+  }
+  return out;
+}
+} // namespace
+
+ParameterList controlParameters() {
+  ParameterList p;
+  io::declareString(p, "type", "none",
+                    "none, or genetic algorithm: at every step choose the neural inputs of the controlled "
+                    "muscle groups that keep the control points at their goals (eq. 25; doc/control.md)",
+                    {"none", "genetic algorithm"});
+  io::declareString(p, "control points", "", "named points held at their reference positions, comma separated");
+  io::declareDoubleArray(p, "weights", Array<double>(), "", "w_p per control point (empty: all 1)", 0,
+                         io::Range::nonNegative());
+  io::declareString(p, "muscle groups", "", "the groups the controller drives, comma separated (empty: all)");
+  io::declareString(p, "always evaluated", "", "groups never pruned, comma separated (the genioglossus parts)");
+  io::declareBool(p, "pruning", true, "search only the groups whose mean fibre stretch is above its reference");
+  io::declareDouble(p, "pruning tolerance", 0.0, "", "how far above the reference stretch counts as tension",
+                    io::Range::nonNegative());
+  io::declareString(p, "genes", "binary", "neural inputs in {0, 1} (the paper) or in [0, 1]", {"binary", "continuous"});
+  io::declareInt(p, "population", 16, "genomes per generation", io::Range::closed(2, 100000));
+  io::declareInt(p, "generations", 20, "generation limit per control step", io::Range::closed(1, 100000));
+  io::declareInt(p, "elite", 2, "best genomes carried over unchanged", io::Range::closed(1, 100000));
+  io::declareInt(p, "tournament size", 2, "genomes per selection tournament", io::Range::closed(1, 100000));
+  io::declareDouble(p, "crossover rate", 0.9, "", "probability of uniform crossover", io::Range::closed(0, 1));
+  io::declareDouble(p, "mutation rate", 0.1, "", "probability per gene", io::Range::closed(0, 1));
+  io::declareDouble(p, "mutation sigma", 0.1, "", "continuous genes: Gaussian mutation width", io::Range::positive());
+  io::declareInt(p, "stagnation generations", 5, "stop after this many generations without improvement",
+                 io::Range::closed(1, 100000));
+  io::declareDouble(p, "objective tolerance", 0.0, "m", "stop once the objective (eq. 25) is below this",
+                    io::Range::nonNegative());
+  io::declareInt(p, "seed", 1, "random seed (same seed and rank count: the same run)", io::Range::closed(0, 2147483647));
+  return p;
+}
+
+ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
+  const ParameterList &c = deck.root().sublist("Control");
+  ControlSetup s;
+  s.enabled = c.get<std::string>("type") != "none";
+  if (!s.enabled) return s;
+  auto where = [&](const char *name) { return deck.where({"Control", name}); };
+  const auto &groups = scene.muscles.groups;
+  std::vector<std::string> groupNames;
+  for (const auto &g : groups) groupNames.push_back(g.name);
+  for (const auto &name : splitList(c.get<std::string>("control points"))) {
+    const auto it = scene.mesh.namedPoints.find(name);
+    if (it == scene.mesh.namedPoints.end())
+      throw io::DeckError(where("control points") + ": no named point '" + name + "' (declare it in Named points)");
+    s.pointNames.push_back(name);
+    s.pointNodes.push_back(it->second.node);
+  }
+  if (s.pointNames.empty()) throw io::DeckError(where("control points") + " is empty: name the points to hold");
+  const auto &w = c.get<Array<double>>("weights");
+  if (!w.empty() && w.size() != static_cast<Array<double>::size_type>(s.pointNames.size()))
+    throw io::DeckError(where("weights") + ": " + std::to_string(w.size()) + " weights for " +
+                        std::to_string(s.pointNames.size()) + " control points");
+  s.weights = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(s.pointNames.size()));
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(w.size()); ++i) s.weights(i) = w[i];
+  const auto listed = splitList(c.get<std::string>("muscle groups"));
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    if (listed.empty() || std::find(listed.begin(), listed.end(), groups[g].name) != listed.end())
+      s.groups.push_back(static_cast<int>(g));
+  for (const auto &name : listed)
+    if (std::find(groupNames.begin(), groupNames.end(), name) == groupNames.end())
+      throw io::DeckError(where("muscle groups") + ": no muscle group '" + name + "'");
+  if (s.groups.empty()) throw io::DeckError(where("muscle groups") + ": the scene has no muscle group to control");
+
+  auto &p = s.parameters;
+  p.pruning = c.get<bool>("pruning");
+  p.pruningTolerance = c.get<double>("pruning tolerance");
+  p.alwaysEvaluated = splitList(c.get<std::string>("always evaluated"));
+  auto &ga = p.ga;
+  ga.geneType = c.get<std::string>("genes") == "binary" ? control::GeneType::binary : control::GeneType::continuous;
+  ga.populationSize = c.get<int>("population");
+  ga.generations = c.get<int>("generations");
+  ga.eliteCount = c.get<int>("elite");
+  ga.tournamentSize = c.get<int>("tournament size");
+  ga.crossoverRate = c.get<double>("crossover rate");
+  ga.mutationRate = c.get<double>("mutation rate");
+  ga.mutationSigma = c.get<double>("mutation sigma");
+  ga.stagnationGenerations = c.get<int>("stagnation generations");
+  ga.objectiveTolerance = c.get<double>("objective tolerance");
+  ga.seed = static_cast<std::uint64_t>(c.get<int>("seed"));
+  try {
+    p.validate();
+    p.alwaysEvaluatedMask(groupNames);
+  } catch (const std::invalid_argument &e) {
+    throw io::DeckError(deck.where({"Control"}) + ": " + e.what());
+  }
+  return s;
+}
+
+} // namespace glossa::solvers

@@ -1,0 +1,32 @@
+#pragma once
+// The deck's "Control" section (issue 5, paper §6.1): which points are held (eq. 25), which
+// muscle groups the controller drives, and the elitist GA's parameters (control/). Teuchos only.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Teuchos_ParameterList.hpp>
+
+#include "control/ControllerParameters.hpp"
+#include "io/deck/Deck.hpp"
+#include "model/Scene.hpp"
+
+namespace glossa::solvers {
+
+Teuchos::ParameterList controlParameters();
+
+struct ControlSetup {
+  bool enabled = false;
+  control::ControllerParameters parameters;
+  std::vector<std::string> pointNames;
+  std::vector<mesh::NodeId> pointNodes;
+  Eigen::VectorXd weights;
+  std::vector<int> groups; // the controlled muscle groups (scene indices), ascending
+};
+
+// `deck` validated; errors are DeckErrors naming the parameter (an unknown point or group, a
+// weight count that does not match, GA parameters out of range).
+ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene);
+
+} // namespace glossa::solvers
