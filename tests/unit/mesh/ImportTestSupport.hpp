@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -29,7 +30,9 @@ class ScratchDir {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
-  ~ScratchDir() { std::filesystem::remove_all(path_); }
+  ~ScratchDir() {
+    if (!std::getenv("GLOSSA_KEEP_SCRATCH")) std::filesystem::remove_all(path_);
+  }
   // Writes `content` byte for byte (so tests control CRLF and final newlines).
   std::string write(const std::string &name, const std::string &content) const {
     const std::string file = (path_ / name).string();
