@@ -18,7 +18,8 @@ constexpr double kZeta[8] = {-1, -1, -1, -1, +1, +1, +1, +1};
 // dX/dxi of the trilinear map, J_ij = sum_a X_ai dN_a/dxi_j with
 // N_a = (1 + xi_a xi)(1 + eta_a eta)(1 + zeta_a zeta) / 8. Kept here rather than taken from
 // fem/ so that the mesh layer stays below fem in the dependency order (DESIGN.md §3).
-Eigen::Matrix3d referenceJacobian(const Eigen::Matrix<double, 8, 3> &X, double xi, double eta, double zeta) {
+Eigen::Matrix3d referenceJacobian(const Eigen::Matrix<double, 8, 3> &X, double xi, double eta,
+                                  double zeta) {
   Eigen::Matrix<double, 8, 3> dN;
   for (int a = 0; a < 8; ++a) {
     dN(a, 0) = 0.125 * kXi[a] * (1 + kEta[a] * eta) * (1 + kZeta[a] * zeta);
@@ -89,9 +90,9 @@ double scaledJacobian(const Eigen::Matrix<double, 8, 3> &X) {
 
   for (int a = 0; a < 8; ++a) {
     const Eigen::Vector3d x = node(a);
-    minimum =
-        std::min(minimum, normalisedDeterminant(node(kCornerEdges[a][0]) - x, node(kCornerEdges[a][1]) - x,
-                                                node(kCornerEdges[a][2]) - x));
+    minimum = std::min(
+        minimum, normalisedDeterminant(node(kCornerEdges[a][0]) - x, node(kCornerEdges[a][1]) - x,
+                                       node(kCornerEdges[a][2]) - x));
   }
   return minimum;
 }
