@@ -4,6 +4,7 @@
 // against an independent computation.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -22,11 +23,13 @@
 
 namespace glossa::mesh::testing {
 
-// A fresh directory per test under the build tree's temp dir, removed at the end.
+// A fresh directory per test under the system temp dir, removed at the end (kept if
+// GLOSSA_KEEP_SCRATCH is set, for debugging). The process id keeps concurrent runs apart.
 class ScratchDir {
  public:
   explicit ScratchDir(const std::string &name)
-      : path_(std::filesystem::temp_directory_path() / ("glossa_mesh_" + name)) {
+      : path_(std::filesystem::temp_directory_path() /
+              ("glossa_mesh_" + name + "_" + std::to_string(::getpid()))) {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
