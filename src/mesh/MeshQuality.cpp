@@ -55,6 +55,19 @@ double elementVolume(const Eigen::Matrix<double, 8, 3> &X) {
   return V;
 }
 
+double minGaussPointJacobian(const Eigen::Matrix<double, 8, 3> &X) {
+  const double g = 1.0 / std::sqrt(3.0);
+  double minimum = std::numeric_limits<double>::infinity();
+  for (double zeta : {-g, g}) {
+    for (double eta : {-g, g}) {
+      for (double xi : {-g, g}) {
+        minimum = std::min(minimum, referenceJacobian(X, xi, eta, zeta).determinant());
+      }
+    }
+  }
+  return minimum;
+}
+
 double meshVolume(const HexMesh &mesh) {
   double V = 0.0;
   for (std::size_t e = 0; e < mesh.numElements(); ++e) {

@@ -14,6 +14,10 @@ namespace glossa::mesh {
 // trilinear map is quadratic in each reference coordinate, so this rule is exact.
 double elementVolume(const Eigen::Matrix<double, 8, 3> &X);
 
+// Smallest det(dX/dxi) over the eight 2x2x2 Gauss points: the quantity the element kernels
+// divide by. Mesh import refuses an element where it is not positive (inverted or degenerate).
+double minGaussPointJacobian(const Eigen::Matrix<double, 8, 3> &X);
+
 // Sum of elementVolume over all elements.
 double meshVolume(const HexMesh &mesh);
 

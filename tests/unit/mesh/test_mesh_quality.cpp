@@ -104,3 +104,27 @@ TEST(MeshQuality, MeshRangeAndVolume) {
 
 }  // namespace
 }  // namespace glossa::mesh
+
+namespace glossa::mesh {
+namespace {
+
+TEST(MeshQuality, MinGaussPointJacobian) {
+  // The unit cube maps [-1,1]^3 with dX/dxi = I/2: det = 1/8 at every point.
+  Eigen::Matrix<double, 8, 3> X;
+  X << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1;
+  EXPECT_NEAR(minGaussPointJacobian(X), 0.125, 1e-15);
+  // Mirrored (top and bottom faces swapped): det = -1/8.
+  Eigen::Matrix<double, 8, 3> Y;
+  Y << X.bottomRows<4>(), X.topRows<4>();
+  EXPECT_NEAR(minGaussPointJacobian(Y), -0.125, 1e-15);
+  // Node 6 moved by d = -(1/2, 1/2, 1/2): dX/dxi = I/2 + d (grad N_6)^T, whose determinant is
+  // (1/8)(1 + 2 d . grad N_6). grad N_6 = (1/8)(1+eta)(1+zeta), ... is largest at the Gauss point
+  // (g, g, g), g = 1/sqrt(3), where each component is (1+g)^2/8: det = (1/8)(1 - 3(1+g)^2/8).
+  Eigen::Matrix<double, 8, 3> Z = X;
+  Z.row(6) << 0.5, 0.5, 0.5;
+  const double g = 1.0 / std::sqrt(3.0);
+  EXPECT_NEAR(minGaussPointJacobian(Z), 0.125 * (1 - 3 * (1 + g) * (1 + g) / 8), 1e-15);
+}
+
+}  // namespace
+}  // namespace glossa::mesh
