@@ -10,6 +10,7 @@
 
 #include "app/CurvesCommand.hpp"
 #include "app/DeckSchema.hpp"
+#include "app/MeshCommand.hpp"
 #include "app/PointCommand.hpp"
 #include "io/deck/Deck.hpp"
 #include "io/deck/DeckError.hpp"
@@ -36,6 +37,9 @@ usage:
       (uniaxial, simple shear or a table of F) with its muscle groups' inputs; writes
       stress, fibre and contractile stretches, tensions and activations to FILE
       (default: point.csv)
+  glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR]
+      read a mesh (Gmsh .msh 4.1, Abaqus .inp, ANSYS .node/.elem), optionally refine it,
+      and print its counts, sets, volume and element quality (--output: XDMF for ParaView)
   glossa curves [--output DIR]
       tabulate the muscle curves f_cL, f_cV (both parameter sets), f_p and f_s to
       DIR/force_length.csv, force_velocity.csv, passive_series.csv (default DIR: ./curves)
@@ -48,7 +52,9 @@ Exit status: 0 success, 1 run did not converge or failed, 2 bad deck or command 
 struct Arguments {
   std::string command, deck, output;
   std::vector<std::string> overrides;
-  bool quiet = false, markdown = false, timers = false;
+  bool quiet = false, markdown = false, timers = false, json = false;
+  std::string format = "auto";
+  int refine = 0;
 };
 
 Arguments parse(int argc, char **argv) {
@@ -67,6 +73,18 @@ Arguments parse(int argc, char **argv) {
     else if (s == "--quiet") a.quiet = true;
     else if (s == "--timers") a.timers = true;
     else if (s == "--markdown") a.markdown = true;
+    else if (s == "--json") a.json = true;
+    else if (s == "--format") a.format = value("--format");
+    else if (s == "--refine") {
+      const std::string v = value("--refine");
+      try {
+        std::size_t used = 0;
+        a.refine = std::stoi(v, &used);
+        if (used != v.size() || a.refine < 0 || a.refine > 4) throw std::invalid_argument(v);
+      } catch (const std::exception &) {
+        throw glossa::io::DeckError("--refine needs an integer in [0, 4], got '" + v + "'");
+      }
+    }
     else if (!s.empty() && s[0] == '-') throw glossa::io::DeckError("unknown option " + s + "; see glossa --help");
     else if (a.deck.empty()) a.deck = s;
     else throw glossa::io::DeckError("unexpected argument " + s + "; see glossa --help");
@@ -113,6 +131,12 @@ int main(int argc, char **argv) {
       if (root)
         for (const auto &file : glossa::app::writeCurveTables(a.output.empty() ? "curves" : a.output))
           std::cout << "wrote " << file.string() << '\n';
+      return 0;
+    }
+    if (a.command == "mesh") {
+      if (a.deck.empty()) throw glossa::io::DeckError("glossa mesh needs a mesh file; see glossa --help");
+      const auto report = glossa::app::describeMesh(a.deck, {a.format, a.refine, a.output});
+      if (root) std::cout << (a.json ? report.dump(2) + "\n" : glossa::app::meshReportText(report));
       return 0;
     }
     if (a.command == "point") {

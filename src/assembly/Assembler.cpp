@@ -72,7 +72,21 @@ Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
       }
   }
 
-  graph_ = Teuchos::rcp(new FEGraph(ownedMap_, overlapMap_, 81));
+  // Row capacity: 3 dofs per node coupled to the row's node through some element. 27 nodes on a
+  // structured mesh, more where an unstructured mesh gathers more elements around a node.
+  std::size_t maxNeighbours = 0;
+  {
+    std::vector<std::vector<mesh::NodeId>> neighbours(mesh.numNodes());
+    for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+      const auto &hex = mesh.elements[layout_.localElements[i]];
+      for (mesh::NodeId a : hex) neighbours[a].insert(neighbours[a].end(), hex.begin(), hex.end());
+    }
+    for (auto &n : neighbours) {
+      std::sort(n.begin(), n.end());
+      maxNeighbours = std::max(maxNeighbours, static_cast<std::size_t>(std::unique(n.begin(), n.end()) - n.begin()));
+    }
+  }
+  graph_ = Teuchos::rcp(new FEGraph(ownedMap_, overlapMap_, 3 * maxNeighbours));
   graph_->beginAssembly();
   for (const auto &gids : elementGids_) {
     Teuchos::ArrayView<const GO> cols(gids.data(), 24);

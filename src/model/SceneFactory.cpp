@@ -1,14 +1,18 @@
 #include "model/SceneFactory.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "loads/BodyForce.hpp"
+#include "mesh/AnsysReader.hpp"
 #include "mesh/BoxGenerator.hpp"
 #include "mesh/CookMembraneGenerator.hpp"
 #include "mesh/HexMesh.hpp"
+#include "mesh/MeshFile.hpp"
+#include "mesh/MeshRefinement.hpp"
 #include "mesh/ThickCylinderGenerator.hpp"
 #include "model/MaterialFactory.hpp"
 
@@ -22,7 +26,19 @@ Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 
 ParameterList meshParameters() {
   ParameterList p;
-  io::declareString(p, "type", "box", "built-in generator", {"box", "cook-membrane", "thick cylinder"});
+  io::declareString(p, "type", "box", "a built-in generator, or file (doc/meshes.md)",
+                    {"box", "cook-membrane", "thick cylinder", "file"});
+  ParameterList &file = p.sublist("File", false, "a mesh read from a file (type = file)");
+  io::declareString(file, "path", "", "the mesh file, relative to the deck (ANSYS: the .node or the .elem)");
+  io::declareString(file, "format", "auto", "by extension (.msh gmsh, .inp abaqus, .node/.elem ansys), or named",
+                    {"auto", "gmsh", "abaqus", "ansys"});
+  io::declareInt(file, "refine", 0, "split every hexahedron into 8 this many times (sets carried over)",
+                 io::Range::closed(0, 4));
+  io::declareString(file, "ANSYS components", "", "ansys: APDL macro of element components (CreateMuscles.mac)");
+  ParameterList nodeLists;
+  ParameterList &list = nodeLists.sublist(io::kAnySublist);
+  io::declareString(list, "file", "", "a list of node ids of the file (one per line): a node set of this name");
+  file.set("Node lists", nodeLists, "ansys: node sets from lists of node ids, one sublist each");
   ParameterList &box = p.sublist("Box", false, "a structured box of hexahedra (type = box); face "
                                               "and node sets xmin, xmax, ymin, ymax, zmin, zmax");
   io::declareDoubleArray(box, "origin", Array<double>(3, 0.0), "m", "corner with the smallest coordinates", 3);
@@ -112,6 +128,26 @@ mesh::HexMesh buildMesh(const io::Deck &deck) {
       const auto &c = b.get<Array<int>>("cells");
       m = mesh::generateBox(vec3(b.get<Array<double>>("origin")), vec3(b.get<Array<double>>("lengths")),
                             {c[0], c[1], c[2]});
+    } else if (p.get<std::string>("type") == "file") {
+      const auto &f = p.sublist("File");
+      auto resolve = [&](const std::string &path) {
+        std::filesystem::path q(path);
+        return (q.is_relative() ? std::filesystem::path(deck.file()).parent_path() / q : q).string();
+      };
+      if (f.get<std::string>("path").empty())
+        throw io::DeckError(deck.where({"Mesh", "File", "path"}) + " is empty: name the mesh file");
+      try {
+        mesh::ImportedMesh imported = mesh::readMeshFile(resolve(f.get<std::string>("path")), f.get<std::string>("format"));
+        if (!f.get<std::string>("ANSYS components").empty())
+          mesh::readAnsysComponents(resolve(f.get<std::string>("ANSYS components")), imported);
+        const auto &lists = f.sublist("Node lists");
+        for (auto it = lists.begin(); it != lists.end(); ++it)
+          mesh::readAnsysNodeList(resolve(lists.sublist(lists.name(it)).get<std::string>("file")), lists.name(it), imported);
+        m = std::move(imported.mesh);
+      } catch (const std::runtime_error &e) {
+        throw io::DeckError(deck.where({"Mesh", "File", "path"}) + ": " + e.what());
+      }
+      if (f.get<int>("refine") > 0) m = mesh::refineUniformly(m, f.get<int>("refine"));
     } else if (p.get<std::string>("type") == "thick cylinder") {
       const auto &c = p.sublist("Thick cylinder");
       const auto &n = c.get<Array<int>>("cells");

@@ -1,0 +1,71 @@
+#include "app/MeshCommand.hpp"
+
+#include <sstream>
+
+#include "io/output/ResultWriter.hpp"
+#include "mesh/MeshFile.hpp"
+#include "mesh/MeshQuality.hpp"
+#include "mesh/MeshRefinement.hpp"
+
+namespace glossa::app {
+
+nlohmann::json describeMesh(const std::string &file, const MeshCommandOptions &options) {
+  mesh::HexMesh m = mesh::readMeshFile(file, options.format).mesh;
+  if (options.refine > 0) m = mesh::refineUniformly(m, options.refine);
+  nlohmann::json r;
+  r["file"] = file;
+  r["refine"] = options.refine;
+  r["nodes"] = m.nodes.size();
+  r["elements"] = m.numElements();
+  r["volume"] = mesh::meshVolume(m);
+  const auto [sjMin, sjMax] = mesh::scaledJacobianRange(m);
+  r["scaled_jacobian"] = {{"min", sjMin}, {"max", sjMax}};
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto &[name, elements] : m.elementSets) {
+    double v = 0.0;
+    for (const auto e : elements) v += mesh::elementVolume(m.elementCoordinates(e));
+    sets["element"][name] = {{"size", elements.size()}, {"volume", v}};
+  }
+  for (const auto &[name, faces] : m.faceSets) sets["face"][name] = {{"size", faces.size()}};
+  for (const auto &[name, nodes] : m.nodeSets) sets["node"][name] = {{"size", nodes.size()}};
+  r["sets"] = sets;
+  if (!options.output.empty()) {
+    std::vector<std::array<std::int64_t, 8>> hexes(m.elements.begin(), m.elements.end());
+    io::ResultWriter writer(options.output, "mesh", m.nodes, hexes);
+    std::vector<io::Field> cells;
+    for (const auto &[name, elements] : m.elementSets) {
+      std::vector<double> member(m.numElements(), 0.0);
+      for (const auto e : elements) member[static_cast<std::size_t>(e)] = 1.0;
+      cells.push_back({"set_" + name, 1, member});
+    }
+    std::vector<double> quality;
+    for (std::size_t e = 0; e < m.numElements(); ++e)
+      quality.push_back(mesh::scaledJacobian(m.elementCoordinates(static_cast<mesh::ElementId>(e))));
+    cells.push_back({"scaled_jacobian", 1, quality});
+    writer.writeStep(0.0, {}, cells);
+    r["written"] = (options.output / "mesh.xdmf").string();
+  }
+  return r;
+}
+
+std::string meshReportText(const nlohmann::json &r) {
+  std::ostringstream s;
+  s << r.at("file").get<std::string>();
+  if (r.at("refine").get<int>() > 0) s << " (refined " << r.at("refine") << "x)";
+  s << "\n  nodes " << r.at("nodes") << "  elements " << r.at("elements") << "  volume " << r.at("volume").get<double>()
+    << " m^3\n  scaled Jacobian " << r.at("scaled_jacobian").at("min").get<double>() << " .. "
+    << r.at("scaled_jacobian").at("max").get<double>() << "\n";
+  const auto &sets = r.at("sets");
+  for (const char *kind : {"element", "face", "node"}) {
+    if (!sets.contains(kind)) continue;
+    for (const auto &[name, info] : sets.at(kind).items()) {
+      s << "  " << kind << " set " << name << ": " << info.at("size");
+      if (info.contains("volume")) s << "  volume " << info.at("volume").get<double>();
+      s << "\n";
+    }
+  }
+  if (r.contains("written")) s << "  wrote " << r.at("written").get<std::string>() << "\n";
+  return s.str();
+}
+
+} // namespace glossa::app
