@@ -194,6 +194,14 @@ std::string knownSets(const mesh::HexMesh &m) {
     if (!m.nodeSets.count(name)) s += (s.empty() ? "" : ", ") + name;
   return s;
 }
+// The face set a load names (Loads/<load>/face set); a DeckError listing the mesh's sets if absent.
+const std::vector<mesh::ElementFace> &faceSetOf(const io::Deck &deck, const mesh::HexMesh &m, const std::string &load) {
+  const std::string set = deck.root().sublist("Loads").sublist(load).get<std::string>("face set");
+  if (!m.faceSets.count(set))
+    throw io::DeckError(deck.where({"Loads", load, "face set"}) + ": no face set '" + set +
+                        "'; the mesh has: " + knownSets(m));
+  return m.faceSets.at(set);
+}
 } // namespace
 
 void declareSceneParameters(ParameterList &schema) {
@@ -252,11 +260,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     if (type == "follower pressure") {
       FollowerPressureLoad load;
       load.name = name;
-      const std::string set = l.get<std::string>("face set");
-      if (!m.faceSets.count(set))
-        throw io::DeckError(deck.where({"Loads", name, "face set"}) + ": no face set '" + set +
-                            "'; the mesh has: " + knownSets(m));
-      load.faces = m.faceSets.at(set);
+      load.faces = faceSetOf(deck, m, name);
       const TimeFunction b = timeFunction(deck, {"Loads", name, "time function"}, endTime);
       const double pMax = l.get<double>("pressure");
       if (l.get<std::string>("profile") == "uniform") {
@@ -306,11 +310,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     }
     DeadTractionLoad load;
     load.name = name;
-    const std::string set = l.get<std::string>("face set");
-    if (!m.faceSets.count(set))
-      throw io::DeckError(deck.where({"Loads", name, "face set"}) + ": no face set '" + set +
-                          "'; the mesh has: " + knownSets(m));
-    load.faces = m.faceSets.at(set);
+    load.faces = faceSetOf(deck, m, name);
     load.traction = vec3(l.get<Array<double>>("traction"));
     load.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
     scene.tractions.push_back(std::move(load));
