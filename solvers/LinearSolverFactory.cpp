@@ -31,9 +31,21 @@ ParameterList linearSolverParameters() {
   io::declareInt(p, "maximum iterations", 2000, "Krylov iteration limit per solve", io::Range::atLeast(1));
   io::declareInt(p, "GMRES restart", 200, "Krylov vectors kept by GMRES", io::Range::atLeast(10));
   io::declareString(p, "MueLu smoother", "Chebyshev",
-                    "smoother on every level: Chebyshev (polynomial), symmetric Gauss-Seidel",
-                    {"Chebyshev", "symmetric Gauss-Seidel"});
-  io::declareInt(p, "smoother degree", 3, "Chebyshev degree, or Gauss-Seidel sweeps", io::Range::closed(1, 20));
+                    "Chebyshev (polynomial, every level); symmetric Gauss-Seidel (point, every level); "
+                    "node-block Gauss-Seidel (symmetric, on each node's 3x3 block, 6x6 on coarse levels); "
+                    "vertex-patch (Ifpack2 BLOCK RELAXATION: symmetric Gauss-Seidel on overlapping "
+                    "patches, each node with its matrix-graph neighbours, i.e. the 27 nodes of the "
+                    "elements around a vertex; on 'vertex-patch levels', Chebyshev elsewhere)",
+                    {"Chebyshev", "symmetric Gauss-Seidel", "node-block Gauss-Seidel", "vertex-patch"});
+  io::declareInt(p, "smoother degree", 3,
+                 "Chebyshev degree, or Gauss-Seidel sweeps (point and node-block); the Chebyshev levels of "
+                 "the vertex-patch smoother use it as their degree",
+                 io::Range::closed(1, 20));
+  io::declareString(p, "vertex-patch levels", "finest",
+                    "where the vertex-patch smoother runs: finest (Chebyshev on the coarse levels) or all",
+                    {"finest", "all"});
+  io::declareInt(p, "patch sweeps", 1, "symmetric Gauss-Seidel sweeps of the vertex-patch smoother",
+                 io::Range::closed(1, 10));
   io::declareInt(p, "Chebyshev eigenvalue iterations", 20,
                  "power iterations estimating the largest eigenvalue (10 breaks CG for nu >= 0.49, "
                  "see TRILINOS-NOTES)", io::Range::closed(5, 200));
@@ -42,8 +54,15 @@ ParameterList linearSolverParameters() {
                     io::Range::atLeast(2.0));
   io::declareString(p, "MueLu reuse", "RP",
                     "what MueLu keeps between Newton iterations: none (rebuild), RP (aggregates and "
-                    "transfer operators; coarse matrices recomputed), full (the whole hierarchy, stale)",
+                    "transfer operators; coarse matrices and smoothers recomputed), full (the whole "
+                    "hierarchy, stale); the vertex-patch smoother always uses none (Ifpack2 13.2's "
+                    "overlapping block relaxation returns NaN when reused)",
                     {"none", "RP", "full"});
+  io::declareString(p, "MueLu reuse scope", "Newton solve",
+                    "how long a reused hierarchy lives: Newton solve (rebuilt at the start of every "
+                    "Newton solve, i.e. every Uzawa iteration and load step) or run (kept across "
+                    "Uzawa iterations and load steps; only with MueLu reuse = RP or full)",
+                    {"Newton solve", "run"});
   io::declareInt(p, "coarse size", 2000, "MueLu stops coarsening below this many rows", io::Range::atLeast(10));
   io::declareString(p, "Ifpack2 type", "symmetric Gauss-Seidel",
                     "single-level preconditioner when preconditioner = Ifpack2",
@@ -65,14 +84,43 @@ ParameterList mueluParameters(const ParameterList &s, const LinearSolverContext 
     coarseSize = static_cast<int>(std::min<long long>(coarseSize, std::max<long long>(c.globalRows / 8, 3)));
   }
   m.set("coarse: max size", coarseSize);
-  m.set("reuse: type", s.get<std::string>("MueLu reuse"));
+  // Ifpack2 13.2's BLOCK RELAXATION with overlapping parts returns NaN after MueLu reuses it
+  // (measured: every reuse type but none, finest or all levels): the vertex patch always rebuilds.
+  const bool overlappingBlocks = s.get<std::string>("MueLu smoother") == "vertex-patch";
+  m.set("reuse: type", overlappingBlocks ? std::string("none") : s.get<std::string>("MueLu reuse"));
   const int degree = s.get<int>("smoother degree");
-  if (s.get<std::string>("MueLu smoother") == "Chebyshev") {
-    m.set("smoother: type", "CHEBYSHEV");
-    ParameterList &sp = m.sublist("smoother: params");
+  const std::string smoother = s.get<std::string>("MueLu smoother");
+  auto chebyshev = [&](ParameterList &level) {
+    level.set("smoother: type", "CHEBYSHEV");
+    ParameterList &sp = level.sublist("smoother: params");
     sp.set("chebyshev: degree", degree);
     sp.set("chebyshev: eigenvalue max iterations", s.get<int>("Chebyshev eigenvalue iterations"));
     sp.set("chebyshev: ratio eigenvalue", s.get<double>("Chebyshev eigenvalue ratio"));
+  };
+  // Ifpack2 BLOCK RELAXATION with the "linear" partitioner: MueLu sets one part per node (rows /
+  // the level's block size: 3 dofs on the finest level, 6 on coarse ones, the rows being node-
+  // ordered); overlap 1 grows each part by its matrix-graph neighbours (the vertex patch). Dense
+  // containers: the default tridiagonal one would drop most of each block.
+  auto blockRelaxation = [&](ParameterList &level, int overlap, int sweeps) {
+    level.set("smoother: type", "BLOCK RELAXATION");
+    ParameterList &sp = level.sublist("smoother: params");
+    sp.set("relaxation: type", "Symmetric Gauss-Seidel");
+    sp.set("relaxation: sweeps", sweeps);
+    sp.set("relaxation: container", "Dense");
+    sp.set("partitioner: type", "linear");
+    sp.set("partitioner: overlap", overlap);
+  };
+  if (smoother == "Chebyshev") {
+    chebyshev(m);
+  } else if (smoother == "node-block Gauss-Seidel") {
+    blockRelaxation(m, 0, degree);
+  } else if (smoother == "vertex-patch") {
+    if (s.get<std::string>("vertex-patch levels") == "all") {
+      blockRelaxation(m, 1, s.get<int>("patch sweeps"));
+    } else {
+      chebyshev(m);
+      blockRelaxation(m.sublist("level 0"), 1, s.get<int>("patch sweeps"));
+    }
   } else {
     m.set("smoother: type", "RELAXATION");
     ParameterList &sp = m.sublist("smoother: params");

@@ -63,8 +63,9 @@ private:
 } // namespace
 
 NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const ParameterList &section, double lengthScale,
-                           double linearTolerance)
-    : model_(std::move(model)), section_(section), lengthScale_(lengthScale), linearTolerance_(linearTolerance) {}
+                           double linearTolerance, bool keepLinearSolver)
+    : model_(std::move(model)), section_(section), lengthScale_(lengthScale), linearTolerance_(linearTolerance),
+      keepLinearSolver_(keepLinearSolver) {}
 
 NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
                                  const IterationCallback &onIteration) const {
@@ -75,8 +76,17 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
   auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
   auto xThyra = Thyra::createVector(RCP<assembly::Vector>(uCopy), model_->get_x_space());
   NOX::Thyra::Vector initialGuess(xThyra);
-  auto group = rcp(new NOX::Thyra::Group(initialGuess, model_, model_->create_W_op(), model_->get_W_factory(),
-                                         Teuchos::null, Teuchos::null, Teuchos::null));
+  RCP<NOX::Thyra::Group> group;
+  if (keepLinearSolver_ && !group_.is_null()) {
+    // setX invalidates F and the Jacobian but keeps the linear solver object and with it the
+    // preconditioner, which MueLu then updates according to its "reuse: type".
+    group = group_;
+    group->setX(initialGuess);
+  } else {
+    group = rcp(new NOX::Thyra::Group(initialGuess, model_, model_->create_W_op(), model_->get_W_factory(),
+                                      Teuchos::null, Teuchos::null, Teuchos::null));
+    if (keepLinearSolver_) group_ = group;
+  }
   group->computeF();
   const double normF0 = group->getNormF();
   result.residualNorms.push_back(normF0);

@@ -126,7 +126,8 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   auto model = Teuchos::rcp(new assembly::ModelEvaluator(assembler, buildLinearSolver(linearSection, context)));
   double lengthScale = 0.0;
   for (const auto &x : scene.mesh.nodes) lengthScale = std::max(lengthScale, x.norm());
-  NewtonSolver newton(model, D.sublist("Nonlinear solver"), lengthScale, linearSection.get<double>("tolerance"));
+  NewtonSolver newton(model, D.sublist("Nonlinear solver"), lengthScale, linearSection.get<double>("tolerance"),
+                      linearSection.get<std::string>("MueLu reuse scope") == "run");
   UzawaLoop uzawa(*assembler, newton, incompressibility, physicalVolumetric, mu);
 
   std::filesystem::path dir = options.outputDirectory.empty()
