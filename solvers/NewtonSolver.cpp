@@ -67,8 +67,8 @@ NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const ParameterL
     : model_(std::move(model)), section_(section), lengthScale_(lengthScale), linearTolerance_(linearTolerance),
       keepLinearSolver_(keepLinearSolver) {}
 
-NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
-                                 const IterationCallback &onIteration) const {
+NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
+                                 double updateTolerance) const {
   using namespace NOX::StatusTest;
   NewtonResult result;
 
@@ -92,7 +92,8 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
   result.residualNorms.push_back(normF0);
 
   auto normF = rcp(new NormF(residualTolerance, NormF::Unscaled));
-  auto update = rcp(new NormWRMS(section_.get<double>("update tolerance"), 1e-9 * lengthScale_));
+  auto update = rcp(new NormWRMS(updateTolerance < 0.0 ? section_.get<double>("update tolerance") : updateTolerance,
+                                 1e-9 * lengthScale_));
   auto converged = rcp(new Combo(Combo::AND));
   converged->addStatusTest(normF);
   converged->addStatusTest(update);

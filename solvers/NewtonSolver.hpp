@@ -42,7 +42,9 @@ public:
 
   // Solves from the initial guess u (owned vector), overwriting it with the solution when
   // converged. `residualTolerance` is absolute (the caller scales it by the load).
-  NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration) const;
+  // `updateTolerance` < 0: the section's relative update tolerance.
+  NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
+                     double updateTolerance = -1.0) const;
 
   double relativeResidualTolerance() const { return section_.get<double>("residual tolerance"); }
 

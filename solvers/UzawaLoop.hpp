@@ -65,6 +65,8 @@ private:
   AugmentedLagrangianRule rule_;
   double tolerance_;
   int maxIterations_;
+  bool inexact_;              // Uzawa acceleration = inexact inner solves
+  double innerTolerance_;     // their relative residual (and update) tolerance
 };
 
 } // namespace glossa::solvers
