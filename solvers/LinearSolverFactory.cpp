@@ -3,10 +3,12 @@
 #include <algorithm>
 
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
+#include <Stratimikos_FROSch_def.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
 #include <Thyra_Ifpack2PreconditionerFactory.hpp>
 
+#include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 
 namespace glossa::solvers {
@@ -22,8 +24,15 @@ ParameterList linearSolverParameters() {
   io::declareString(p, "Krylov method", "auto",
                     "auto: CG while the tangent is symmetric, GMRES otherwise", {"auto", "cg", "gmres"});
   io::declareString(p, "preconditioner", "MueLu",
-                    "MueLu: smoothed-aggregation AMG with rigid-body modes; Ifpack2: the "
-                    "'Ifpack2 type' alone; none", {"MueLu", "Ifpack2", "none"});
+                    "MueLu: smoothed-aggregation AMG with rigid-body modes; FROSch: two-level "
+                    "overlapping Schwarz (ShyLU_DDFROSch, one subdomain per rank, KLU2 subdomain and "
+                    "coarse solves); Ifpack2: the 'Ifpack2 type' alone; none",
+                    {"MueLu", "FROSch", "Ifpack2", "none"});
+  io::declareString(p, "FROSch coarse space", "GDSW",
+                    "GDSW or RGDSW (reduced dimension) energy-minimising coarse space, translations "
+                    "and rotations (from the nodal coordinates)", {"GDSW", "RGDSW"});
+  io::declareInt(p, "FROSch overlap", 1, "layers of matrix-graph overlap added to each rank's subdomain",
+                 io::Range::closed(0, 10));
   io::declareDouble(p, "tolerance", 1e-6, "",
                     "relative residual reduction of each linear solve (Newton still converges to "
                     "its own tolerance; 1e-6 is also step-44's choice)",
@@ -56,7 +65,7 @@ ParameterList linearSolverParameters() {
                     "what MueLu keeps between Newton iterations: none (rebuild), RP (aggregates and "
                     "transfer operators; coarse matrices and smoothers recomputed), full (the whole "
                     "hierarchy, stale); the vertex-patch smoother always uses none (Ifpack2 13.2's "
-                    "overlapping block relaxation returns NaN when reused)",
+                    "overlapping block relaxation returns NaN when reused; it runs on one rank only)",
                     {"none", "RP", "full"});
   io::declareString(p, "MueLu reuse scope", "Newton solve",
                     "how long a reused hierarchy lives: Newton solve (rebuilt at the start of every "
@@ -87,6 +96,9 @@ ParameterList mueluParameters(const ParameterList &s, const LinearSolverContext 
   // Ifpack2 13.2's BLOCK RELAXATION with overlapping parts returns NaN after MueLu reuses it
   // (measured: every reuse type but none, finest or all levels): the vertex patch always rebuilds.
   const bool overlappingBlocks = s.get<std::string>("MueLu smoother") == "vertex-patch";
+  if (overlappingBlocks && c.ranks > 1)
+    throw io::DeckError("Linear solver/MueLu smoother = vertex-patch runs on one rank only: on 2 ranks its "
+                        "patches are cut at the partition boundary and CG broke down (doc/incompressibility.md)");
   m.set("reuse: type", overlappingBlocks ? std::string("none") : s.get<std::string>("MueLu reuse"));
   const int degree = s.get<int>("smoother degree");
   const std::string smoother = s.get<std::string>("MueLu smoother");
@@ -140,6 +152,36 @@ ParameterList mueluParameters(const ParameterList &s, const LinearSolverContext 
   return m;
 }
 
+ParameterList froschParameters(const ParameterList &s, const LinearSolverContext &c) {
+  // Parameter names from FROSch's TwoLevelPreconditioner and GDSW/RGDSW coarse operators (13.2).
+  ParameterList f;
+  f.set("FROSch Preconditioner Type", "TwoLevelPreconditioner");
+  f.set("Dimension", 3);
+  f.set("DofsPerNode", 3);
+  f.set("DofOrdering", "NodeWise"); // dof = 3 node + component (DofLayout)
+  f.set("Overlap", s.get<int>("FROSch overlap"));
+  f.set("OverlappingOperator Type", "AlgebraicOverlappingOperator");
+  ParameterList &overlapping = f.sublist("AlgebraicOverlappingOperator");
+  overlapping.sublist("Solver").set("SolverType", "Amesos2").set("Solver", "Klu");
+  overlapping.set("Verbosity", "None");
+  // Additive (Full) rather than the default restricted Schwarz: RAS is not symmetric and CG broke
+  // down on it on 2 ranks (non-positive p^H A p).
+  overlapping.set("Combine Values in Overlap", "Full");
+  const std::string coarse = s.get<std::string>("FROSch coarse space") == "GDSW" ? "GDSWCoarseOperator"
+                                                                                  : "RGDSWCoarseOperator";
+  f.set("CoarseOperator Type", coarse);
+  ParameterList &co = f.sublist(coarse);
+  co.sublist("Blocks").sublist("1").set("Use For Coarse Space", true).set("Rotations", true).set("Verbosity", "None");
+  co.sublist("ExtensionSolver").set("SolverType", "Amesos2").set("Solver", "Klu");
+  // The coarse problem on one rank: KLU2's multi-process path is wrong here (TRILINOS-NOTES).
+  co.sublist("Distribution").set("Type", "linear").set("NumProcs", 1);
+  co.sublist("CoarseSolver").set("SolverType", "Amesos2").set("Solver", "Klu");
+  co.set("Verbosity", "None");
+  f.set("Verbosity", "None");
+  if (!c.coordinates.is_null()) f.set("Coordinates List", c.coordinates);
+  return f;
+}
+
 ParameterList ifpack2Parameters(const ParameterList &s) {
   ParameterList p;
   const std::string type = s.get<std::string>("Ifpack2 type");
@@ -185,6 +227,9 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const ParameterList &s, const 
   if (prec == "MueLu") {
     p->set("Preconditioner Type", "MueLu");
     p->sublist("Preconditioner Types").set("MueLu", mueluParameters(s, c));
+  } else if (prec == "FROSch") {
+    p->set("Preconditioner Type", "FROSch");
+    p->sublist("Preconditioner Types").set("FROSch", froschParameters(s, c));
   } else if (prec == "Ifpack2") {
     p->set("Preconditioner Type", "Ifpack2");
     p->sublist("Preconditioner Types").set("Ifpack2", ifpack2Parameters(s));
@@ -198,6 +243,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
 buildLinearSolver(const ParameterList &section, const LinearSolverContext &context) {
   Stratimikos::DefaultLinearSolverBuilder builder;
   Stratimikos::enableMueLu<assembly::LO, assembly::GO, assembly::Node>(builder);
+  Stratimikos::enableFROSch<assembly::LO, assembly::GO, assembly::Node>(builder);
   using Base = Thyra::PreconditionerFactoryBase<double>;
   using Impl = Thyra::Ifpack2PreconditionerFactory<assembly::CrsMatrix>;
   builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, Impl>(), "Ifpack2");

@@ -58,6 +58,9 @@ INSTANTIATE_TEST_SUITE_P(
                       std::vector<std::string>{"Linear solver/MueLu smoother=vertex-patch"},
                       std::vector<std::string>{"Linear solver/MueLu smoother=vertex-patch",
                                                "Linear solver/vertex-patch levels=all"},
+                      std::vector<std::string>{"Linear solver/preconditioner=FROSch"},
+                      std::vector<std::string>{"Linear solver/preconditioner=FROSch",
+                                               "Linear solver/FROSch coarse space=RGDSW"},
                       std::vector<std::string>{"Linear solver/MueLu reuse=none"},
                       std::vector<std::string>{"Linear solver/MueLu reuse=full"},
                       std::vector<std::string>{"Linear solver/MueLu reuse scope=run"},
@@ -88,6 +91,20 @@ TEST(LinearStrategyLists, EachSmootherIsWhatTheDeckSays) {
         mueluList({"Linear solver/MueLu smoother=vertex-patch", "Linear solver/vertex-patch levels=all"});
     EXPECT_EQ(m.get<std::string>("smoother: type"), "BLOCK RELAXATION");
     EXPECT_FALSE(m.isSublist("level 0"));
+  }
+  {
+    const auto schema = app::deckSchema();
+    auto deck = io::Deck::fromFile(test::inputPath("verification/step44_block.xml"));
+    deck.applyOverride("Linear solver/preconditioner=FROSch", schema);
+    deck.applyOverride("Linear solver/FROSch coarse space=RGDSW", schema);
+    deck.validate(schema);
+    const auto p = solvers::stratimikosParameters(deck.root().sublist("Linear solver"), {});
+    EXPECT_EQ(p->get<std::string>("Preconditioner Type"), "FROSch");
+    const auto &f = p->sublist("Preconditioner Types").sublist("FROSch");
+    EXPECT_EQ(f.get<std::string>("CoarseOperator Type"), "RGDSWCoarseOperator");
+    EXPECT_EQ(f.get<int>("DofsPerNode"), 3);
+    EXPECT_EQ(f.sublist("AlgebraicOverlappingOperator").get<std::string>("Combine Values in Overlap"),
+              "Full");
   }
   {
     const auto m = mueluList({"Linear solver/MueLu smoother=Chebyshev", "Linear solver/smoother degree=6",
