@@ -40,23 +40,42 @@ STRATEGIES = {
     "sgs2": ["Linear solver/MueLu smoother=symmetric Gauss-Seidel", "Linear solver/smoother degree=2"],
     "nbgs2": ["Linear solver/MueLu smoother=node-block Gauss-Seidel", "Linear solver/smoother degree=2"],
     "patch": ["Linear solver/MueLu smoother=vertex-patch"],
+    "patch-inexact": ["Linear solver/MueLu smoother=vertex-patch", "Incompressibility/Uzawa acceleration=inexact"],
+    "frosch": ["Linear solver/preconditioner=FROSch", "Incompressibility/Uzawa acceleration=inexact"],
     "cheb3-run": ["Linear solver/MueLu smoother=Chebyshev", "Linear solver/MueLu reuse scope=run"],
     # The plain nested Uzawa loop against the inexact first solve (the default since issue 8).
     "cheb3-plain": ["Linear solver/MueLu smoother=Chebyshev", "Incompressibility/Uzawa acceleration=none"],
     "cheb3-inexact": ["Linear solver/MueLu smoother=Chebyshev", "Incompressibility/Uzawa acceleration=inexact"],
+    "cheb6r100-inexact": ["Linear solver/MueLu smoother=Chebyshev", "Linear solver/smoother degree=6",
+                          "Linear solver/Chebyshev eigenvalue ratio=100", "Incompressibility/Uzawa acceleration=inexact"],
+    "sgs2-inexact": ["Linear solver/MueLu smoother=symmetric Gauss-Seidel", "Linear solver/smoother degree=2",
+                     "Incompressibility/Uzawa acceleration=inexact"],
 }
-# deal.II step-44 (tests/regression/step44_dealii_reference.csv), nu = 0.4999, t = 1, uy top centre [m].
-DEALII = {4: -0.789713e-3, 8: -0.777613e-3, 16: -0.775074e-3}
-FIELDS = ["scene", "n", "nu", "strategy", "converged", "dofs", "newton", "krylov", "krylov_max_per_solve",
+
+
+def dealii_reference():
+    """deal.II step-44 (nu = 0.4999), uy of the top centre at t = 1 [m] by elements per side."""
+    ref = {}
+    with open(os.path.join(ROOT, "tests", "regression", "step44_dealii_reference.csv")) as f:
+        for r in csv.DictReader(f):
+            if abs(float(r["time"]) - 1.0) < 1e-12:
+                ref[int(r["elements_per_side"])] = float(r["uy_top_centre_m"])
+    return ref
+
+
+DEALII = dealii_reference()
+FIELDS = ["scene", "n", "nu", "strategy", "ranks", "converged", "dofs", "newton", "krylov", "krylov_max_per_solve",
           "uzawa", "max_dilatation_error", "max_volume_change", "answer_mm", "rel_diff_first_strategy",
           "rel_diff_dealii", "prec_setup_s", "krylov_s", "wall_s", "peak_mb", "note"]
 
 
-def run(glossa, deck, overrides, timeout):
+def run(glossa, deck, overrides, timeout, ranks):
     out = tempfile.mkdtemp(prefix="glossa-incomp-")
     cmd = [glossa, "run", deck, "--output", out, "--quiet"]
     for o in overrides:
         cmd += ["--set", o]
+    if ranks > 1:
+        cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
     t0 = time.time()
     note = ""
     try:
@@ -71,7 +90,7 @@ def run(glossa, deck, overrides, timeout):
     return s, note or s.get("failure", ""), time.time() - t0
 
 
-def row_of(scene, n, nu, strategy, s, note, wall, point):
+def row_of(scene, n, nu, strategy, ranks, s, note, wall, point):
     steps = s.get("steps", [])
     krylov_max = 0
     for st in steps:
@@ -79,7 +98,7 @@ def row_of(scene, n, nu, strategy, s, note, wall, point):
             krylov_max = max([krylov_max] + solve.get("krylov", []))
     disp = s.get("final_displacement", {}).get(point)
     return {
-        "scene": scene, "n": n, "nu": nu, "strategy": strategy,
+        "scene": scene, "n": n, "nu": nu, "strategy": strategy, "ranks": ranks,
         "converged": s.get("converged", False), "dofs": s.get("dofs", ""),
         "newton": sum(x["newton_iterations"] for x in steps),
         "krylov": sum(x["linear_iterations"] for x in steps),
@@ -106,16 +125,17 @@ def plot(scene, rows):
         print("matplotlib missing (use /usr/bin/python3): no plot")
         return
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    keys = sorted({(r["strategy"], r["n"]) for r in rows}, key=lambda k: (list(STRATEGIES).index(k[0]), k[1]))
-    for strategy, n in keys:
+    keys = sorted({(r["strategy"], r["n"], str(r.get("ranks") or "1")) for r in rows},
+                  key=lambda k: (list(STRATEGIES).index(k[0]), k[1], k[2]))
+    for strategy, n, ranks in keys:
         pts = [(float(r["nu"]), r["krylov_max_per_solve"]) for r in rows
-               if r["strategy"] == strategy and r["n"] == n and r["converged"]]
+               if r["strategy"] == strategy and r["n"] == n and str(r.get("ranks") or "1") == ranks and r["converged"]]
         if not pts:
             continue
         pts.sort()
         # x: -log10(0.5 - nu), nu = 0.5 drawn one decade past 0.49999.
         xs = [6.0 if nu >= 0.5 else -math.log10(0.5 - nu) for nu, _ in pts]
-        ax.plot(xs, [k for _, k in pts], marker="o", label=f"{strategy}, n={n}")
+        ax.plot(xs, [k for _, k in pts], marker="o", label=f"{strategy}, n={n}" + (f", {ranks} ranks" if ranks != "1" else ""))
     ax.set_xticks([-math.log10(0.2), 1.0 + math.log10(1), 2, 3, 4, 5, 6])
     ax.set_xticklabels(["0.3", "0.49", "0.499", "0.4999", "0.49999", "", "0.5"])
     ax.set_xlabel("Poisson's ratio")
@@ -129,6 +149,44 @@ def plot(scene, rows):
     plt.close(fig)
 
 
+def tables(scene):
+    """Markdown tables of the scene's CSV: one per figure, strategies x nu, cells 'n=8 / n=16 ...'."""
+    path = os.path.join(RESULTS, f"incompressibility_{scene}.csv")
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    nus = sorted({r["nu"] for r in rows}, key=float)
+    sizes = sorted({int(r["n"]) for r in rows})
+    keys = []
+    for r in rows:
+        k = (r["strategy"], r.get("ranks") or "1")
+        if k not in keys:
+            keys.append(k)
+    out = []
+    for field, title in [("krylov_max_per_solve", "max Krylov iterations per linear solve"),
+                         ("krylov", "total Krylov iterations"), ("newton", "total Newton iterations"),
+                         ("uzawa", "Uzawa solves"), ("wall_s", "wall time [s]")]:
+        out.append(f"\n{scene}: {title} (n = {' / '.join(map(str, sizes))}; '-' not run, 'x' failed)\n")
+        out.append("| strategy | ranks | " + " | ".join(nus) + " |")
+        out.append("|---|---|" + "---|" * len(nus))
+        for strategy, ranks in keys:
+            cells = []
+            for nu in nus:
+                vals = []
+                for n in sizes:
+                    m = [r for r in rows if r["strategy"] == strategy and (r.get("ranks") or "1") == ranks
+                         and r["nu"] == nu and int(r["n"]) == n]
+                    if not m:
+                        vals.append("-")
+                    elif m[-1]["converged"] != "True":
+                        vals.append("x")
+                    else:
+                        v = m[-1][field]
+                        vals.append(f"{float(v):.3g}" if field == "wall_s" else v)
+                cells.append(" / ".join(vals))
+            out.append(f"| {strategy} | {ranks} | " + " | ".join(cells) + " |")
+    return "\n".join(out)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
@@ -137,10 +195,16 @@ def main():
     ap.add_argument("--strategies", default=",".join(STRATEGIES))
     ap.add_argument("--scenes", default="block,cook")
     ap.add_argument("--timeout", type=float, default=900.0)
+    ap.add_argument("--ranks", type=int, default=1)
     ap.add_argument("--append", action="store_true", help="add to the existing CSVs")
     ap.add_argument("--plot-only", action="store_true")
+    ap.add_argument("--tables", action="store_true", help="print markdown tables of the CSVs and stop")
     a = ap.parse_args()
     os.makedirs(RESULTS, exist_ok=True)
+    if a.tables:
+        for scene in a.scenes.split(","):
+            print(tables(scene))
+        return
     for scene in a.scenes.split(","):
         deck, point, mesh = SCENES[scene]
         path = os.path.join(RESULTS, f"incompressibility_{scene}.csv")
@@ -151,6 +215,7 @@ def main():
                     r["n"] = int(r["n"])
                     r["krylov_max_per_solve"] = int(r["krylov_max_per_solve"])
                     r["converged"] = r["converged"] == "True"
+                    r.setdefault("ranks", "1")
                     rows.append(r)
         if not a.plot_only:
             if not a.append:
@@ -162,8 +227,8 @@ def main():
                     for strategy in a.strategies.split(","):
                         o = mesh(n) + [f"Material/Poisson's ratio={nu}", "Incompressibility/method=augmented Lagrangian",
                                        "Output/fields=false"] + STRATEGIES[strategy]
-                        s, note, wall = run(a.glossa, deck, o, a.timeout)
-                        r = row_of(scene, n, nu, strategy, s, note, wall, point)
+                        s, note, wall = run(a.glossa, deck, o, a.timeout, a.ranks)
+                        r = row_of(scene, n, nu, strategy, a.ranks, s, note, wall, point)
                         ans = r["answer_mm"]
                         if first is None and not math.isnan(ans):
                             first = ans
