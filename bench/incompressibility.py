@@ -135,9 +135,13 @@ def plot(scene, rows):
         pts.sort()
         # x: -log10(0.5 - nu), nu = 0.5 drawn one decade past 0.49999.
         xs = [6.0 if nu >= 0.5 else -math.log10(0.5 - nu) for nu, _ in pts]
-        ax.plot(xs, [k for _, k in pts], marker="o", label=f"{strategy}, n={n}" + (f", {ranks} ranks" if ranks != "1" else ""))
-    ax.set_xticks([-math.log10(0.2), 1.0 + math.log10(1), 2, 3, 4, 5, 6])
-    ax.set_xticklabels(["0.3", "0.49", "0.499", "0.4999", "0.49999", "", "0.5"])
+        # One colour per strategy (and rank count), one line style per n.
+        colour = plt.cm.tab20(sorted({(k[0], k[2]) for k in keys}).index((strategy, ranks)) % 20)
+        style = {8: "-", 16: "--", 32: ":"}.get(n, "-.")
+        ax.plot(xs, [k for _, k in pts], marker="o", color=colour, linestyle=style,
+                label=f"{strategy}, n={n}" + (f", {ranks} ranks" if ranks != "1" else ""))
+    ax.set_xticks([-math.log10(0.2), 2, 3, 4, 5, 6])
+    ax.set_xticklabels(["0.3", "0.49", "0.499", "0.4999", "0.49999", "0.5"])
     ax.set_xlabel("Poisson's ratio")
     ax.set_ylabel("max Krylov iterations per linear solve")
     ax.set_yscale("log")
