@@ -3,10 +3,12 @@
 #include <algorithm>
 
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
+#include <Stratimikos_FROSch_def.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
 #include <Thyra_Ifpack2PreconditionerFactory.hpp>
 
+#include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 
 namespace glossa::solvers {
@@ -22,8 +24,15 @@ ParameterList linearSolverParameters() {
   io::declareString(p, "Krylov method", "auto",
                     "auto: CG while the tangent is symmetric, GMRES otherwise", {"auto", "cg", "gmres"});
   io::declareString(p, "preconditioner", "MueLu",
-                    "MueLu: smoothed-aggregation AMG with rigid-body modes; Ifpack2: the "
-                    "'Ifpack2 type' alone; none", {"MueLu", "Ifpack2", "none"});
+                    "MueLu: smoothed-aggregation AMG with rigid-body modes; FROSch: two-level "
+                    "overlapping Schwarz (ShyLU_DDFROSch, one subdomain per rank, KLU2 subdomain and "
+                    "coarse solves); Ifpack2: the 'Ifpack2 type' alone; none",
+                    {"MueLu", "FROSch", "Ifpack2", "none"});
+  io::declareString(p, "FROSch coarse space", "GDSW",
+                    "GDSW or RGDSW (reduced dimension) energy-minimising coarse space, translations "
+                    "and rotations (from the nodal coordinates)", {"GDSW", "RGDSW"});
+  io::declareInt(p, "FROSch overlap", 1, "layers of matrix-graph overlap added to each rank's subdomain",
+                 io::Range::closed(0, 10));
   io::declareDouble(p, "tolerance", 1e-6, "",
                     "relative residual reduction of each linear solve (Newton still converges to "
                     "its own tolerance; 1e-6 is also step-44's choice)",
@@ -31,19 +40,39 @@ ParameterList linearSolverParameters() {
   io::declareInt(p, "maximum iterations", 2000, "Krylov iteration limit per solve", io::Range::atLeast(1));
   io::declareInt(p, "GMRES restart", 200, "Krylov vectors kept by GMRES", io::Range::atLeast(10));
   io::declareString(p, "MueLu smoother", "Chebyshev",
-                    "smoother on every level: Chebyshev (polynomial), symmetric Gauss-Seidel",
-                    {"Chebyshev", "symmetric Gauss-Seidel"});
-  io::declareInt(p, "smoother degree", 3, "Chebyshev degree, or Gauss-Seidel sweeps", io::Range::closed(1, 20));
+                    "Chebyshev (polynomial, every level); symmetric Gauss-Seidel (point, every level); "
+                    "node-block Gauss-Seidel (symmetric, on each node's 3x3 block, 6x6 on coarse levels); "
+                    "vertex-patch (Ifpack2 BLOCK RELAXATION: symmetric Gauss-Seidel on overlapping "
+                    "patches, each node with its matrix-graph neighbours, i.e. the 27 nodes of the "
+                    "elements around a vertex; on 'vertex-patch levels', Chebyshev elsewhere)",
+                    {"Chebyshev", "symmetric Gauss-Seidel", "node-block Gauss-Seidel", "vertex-patch"});
+  io::declareInt(p, "smoother degree", 6,
+                 "Chebyshev degree, or Gauss-Seidel sweeps (point and node-block: 2 is the measured choice, "
+                 "set it when choosing them); the Chebyshev levels of the vertex-patch smoother use it as "
+                 "their degree (6 with eigenvalue ratio 100: the default, doc/incompressibility.md)",
+                 io::Range::closed(1, 20));
+  io::declareString(p, "vertex-patch levels", "finest",
+                    "where the vertex-patch smoother runs: finest (Chebyshev on the coarse levels) or all",
+                    {"finest", "all"});
+  io::declareInt(p, "patch sweeps", 1, "symmetric Gauss-Seidel sweeps of the vertex-patch smoother",
+                 io::Range::closed(1, 10));
   io::declareInt(p, "Chebyshev eigenvalue iterations", 20,
                  "power iterations estimating the largest eigenvalue (10 breaks CG for nu >= 0.49, "
                  "see TRILINOS-NOTES)", io::Range::closed(5, 200));
-  io::declareDouble(p, "Chebyshev eigenvalue ratio", 20.0, "",
+  io::declareDouble(p, "Chebyshev eigenvalue ratio", 100.0, "",
                     "lambda_max / lambda_min of the interval the Chebyshev smoother damps",
                     io::Range::atLeast(2.0));
   io::declareString(p, "MueLu reuse", "RP",
                     "what MueLu keeps between Newton iterations: none (rebuild), RP (aggregates and "
-                    "transfer operators; coarse matrices recomputed), full (the whole hierarchy, stale)",
+                    "transfer operators; coarse matrices and smoothers recomputed), full (the whole "
+                    "hierarchy, stale); the vertex-patch smoother always uses none (Ifpack2 13.2's "
+                    "overlapping block relaxation returns NaN when reused; it runs on one rank only)",
                     {"none", "RP", "full"});
+  io::declareString(p, "MueLu reuse scope", "Newton solve",
+                    "how long a reused hierarchy lives: Newton solve (rebuilt at the start of every "
+                    "Newton solve, i.e. every Uzawa iteration and load step) or run (kept across "
+                    "Uzawa iterations and load steps; only with MueLu reuse = RP or full)",
+                    {"Newton solve", "run"});
   io::declareInt(p, "coarse size", 2000, "MueLu stops coarsening below this many rows", io::Range::atLeast(10));
   io::declareString(p, "Ifpack2 type", "symmetric Gauss-Seidel",
                     "single-level preconditioner when preconditioner = Ifpack2",
@@ -65,14 +94,46 @@ ParameterList mueluParameters(const ParameterList &s, const LinearSolverContext 
     coarseSize = static_cast<int>(std::min<long long>(coarseSize, std::max<long long>(c.globalRows / 8, 3)));
   }
   m.set("coarse: max size", coarseSize);
-  m.set("reuse: type", s.get<std::string>("MueLu reuse"));
+  // Ifpack2 13.2's BLOCK RELAXATION with overlapping parts returns NaN after MueLu reuses it
+  // (measured: every reuse type but none, finest or all levels): the vertex patch always rebuilds.
+  const bool overlappingBlocks = s.get<std::string>("MueLu smoother") == "vertex-patch";
+  if (overlappingBlocks && c.ranks > 1)
+    throw io::DeckError("Linear solver/MueLu smoother = vertex-patch runs on one rank only: on 2 ranks its "
+                        "patches are cut at the partition boundary and CG broke down (doc/incompressibility.md)");
+  m.set("reuse: type", overlappingBlocks ? std::string("none") : s.get<std::string>("MueLu reuse"));
   const int degree = s.get<int>("smoother degree");
-  if (s.get<std::string>("MueLu smoother") == "Chebyshev") {
-    m.set("smoother: type", "CHEBYSHEV");
-    ParameterList &sp = m.sublist("smoother: params");
+  const std::string smoother = s.get<std::string>("MueLu smoother");
+  auto chebyshev = [&](ParameterList &level) {
+    level.set("smoother: type", "CHEBYSHEV");
+    ParameterList &sp = level.sublist("smoother: params");
     sp.set("chebyshev: degree", degree);
     sp.set("chebyshev: eigenvalue max iterations", s.get<int>("Chebyshev eigenvalue iterations"));
     sp.set("chebyshev: ratio eigenvalue", s.get<double>("Chebyshev eigenvalue ratio"));
+  };
+  // Ifpack2 BLOCK RELAXATION with the "linear" partitioner: MueLu sets one part per node (rows /
+  // the level's block size: 3 dofs on the finest level, 6 on coarse ones, the rows being node-
+  // ordered); overlap 1 grows each part by its matrix-graph neighbours (the vertex patch). Dense
+  // containers: the default tridiagonal one would drop most of each block.
+  auto blockRelaxation = [&](ParameterList &level, int overlap, int sweeps) {
+    level.set("smoother: type", "BLOCK RELAXATION");
+    ParameterList &sp = level.sublist("smoother: params");
+    sp.set("relaxation: type", "Symmetric Gauss-Seidel");
+    sp.set("relaxation: sweeps", sweeps);
+    sp.set("relaxation: container", "Dense");
+    sp.set("partitioner: type", "linear");
+    sp.set("partitioner: overlap", overlap);
+  };
+  if (smoother == "Chebyshev") {
+    chebyshev(m);
+  } else if (smoother == "node-block Gauss-Seidel") {
+    blockRelaxation(m, 0, degree);
+  } else if (smoother == "vertex-patch") {
+    if (s.get<std::string>("vertex-patch levels") == "all") {
+      blockRelaxation(m, 1, s.get<int>("patch sweeps"));
+    } else {
+      chebyshev(m);
+      blockRelaxation(m.sublist("level 0"), 1, s.get<int>("patch sweeps"));
+    }
   } else {
     m.set("smoother: type", "RELAXATION");
     ParameterList &sp = m.sublist("smoother: params");
@@ -90,6 +151,36 @@ ParameterList mueluParameters(const ParameterList &s, const LinearSolverContext 
   if (!c.coordinates.is_null()) m.set("Coordinates", c.coordinates);
   if (!c.rigidBodyModes.is_null()) m.set("Nullspace", c.rigidBodyModes);
   return m;
+}
+
+ParameterList froschParameters(const ParameterList &s, const LinearSolverContext &c) {
+  // Parameter names from FROSch's TwoLevelPreconditioner and GDSW/RGDSW coarse operators (13.2).
+  ParameterList f;
+  f.set("FROSch Preconditioner Type", "TwoLevelPreconditioner");
+  f.set("Dimension", 3);
+  f.set("DofsPerNode", 3);
+  f.set("DofOrdering", "NodeWise"); // dof = 3 node + component (DofLayout)
+  f.set("Overlap", s.get<int>("FROSch overlap"));
+  f.set("OverlappingOperator Type", "AlgebraicOverlappingOperator");
+  ParameterList &overlapping = f.sublist("AlgebraicOverlappingOperator");
+  overlapping.sublist("Solver").set("SolverType", "Amesos2").set("Solver", "Klu");
+  overlapping.set("Verbosity", "None");
+  // Additive (Full) rather than the default restricted Schwarz: RAS is not symmetric and CG broke
+  // down on it on 2 ranks (non-positive p^H A p).
+  overlapping.set("Combine Values in Overlap", "Full");
+  const std::string coarse = s.get<std::string>("FROSch coarse space") == "GDSW" ? "GDSWCoarseOperator"
+                                                                                  : "RGDSWCoarseOperator";
+  f.set("CoarseOperator Type", coarse);
+  ParameterList &co = f.sublist(coarse);
+  co.sublist("Blocks").sublist("1").set("Use For Coarse Space", true).set("Rotations", true).set("Verbosity", "None");
+  co.sublist("ExtensionSolver").set("SolverType", "Amesos2").set("Solver", "Klu");
+  // The coarse problem on one rank: KLU2's multi-process path is wrong here (TRILINOS-NOTES).
+  co.sublist("Distribution").set("Type", "linear").set("NumProcs", 1);
+  co.sublist("CoarseSolver").set("SolverType", "Amesos2").set("Solver", "Klu");
+  co.set("Verbosity", "None");
+  f.set("Verbosity", "None");
+  if (!c.coordinates.is_null()) f.set("Coordinates List", c.coordinates);
+  return f;
 }
 
 ParameterList ifpack2Parameters(const ParameterList &s) {
@@ -137,6 +228,9 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const ParameterList &s, const 
   if (prec == "MueLu") {
     p->set("Preconditioner Type", "MueLu");
     p->sublist("Preconditioner Types").set("MueLu", mueluParameters(s, c));
+  } else if (prec == "FROSch") {
+    p->set("Preconditioner Type", "FROSch");
+    p->sublist("Preconditioner Types").set("FROSch", froschParameters(s, c));
   } else if (prec == "Ifpack2") {
     p->set("Preconditioner Type", "Ifpack2");
     p->sublist("Preconditioner Types").set("Ifpack2", ifpack2Parameters(s));
@@ -150,6 +244,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
 buildLinearSolver(const ParameterList &section, const LinearSolverContext &context) {
   Stratimikos::DefaultLinearSolverBuilder builder;
   Stratimikos::enableMueLu<assembly::LO, assembly::GO, assembly::Node>(builder);
+  Stratimikos::enableFROSch<assembly::LO, assembly::GO, assembly::Node>(builder);
   using Base = Thyra::PreconditionerFactoryBase<double>;
   using Impl = Thyra::Ifpack2PreconditionerFactory<assembly::CrsMatrix>;
   builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, Impl>(), "Ifpack2");

@@ -1,9 +1,9 @@
 #pragma once
 // The linear solver of every Newton step, chosen in the deck's "Linear solver" section and built
 // through Stratimikos: Belos CG (symmetric tangent) or GMRES, preconditioned by MueLu smoothed
-// aggregation (rigid-body modes and coordinates supplied), Ifpack2 alone, or none; or a direct
-// solve with Amesos2 for comparison. This unit holds the expensive template instantiations
-// (Stratimikos::enableMueLu, Ifpack2 registration): edit it rarely.
+// aggregation (rigid-body modes and coordinates supplied), FROSch two-level Schwarz, Ifpack2 alone,
+// or none; or a direct solve with Amesos2 for comparison. This unit holds the expensive template
+// instantiations (Stratimikos::enableMueLu and enableFROSch, Ifpack2 registration): edit it rarely.
 
 #include <Teuchos_ParameterList.hpp>
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>

@@ -92,11 +92,12 @@ private:
 } // namespace
 
 NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const ParameterList &section, double lengthScale,
-                           double linearTolerance)
-    : model_(std::move(model)), section_(section), lengthScale_(lengthScale), linearTolerance_(linearTolerance) {}
+                           double linearTolerance, bool keepLinearSolver)
+    : model_(std::move(model)), section_(section), lengthScale_(lengthScale), linearTolerance_(linearTolerance),
+      keepLinearSolver_(keepLinearSolver) {}
 
-NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
-                                 const IterationCallback &onIteration) const {
+NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
+                                 double updateTolerance) const {
   using namespace NOX::StatusTest;
   NewtonResult result;
 
@@ -104,14 +105,24 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
   auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
   auto xThyra = Thyra::createVector(RCP<assembly::Vector>(uCopy), model_->get_x_space());
   NOX::Thyra::Vector initialGuess(xThyra);
-  auto group = rcp(new NOX::Thyra::Group(initialGuess, model_, model_->create_W_op(), model_->get_W_factory(),
-                                         Teuchos::null, Teuchos::null, Teuchos::null));
+  RCP<NOX::Thyra::Group> group;
+  if (keepLinearSolver_ && !group_.is_null()) {
+    // setX invalidates F and the Jacobian but keeps the linear solver object and with it the
+    // preconditioner, which MueLu then updates according to its "reuse: type".
+    group = group_;
+    group->setX(initialGuess);
+  } else {
+    group = rcp(new NOX::Thyra::Group(initialGuess, model_, model_->create_W_op(), model_->get_W_factory(),
+                                      Teuchos::null, Teuchos::null, Teuchos::null));
+    if (keepLinearSolver_) group_ = group;
+  }
   group->computeF();
   const double normF0 = group->getNormF();
   result.residualNorms.push_back(normF0);
 
   auto normF = rcp(new NormFAboveRoundOff(residualTolerance, *model_));
-  auto update = rcp(new NormWRMS(section_.get<double>("update tolerance"), 1e-9 * lengthScale_));
+  auto update = rcp(new NormWRMS(updateTolerance < 0.0 ? section_.get<double>("update tolerance") : updateTolerance,
+                                 1e-9 * lengthScale_));
   auto converged = rcp(new Combo(Combo::AND));
   converged->addStatusTest(normF);
   converged->addStatusTest(update);

@@ -11,6 +11,10 @@
 
 #include "assembly/ModelEvaluator.hpp"
 
+namespace NOX::Thyra {
+class Group;
+}
+
 namespace glossa::solvers {
 
 struct NewtonResult {
@@ -30,13 +34,17 @@ public:
   // `onIteration(k, ||f||, krylov iterations)` is called on every rank after each iteration.
   using IterationCallback = std::function<void(int, double, int)>;
 
-  // `linearTolerance`: relative residual reduction asked of each Krylov solve.
+  // `linearTolerance`: relative residual reduction asked of each Krylov solve. `keepLinearSolver`:
+  // one NOX group (and so one Stratimikos solver with its preconditioner) serves every solve, so
+  // that a reused MueLu hierarchy lives across Uzawa iterations and load steps.
   NewtonSolver(Teuchos::RCP<assembly::ModelEvaluator> model, const Teuchos::ParameterList &section,
-               double lengthScale, double linearTolerance);
+               double lengthScale, double linearTolerance, bool keepLinearSolver = false);
 
   // Solves from the initial guess u (owned vector), overwriting it with the solution when
   // converged. `residualTolerance` is absolute (the caller scales it by the load).
-  NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration) const;
+  // `updateTolerance` < 0: the section's relative update tolerance.
+  NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
+                     double updateTolerance = -1.0) const;
 
   double relativeResidualTolerance() const { return section_.get<double>("residual tolerance"); }
 
@@ -45,6 +53,8 @@ private:
   Teuchos::ParameterList section_;
   double lengthScale_;
   double linearTolerance_;
+  bool keepLinearSolver_;
+  mutable Teuchos::RCP<NOX::Thyra::Group> group_; // kept between solves when keepLinearSolver_
 };
 
 } // namespace glossa::solvers

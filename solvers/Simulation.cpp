@@ -193,6 +193,8 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   model::Scene scene = model::buildScene(deck, steps.endTime());
   const double mu = scene.material->shearModulus();
   const auto &incompressibility = D.sublist("Incompressibility");
+  // The material's law stays the physical one for the Uzawa loop; the tangent gets kappa_t.
+  const materials::VolumetricEnergy physicalVolumetric = scene.volumetric;
   scene.volumetric = scene.volumetric.withKappa(UzawaLoop::tangentKappa(incompressibility, scene.volumetric.kappa(), mu));
 
   auto assembler = Teuchos::rcp(new assembly::Assembler(scene, comm));
@@ -202,8 +204,9 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   auto model = Teuchos::rcp(new assembly::ModelEvaluator(assembler, buildLinearSolver(linearSection, context)));
   double lengthScale = 0.0;
   for (const auto &x : scene.mesh.nodes) lengthScale = std::max(lengthScale, x.norm());
-  NewtonSolver newton(model, D.sublist("Nonlinear solver"), lengthScale, linearSection.get<double>("tolerance"));
-  UzawaLoop uzawa(*assembler, newton, incompressibility);
+  NewtonSolver newton(model, D.sublist("Nonlinear solver"), lengthScale, linearSection.get<double>("tolerance"),
+                      linearSection.get<std::string>("MueLu reuse scope") == "run");
+  UzawaLoop uzawa(*assembler, newton, incompressibility, physicalVolumetric, mu);
 
   std::filesystem::path dir = options.outputDirectory.empty()
                                   ? std::filesystem::path(D.sublist("Output").get<std::string>("directory"))
@@ -224,6 +227,8 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   doc["incompressibility"] = incompressibility.get<std::string>("method");
   doc["kappa_tangent"] = scene.volumetric.kappa();
   doc["kappa_over_mu"] = scene.volumetric.kappa() / mu;
+  doc["kappa_physical_over_mu"] = physicalVolumetric.kappa() / mu; // inf is written as null
+  if (uzawa.augmentedLagrangian()) doc["kappa_AL_over_mu"] = UzawaLoop::augmentationKappa(incompressibility, mu) / mu;
   doc["steps"] = nlohmann::json::array();
   auto writeSummary = [&] {
     doc["wall_seconds"] = since(start);
@@ -288,8 +293,8 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     };
     auto onUzawa = [&](int k, const NewtonResult &n, const DilatationError &e) {
       if (talk && !inCandidate)
-        std::printf("  uzawa %d: newton %d  krylov %d  max|theta-1| = %.2e  mean %.2e\n", k, n.iterations,
-                    n.linearIterations, e.max, e.mean);
+        std::printf("  uzawa %d: newton %d  krylov %d  dilatation error max %.2e  mean %.2e  max|theta-1| %.2e\n", k,
+                    n.iterations, n.linearIterations, e.max, e.mean, e.maxVolumeChange);
     };
     out.uzawa = uzawa.solve(uTrial, lambdaTrial, tolerance, onNewton, onUzawa);
     model->setLambda(nullptr);
@@ -480,6 +485,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     step["uzawa_iterations"] = r.solves;
     step["max_dilatation_error"] = r.dilatation.max;
     step["mean_dilatation_error"] = r.dilatation.mean;
+    step["max_volume_change"] = r.dilatation.maxVolumeChange;
     step["seconds"] = since(stepStart);
     step["assembly_seconds"] = model->assemblySeconds() - solveStart;
     nlohmann::json histories = nlohmann::json::array();
@@ -522,8 +528,8 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     committedStretch = muscle.groupMeanStretch;
     history.commit();
     if (talk)
-      std::printf("step %d done  t = %.6g  newton %d  krylov %d  uzawa %d  max|theta-1| %.2e  [%.2f s]\n", stepNumber, t,
-                  r.newtonIterations, r.linearIterations, r.solves, r.dilatation.max, since(start));
+      std::printf("step %d done  t = %.6g  newton %d  krylov %d  uzawa %d  dilatation error %.2e  [%.2f s]\n", stepNumber,
+                  t, r.newtonIterations, r.linearIterations, r.solves, r.dilatation.max, since(start));
     writeSummary();
   }
 

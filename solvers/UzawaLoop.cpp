@@ -1,9 +1,11 @@
 #include "solvers/UzawaLoop.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 
 namespace glossa::solvers {
@@ -11,38 +13,66 @@ namespace glossa::solvers {
 Teuchos::ParameterList incompressibilityParameters() {
   Teuchos::ParameterList p;
   io::declareString(p, "method", "augmented Lagrangian",
-                    "augmented Lagrangian: Uzawa updates of an element multiplier until the "
-                    "dilatation error is below the tolerance, with kappa_AL = penalty ratio x mu "
-                    "in the tangent (the material's bulk modulus is then not used: the target "
-                    "is theta = 1); penalty: one solve with the material's bulk modulus",
+                    "augmented Lagrangian: Uzawa updates of an element multiplier until every "
+                    "element pressure obeys the material's volumetric law (Poisson's ratio or bulk "
+                    "modulus; nu = 0.5: theta = 1), with the moderate kappa_t = kappa kappa_AL / "
+                    "(kappa + kappa_AL) in the tangent; penalty: one solve with the material's "
+                    "bulk modulus in the tangent (needs nu < 0.5)",
                     {"augmented Lagrangian", "penalty"});
   io::declareDouble(p, "penalty ratio", 100.0, "",
-                    "kappa_AL / mu in augmented-Lagrangian mode (1e2-1e3 keeps the Krylov solve "
-                    "cheap; see doc/incompressibility.md)", io::Range::closed(1.0, 1e9));
+                    "kappa_AL / mu in augmented-Lagrangian mode, mu the law's small-strain shear "
+                    "modulus (100 keeps the Krylov solve cheap and needs about 2 Uzawa solves per "
+                    "step; see doc/incompressibility.md)", io::Range::closed(1.0, 1e9));
   io::declareDouble(p, "dilatation tolerance", 1e-3, "",
-                    "augmented Lagrangian stops when max_e |theta_e - 1| is below this",
+                    "augmented Lagrangian stops when max_e |theta_e - theta_phys(p_e)| is below "
+                    "this (theta_phys: the dilatation the material law gives the element pressure; "
+                    "1 for nu = 0.5)",
                     io::Range::open(0.0, 1.0));
   io::declareInt(p, "maximum Uzawa iterations", 50, "Newton solves per step before the step fails",
                  io::Range::closed(1, 10000));
+  io::declareString(p, "Uzawa acceleration", "inexact",
+                    "none: every Newton solve to the full tolerance before a multiplier update (the "
+                    "plain nested loop); inexact: the first solve of each step stops once its residual "
+                    "is below 'inner tolerance' relative to the load, the multipliers are updated "
+                    "there and Newton goes on from that iterate to the full tolerance "
+                    "(doc/incompressibility.md)",
+                    {"none", "inexact"});
+  io::declareDouble(p, "inner tolerance", 1e-2, "",
+                    "relative residual (and relative update) at which the first, inexact Uzawa solve "
+                    "of a step hands over to the multiplier update", io::Range::open(0.0, 1.0));
   return p;
 }
 
+double UzawaLoop::augmentationKappa(const Teuchos::ParameterList &s, double mu) {
+  return s.get<double>("penalty ratio") * mu;
+}
+
 double UzawaLoop::tangentKappa(const Teuchos::ParameterList &s, double materialKappa, double mu) {
-  return s.get<std::string>("method") == "augmented Lagrangian" ? s.get<double>("penalty ratio") * mu
-                                                                : materialKappa;
+  if (s.get<std::string>("method") == "augmented Lagrangian")
+    return AugmentedLagrangianRule(materials::VolumetricEnergy(materials::VolumetricEnergy::Form::Quadratic, materialKappa),
+                                   augmentationKappa(s, mu))
+        .tangentKappa();
+  if (!std::isfinite(materialKappa))
+    throw io::DeckError("Material: an infinite bulk modulus (Poisson's ratio = 0.5, exact incompressibility) "
+                        "needs Incompressibility/method = augmented Lagrangian; a penalty needs nu < 0.5");
+  return materialKappa;
 }
 
 UzawaLoop::UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton,
-                     const Teuchos::ParameterList &s)
+                     const Teuchos::ParameterList &s, const materials::VolumetricEnergy &physical, double mu)
     : assembler_(assembler), newton_(newton),
       augmented_(s.get<std::string>("method") == "augmented Lagrangian"),
-      tolerance_(s.get<double>("dilatation tolerance")), maxIterations_(s.get<int>("maximum Uzawa iterations")) {}
+      rule_(physical, augmentationKappa(s, mu)), tolerance_(s.get<double>("dilatation tolerance")), maxIterations_(s.get<int>("maximum Uzawa iterations")),
+      inexact_(augmented_ && s.get<std::string>("Uzawa acceleration") == "inexact"),
+      innerTolerance_(s.get<double>("inner tolerance")) {}
 
 DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) const {
-  double local[2] = {0.0, 0.0}, volume = 0.0, maxErr = 0.0;
+  double local[2] = {0.0, 0.0}, volume = 0.0, maxErr = 0.0, maxChange = 0.0;
   for (std::size_t i = 0; i < f.theta.size(); ++i) {
-    const double e = std::abs(f.theta[i] - 1.0);
+    const double change = std::abs(f.theta[i] - 1.0);
+    const double e = augmented_ ? rule_.dilatationError(f.theta[i], f.pressure[i]) : change;
     maxErr = std::max(maxErr, e);
+    maxChange = std::max(maxChange, change);
     local[0] += e * f.referenceVolume[i];
     volume += f.referenceVolume[i];
   }
@@ -52,6 +82,7 @@ DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) con
   const auto &comm = *assembler_.comm();
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2, local, sums);
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, maxErr, Teuchos::outArg(err.max));
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, maxChange, Teuchos::outArg(err.maxVolumeChange));
   err.mean = sums[0] / sums[1];
   return err;
 }
@@ -60,8 +91,15 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
                              const NewtonSolver::IterationCallback &onNewton,
                              const std::function<void(int, const NewtonResult &, const DilatationError &)> &onUzawa) const {
   UzawaResult result;
+  // Inexact: while the multipliers are still far from their fixed point, solving each Newton
+  // problem to 1e-8 is wasted (the next update changes the problem by more than that); the
+  // residual tolerance is relative to the same load scale as the tight one.
+  const double looseTolerance =
+      std::max(residualTolerance, residualTolerance * innerTolerance_ / newton_.relativeResidualTolerance());
+  bool tight = !inexact_;
   for (int k = 1; k <= (augmented_ ? maxIterations_ : 1); ++k) {
-    NewtonResult n = newton_.solve(u, residualTolerance, onNewton);
+    NewtonResult n = tight ? newton_.solve(u, residualTolerance, onNewton)
+                           : newton_.solve(u, looseTolerance, onNewton, innerTolerance_);
     ++result.solves;
     result.newtonIterations += n.iterations;
     result.linearIterations += n.linearIterations;
@@ -74,13 +112,20 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
     result.dilatation = dilatationError(fields);
     if (onUzawa) onUzawa(k, result.newton.back(), result.dilatation);
     if (!augmented_ || result.dilatation.max < tolerance_) {
-      result.converged = true;
-      return result;
+      if (tight) {
+        result.converged = true;
+        return result;
+      }
     }
-    // Lambda_e <- Lambda_e + U'(theta_e) (= Lambda_e + kappa_AL (theta_e - 1) to first order,
-    // exactly for the quadratic U): the multiplier takes over the element pressure p_e, so the
-    // next solve needs less volume change to carry it.
-    for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = fields.pressure[i];
+    // Only the first solve of a step is loose: its multipliers are the previous step's, so the
+    // update changes the problem by more than the tight solve would gain. Later solves are tight:
+    // a loose solve's own error puts a floor under the dilatation error it can reach (measured:
+    // repeated loose solves stalled above a 1e-9 tolerance and the step failed).
+    tight = true;
+    // Lambda_e <- beta p_e (p_e = U_t'(theta_e) + Lambda_e; for nu = 0.5, beta = 1 and this is
+    // Lambda_e + kappa_AL (theta_e - 1) to first order): the multiplier takes over the element
+    // pressure, so the next solve needs less volume change to carry it (AugmentedLagrangianRule).
+    for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = rule_.nextMultiplier(fields.pressure[i]);
   }
   return result;
 }

@@ -1,24 +1,30 @@
 #pragma once
 // The augmented-Lagrangian loop around each Newton solve (DESIGN.md §1, eq. 7):
-//   solve f(u; Lambda) = 0, then Lambda_e <- Lambda_e + kappa_AL (theta_e - 1)
-// until max_e |theta_e - 1| is below the tolerance. With a moderate kappa_AL in the tangent the
-// Krylov solves stay cheap, while the multiplier carries the pressure that a pure penalty would
-// need kappa/mu >= 1e6 to produce. In "penalty" mode the loop performs one solve.
+//   solve f(u; Lambda) = 0, then Lambda_e <- beta p_e   (AugmentedLagrangianRule)
+// until max_e |theta_e - theta_phys(p_e)| is below the tolerance: the element pressure then obeys
+// the material's physical volumetric law (theta -> 1 for nu = 0.5). With a moderate kappa_AL in
+// the tangent the Krylov solves stay cheap, while the multiplier carries the pressure that a pure
+// penalty would need kappa/mu >= 1e6 to produce. In "penalty" mode the loop performs one solve.
 
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
 
 #include "assembly/Assembler.hpp"
+#include "materials/VolumetricEnergy.hpp"
+#include "solvers/AugmentedLagrangianRule.hpp"
 #include "solvers/NewtonSolver.hpp"
 
 namespace glossa::solvers {
 
 Teuchos::ParameterList incompressibilityParameters();
 
+// In augmented-Lagrangian mode the error is |theta_e - theta_phys(p_e)| (the distance from the
+// physical law; |theta_e - 1| for nu = 0.5); with a penalty it is |theta_e - 1|.
 struct DilatationError {
-  double max = 0.0;  // max over elements of |theta_e - 1|
-  double mean = 0.0; // reference-volume-weighted mean of |theta_e - 1|
+  double max = 0.0;             // max over elements
+  double mean = 0.0;            // reference-volume-weighted mean
+  double maxVolumeChange = 0.0; // max over elements of |theta_e - 1|
 };
 
 struct UzawaResult {
@@ -33,11 +39,15 @@ struct UzawaResult {
 
 class UzawaLoop {
 public:
+  // `physical`: the material's volumetric law (kappa = inf for nu = 0.5); mu: its shear modulus.
   UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton,
-            const Teuchos::ParameterList &section);
+            const Teuchos::ParameterList &section, const materials::VolumetricEnergy &physical, double mu);
 
   bool augmentedLagrangian() const { return augmented_; }
-  // kappa in the tangent: kappa_AL in augmented-Lagrangian mode, the material's otherwise.
+  // kappa_AL = penalty ratio x mu (augmented Lagrangian only).
+  static double augmentationKappa(const Teuchos::ParameterList &section, double mu);
+  // kappa in the tangent: kappa_t = kappa kappa_AL / (kappa + kappa_AL) in augmented-Lagrangian
+  // mode, the material's otherwise (io::DeckError if that is infinite).
   static double tangentKappa(const Teuchos::ParameterList &section, double materialKappa, double mu);
 
   // Solves at fixed time; u and lambda are updated in place (the caller keeps copies to roll
@@ -52,8 +62,11 @@ private:
   const assembly::Assembler &assembler_;
   const NewtonSolver &newton_;
   bool augmented_;
+  AugmentedLagrangianRule rule_;
   double tolerance_;
   int maxIterations_;
+  bool inexact_;              // Uzawa acceleration = inexact inner solves
+  double innerTolerance_;     // their relative residual (and update) tolerance
 };
 
 } // namespace glossa::solvers

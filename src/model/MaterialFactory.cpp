@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -250,8 +251,9 @@ ParameterList materialParameters() {
                     io::Range::positive());
   io::declareDouble(p, "Poisson's ratio", 0.4999, "",
                     "nu, gives the bulk modulus kappa = 2 mu (1+nu) / (3 (1-2nu)) from the law's "
-                    "small-strain shear modulus unless 'bulk modulus' is set",
-                    io::Range::open(-1.0, 0.5));
+                    "small-strain shear modulus unless 'bulk modulus' is set; 0.5: exactly "
+                    "incompressible (needs Incompressibility/method = augmented Lagrangian)",
+                    {-1.0, 0.5, true, false});
   io::declareDouble(p, "bulk modulus", 0.0, "Pa", "kappa; 0 means: from Poisson's ratio",
                     io::Range::nonNegative());
   io::declareString(p, "volumetric energy", "simo-taylor",
@@ -365,7 +367,12 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
 
   const double mu = matrix->shearModulus();
   const double kappaGiven = mat.get<double>("bulk modulus");
-  const double kappa = kappaGiven > 0.0 ? kappaGiven : materials::bulkModulus(mu, mat.get<double>("Poisson's ratio"));
+  const double nu = mat.get<double>("Poisson's ratio");
+  // nu = 0.5 is exact incompressibility: an infinite bulk modulus, which the augmented Lagrangian
+  // enforces as theta = 1 (solvers/AugmentedLagrangianRule).
+  const double kappa = kappaGiven > 0.0 ? kappaGiven
+                       : nu == 0.5      ? std::numeric_limits<double>::infinity()
+                                        : materials::bulkModulus(mu, nu);
   built.volumetric = materials::VolumetricEnergy(
       materials::VolumetricEnergy::formFromName(mat.get<std::string>("volumetric energy")), kappa);
   built.plainQ1 = mat.get<std::string>("element") == "Q1";
