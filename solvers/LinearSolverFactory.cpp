@@ -56,9 +56,10 @@ ParameterList linearSolverParameters() {
                     {"finest", "all"});
   io::declareInt(p, "patch sweeps", 1, "symmetric Gauss-Seidel sweeps of the vertex-patch smoother",
                  io::Range::closed(1, 10));
-  io::declareInt(p, "Chebyshev eigenvalue iterations", 20,
-                 "power iterations estimating the largest eigenvalue (10 breaks CG for nu >= 0.49, "
-                 "see TRILINOS-NOTES)", io::Range::closed(5, 200));
+  io::declareInt(p, "Chebyshev eigenvalue iterations", 50,
+                 "power iterations estimating the largest eigenvalue: an underestimate makes the degree-6 "
+                 "smoother indefinite and breaks CG (20 did on the active-muscle block, 10 for nu >= 0.49 "
+                 "on the step-44 block; doc/incompressibility.md)", io::Range::closed(5, 200));
   io::declareDouble(p, "Chebyshev eigenvalue ratio", 100.0, "",
                     "lambda_max / lambda_min of the interval the Chebyshev smoother damps",
                     io::Range::atLeast(2.0));

@@ -43,7 +43,12 @@ TEST_P(LinearStrategy, SolvesTheBlockToTheDealIIReference) {
                                 "Output/fields=false"};
   for (const auto &x : GetParam()) o.push_back(x);
   const auto s =
-      test::runDeck(test::inputPath("verification/step44_block.xml"), o, test::scratchDirectory("strategy"));
+      // One directory per parameter: ctest may run the instances concurrently.
+      test::runDeck(test::inputPath("verification/step44_block.xml"), o,
+                    test::scratchDirectory("strategy_" + std::to_string(
+                        ::testing::UnitTest::GetInstance()->current_test_info()->value_param() ? GetParam().size() * 1000 +
+                            std::hash<std::string>{}(::testing::UnitTest::GetInstance()->current_test_info()->value_param()) % 1000
+                        : 0)));
   ASSERT_TRUE(s.at("converged").get<bool>()) << GetParam().front();
   EXPECT_NEAR(topCentre(s), kDealII4, 1e-5 * std::abs(kDealII4)) << GetParam().front();
   EXPECT_GT(totalKrylov(s), 0);
