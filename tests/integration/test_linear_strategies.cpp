@@ -38,17 +38,20 @@ Teuchos::ParameterList mueluList(const std::vector<std::string> &overrides) {
 
 class LinearStrategy : public ::testing::TestWithParam<std::vector<std::string>> {};
 
+namespace {
+std::string instance() {
+  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  return name.substr(name.find('/') + 1);
+}
+} // namespace
+
 TEST_P(LinearStrategy, SolvesTheBlockToTheDealIIReference) {
   std::vector<std::string> o = {"Mesh/Box/cells=4,4,4", "Linear solver/coarse size=50",
                                 "Output/fields=false"};
   for (const auto &x : GetParam()) o.push_back(x);
   const auto s =
-      // One directory per parameter: ctest may run the instances concurrently.
-      test::runDeck(test::inputPath("verification/step44_block.xml"), o,
-                    test::scratchDirectory("strategy_" + std::to_string(
-                        ::testing::UnitTest::GetInstance()->current_test_info()->value_param() ? GetParam().size() * 1000 +
-                            std::hash<std::string>{}(::testing::UnitTest::GetInstance()->current_test_info()->value_param()) % 1000
-                        : 0)));
+      // One directory per instance ("SolvesThe.../3"): ctest may run the instances concurrently.
+      test::runDeck(test::inputPath("verification/step44_block.xml"), o, test::scratchDirectory("strategy_" + instance()));
   ASSERT_TRUE(s.at("converged").get<bool>()) << GetParam().front();
   EXPECT_NEAR(topCentre(s), kDealII4, 1e-5 * std::abs(kDealII4)) << GetParam().front();
   EXPECT_GT(totalKrylov(s), 0);
