@@ -16,19 +16,7 @@ namespace {
 using testing::expectError;
 using testing::ScratchDir;
 
-// A 2 x 1 x 3 box: 4 x 2 transfinite quads on z = 0 extruded in 4 layers, so 32 hexahedra and
-// 5 x 3 x 5 = 75 nodes; physical groups for the volume, the bottom and top and one corner.
-const char *kBoxGeo = R"(SetFactory("Built-in");
-Point(1) = {0,0,0}; Point(2) = {2,0,0}; Point(3) = {2,1,0}; Point(4) = {0,1,0};
-Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,4}; Line(4) = {4,1};
-Curve Loop(1) = {1,2,3,4}; Plane Surface(1) = {1};
-Transfinite Curve{1,3} = 5; Transfinite Curve{2,4} = 3; Transfinite Surface{1}; Recombine Surface{1};
-out[] = Extrude {0,0,3} { Surface{1}; Layers{4}; Recombine; };
-Physical Volume("body") = {out[1]};
-Physical Surface("bottom") = {1};
-Physical Surface("top") = {out[0]};
-Physical Point("corner") = {1};
-)";
+const std::string kBoxGeo = testing::gmshBoxGeo(true);
 
 TEST(GmshReader, BoxWrittenByGmsh) {
   const std::string gmsh = GLOSSA_GMSH_EXECUTABLE;
