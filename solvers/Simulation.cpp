@@ -62,6 +62,20 @@ public:
     const auto &mesh = assembler.scene().mesh;
     if (fields_) results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.nodes, mesh.elements);
     traces_ = std::make_unique<io::TraceWriter>(dir / "traces.csv");
+    // Reference fibre directions per family (zero where the family is absent), for ParaView's
+    // glyphs; they do not change, and the mesh is replicated, so rank 0 builds them once.
+    const auto &muscles = assembler.scene().muscles;
+    const std::size_t elements = mesh.numElements();
+    for (const auto &region : muscles.regions)
+      for (const auto &name : region.familyNames) fibreDirections_.try_emplace(name, 3 * elements, 0.0);
+    for (std::size_t e = 0; e < elements && muscles.hasFibres(); ++e) {
+      const int r = muscles.elementRegion[e];
+      if (r < 0) continue;
+      for (std::size_t f = 0; f < muscles.regions[r].familyNames.size(); ++f)
+        for (int c = 0; c < 3; ++c)
+          fibreDirections_[muscles.regions[r].familyNames[f]][3 * e + c] =
+              muscles.directions[e](c, static_cast<Eigen::Index>(f));
+    }
     if (!assembler.scene().dirichlet.empty())
       reactions_ = std::make_unique<io::KeyedCsvWriter>(dir / "reactions.csv", "condition",
                                                         std::vector<std::string>{"fx", "fy", "fz"});
@@ -128,21 +142,7 @@ public:
         {"pressure", 1, pressure}, {"dilatation", 1, theta}, {"J", 1, minJ}, {"cauchy_stress", 6, cauchy}};
     if (assembler_.scene().muscles.hasFibres()) {
       cells.push_back({"fibre_stress", 1, assembler_.gatherElementField(muscle.fibreStress, 1)});
-      // Reference fibre directions per family (zero where the family is absent), for ParaView's
-      // glyphs; the mesh is replicated, so rank 0 has them all.
-      const auto &muscles = assembler_.scene().muscles;
-      std::map<std::string, std::vector<double>> directions;
-      const std::size_t elements = assembler_.scene().mesh.numElements();
-      for (const auto &region : muscles.regions)
-        for (const auto &name : region.familyNames) directions.try_emplace(name, 3 * elements, 0.0);
-      for (std::size_t e = 0; e < elements && root_; ++e) {
-        const int r = muscles.elementRegion[e];
-        if (r < 0) continue;
-        for (std::size_t f = 0; f < muscles.regions[r].familyNames.size(); ++f)
-          for (int c = 0; c < 3; ++c)
-            directions[muscles.regions[r].familyNames[f]][3 * e + c] = muscles.directions[e](c, static_cast<Eigen::Index>(f));
-      }
-      for (auto &[name, values] : directions) cells.push_back({"fibre_direction_" + name, 3, std::move(values)});
+      for (const auto &[name, values] : fibreDirections_) cells.push_back({"fibre_direction_" + name, 3, values});
       // One column per group, gathered together and split by group on rank 0.
       const auto &groups = assembler_.scene().muscles.groups;
       const int G = muscle.groups;
@@ -168,6 +168,7 @@ private:
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;
   std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_;
+  std::map<std::string, std::vector<double>> fibreDirections_; // rank 0, per family
 };
 } // namespace
 
@@ -259,7 +260,6 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     return v;
   };
   const assembly::MuscleFields initialMuscle = assembler->updateMuscleHistory(u);
-  const std::vector<double> recorderStretch = initialMuscle.groupMeanStretch;
   recorder.record(0.0, u, lambda, true, initialMuscle, inputs(0.0));
   writeSummary();
 
@@ -321,7 +321,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   if (control.enabled && root)
     controls = std::make_unique<io::KeyedCsvWriter>(
         dir / "controls.csv", "group", std::vector<std::string>{"u", "evaluated", "objective", "candidates"});
-  std::vector<double> committedStretch = recorderStretch;
+  std::vector<double> committedStretch = initialMuscle.groupMeanStretch; // for pruning
   control::Genome previousBest;
   struct ControlOutcome {
     std::vector<double> inputs;

@@ -215,7 +215,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
       }
     }
     addExternalForces(time, fData);
-    if (!addFollowerLoads(uData, time, fData, K, false, nullptr)) localValid = 0;
+    if (!addFollowerLoads(uData, time, fData, K, false)) localValid = 0;
   }
   if (K) K->endAssembly();
   if (f) {
@@ -259,28 +259,26 @@ ElementFields Assembler::elementFields(const Vector &u, const std::vector<double
   return out;
 }
 
+void Assembler::scatterLoadBlock(const mesh::NodeId *nodes, int n, const double *f, const double *df,
+                                 Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo) const {
+  std::array<GO, 12> gids{};
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < 3; ++c) gids[3 * k + c] = layout_.dof(nodes[k], c);
+  for (int r = 0; r < 3 * n; ++r) {
+    const bool fixedRow = constrained_[3 * nodes[r / 3] + r % 3];
+    if (fixedRow && !constrainedToo) continue;
+    fData[overlapMap_->getLocalElement(gids[r])] -= f[r];
+    if (!K || fixedRow) continue;
+    std::array<double, 12> row{};
+    for (int c = 0; c < 3 * n; ++c) row[c] = constrained_[3 * nodes[c / 3] + c % 3] ? 0.0 : -df[r + 3 * n * c];
+    K->sumIntoGlobalValues(gids[r], Teuchos::ArrayView<const GO>(gids.data(), 3 * n),
+                           Teuchos::ArrayView<const double>(row.data(), 3 * n));
+  }
+}
+
 bool Assembler::addFollowerLoads(const Teuchos::ArrayRCP<const double> &uData, double time,
-                                 Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo,
-                                 model::MuscleHistory *history, std::vector<double> *externalStretch) const {
+                                 Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo) const {
   const mesh::HexMesh &mesh = scene_.mesh;
-  bool valid = true;
-  // Subtracts an external force block (n nodes) and its tangent: residual -= f, K -= df/du.
-  auto scatter = [&](const mesh::NodeId *nodes, int n, const double *f, const double *df /* 3n x 3n, col-major */) {
-    std::array<GO, 12> gids{};
-    for (int k = 0; k < n; ++k)
-      for (int c = 0; c < 3; ++c) gids[3 * k + c] = layout_.dof(nodes[k], c);
-    for (int r = 0; r < 3 * n; ++r) {
-      const bool fixedRow = constrained_[3 * nodes[r / 3] + r % 3];
-      if (fixedRow && !constrainedToo) continue;
-      fData[overlapMap_->getLocalElement(gids[r])] -= f[r];
-      if (!K || fixedRow) continue;
-      std::array<double, 12> row{};
-      for (int c = 0; c < 3 * n; ++c)
-        row[c] = constrained_[3 * nodes[c / 3] + c % 3] ? 0.0 : -df[r + 3 * n * c];
-      K->sumIntoGlobalValues(gids[r], Teuchos::ArrayView<const GO>(gids.data(), 3 * n),
-                             Teuchos::ArrayView<const double>(row.data(), 3 * n));
-    }
-  };
   for (const auto &load : scene_.pressures) {
     for (const auto &face : load.faces) {
       if (layout_.elementOwner[face.element] != layout_.rank) continue;
@@ -294,9 +292,16 @@ bool Assembler::addFollowerLoads(const Teuchos::ArrayRCP<const double> &uData, d
       }
       loads::FaceTangent Kf;
       const loads::FaceForces ff = loads::followerPressureForces(Xf, uf, load.pressure.atGaussPoints(Xf, time), K ? &Kf : nullptr);
-      scatter(nodes.data(), 4, ff.data(), Kf.data());
+      scatterLoadBlock(nodes.data(), 4, ff.data(), Kf.data(), fData, K, constrainedToo);
     }
   }
+  return evaluateExternalMuscles(uData, &fData, K, constrainedToo, nullptr, nullptr);
+}
+
+bool Assembler::evaluateExternalMuscles(const Teuchos::ArrayRCP<const double> &uData, Teuchos::ArrayRCP<double> *fData,
+                                        FEMatrix *K, bool constrainedToo, model::MuscleHistory *history,
+                                        std::vector<double> *stretch) const {
+  bool valid = true;
   for (std::size_t m = 0; m < scene_.muscles.external.size(); ++m) {
     const auto &muscle = scene_.muscles.external[m];
     const double alpha = history_.groupActivation(muscle.group);
@@ -312,12 +317,12 @@ bool Assembler::addFollowerLoads(const Teuchos::ArrayRCP<const double> &uData, d
         continue;
       }
       if (history) history->trialExternalLambdaC(m, k) = r.hill.lambdaC;
-      if (externalStretch && muscle.group >= 0) {
+      if (stretch && muscle.group >= 0) {
         const double L0 = (muscle.fibres[k].origin - muscle.fibres[k].insertion).norm();
-        (*externalStretch)[2 * muscle.group] += r.lambdaF * L0;
-        (*externalStretch)[2 * muscle.group + 1] += L0;
+        (*stretch)[2 * muscle.group] += r.lambdaF * L0;
+        (*stretch)[2 * muscle.group + 1] += L0;
       }
-      scatter(&node, 1, r.force.data(), r.dForceDu.data());
+      if (fData) scatterLoadBlock(&node, 1, r.force.data(), r.dForceDu.data(), *fData, K, constrainedToo);
     }
   }
   return valid;
@@ -354,10 +359,10 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
   // Per group: sum of lambda_f dV and of dV (then reduced over ranks).
   std::vector<double> weighted(2 * G, 0.0), weightedAll(2 * G, 0.0);
   int localValid = 1;
+  Vector uOverlap(overlapMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
   if (muscles.hasFibres()) {
-    Vector uOverlap(overlapMap_);
-    importToOverlap(u, uOverlap);
-    auto uData = uOverlap.getData(0);
     for (std::size_t i = 0; i < n; ++i) {
       const auto e = static_cast<std::size_t>(layout_.localElements[i]);
       const int region = muscles.elementRegion[e];
@@ -402,15 +407,9 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
         }
     }
   }
+  // The external fibres' lambda_c at the converged u (their forces are not needed here).
   std::vector<double> external(2 * G, 0.0), externalAll(2 * G, 0.0);
-  if (!muscles.external.empty()) {
-    // The external fibres' lambda_c at the converged u (their forces are not needed here).
-    Vector uOverlap(overlapMap_), fOverlap(overlapMap_);
-    importToOverlap(u, uOverlap);
-    auto uData = uOverlap.getData(0);
-    auto fData = fOverlap.getDataNonConst(0);
-    if (!addFollowerLoads(uData, 0.0, fData, nullptr, false, &history_, &external)) localValid = 0;
-  }
+  if (!evaluateExternalMuscles(uData, nullptr, nullptr, false, &history_, &external)) localValid = 0;
   int globalValid = 0;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
   out.valid = globalValid == 1;
@@ -438,7 +437,7 @@ std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, 
       for (int l = 0; l < 24; ++l) fData[elementLids_[i][l]] += r.residual(l);
     }
     addExternalForces(time, fData, /*constrainedToo=*/true);
-    addFollowerLoads(uData, time, fData, nullptr, /*constrainedToo=*/true, nullptr);
+    addFollowerLoads(uData, time, fData, nullptr, /*constrainedToo=*/true);
   }
   f.doExport(fOverlap, *exporter_, Tpetra::ADD);
   auto fOwned = f.getData(0);

@@ -120,13 +120,19 @@ private:
                                   const fem::MixedBase *base, bool extrapolate, fem::Q1P0Output what) const;
   // The displacement-dependent loads (follower pressures, external muscles) at u: subtracted
   // from the overlap residual (at constrained dofs only if `constrainedToo`) and, with K, their
-  // tangent subtracted from K (unconstrained rows and columns). With `history`, the external
-  // muscles' new lambda_c are written to its trial values. False if a load could not be
-  // evaluated (an external fibre's local solve failed) on this rank.
-  // With `externalStretch` (2 per group): adds lambda_f L_0 and L_0 of the external fibres.
+  // tangent subtracted from K (unconstrained rows and columns). False if an external fibre's
+  // local solve failed on this rank.
   bool addFollowerLoads(const Teuchos::ArrayRCP<const double> &uOverlap, double time, Teuchos::ArrayRCP<double> &fData,
-                        FEMatrix *K, bool constrainedToo, model::MuscleHistory *history,
-                        std::vector<double> *externalStretch = nullptr) const;
+                        FEMatrix *K, bool constrainedToo) const;
+  // The external muscles at u: their forces and tangent as above when `fData` is given; with
+  // `history`, their new lambda_c written to its trial values; with `stretch` (2 per group),
+  // lambda_f L_0 and L_0 added. False if a local solve failed on this rank.
+  bool evaluateExternalMuscles(const Teuchos::ArrayRCP<const double> &uOverlap, Teuchos::ArrayRCP<double> *fData,
+                               FEMatrix *K, bool constrainedToo, model::MuscleHistory *history,
+                               std::vector<double> *stretch) const;
+  // residual -= f, K -= df/du for a block of n nodes (df: 3n x 3n, column-major).
+  void scatterLoadBlock(const mesh::NodeId *nodes, int n, const double *f, const double *df,
+                        Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo) const;
   fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
 
   const model::Scene &scene_;

@@ -15,6 +15,7 @@
 #include "materials/ParallelElement.hpp"
 #include "materials/SeriesElement.hpp"
 #include "loads/ExternalMuscle.hpp"
+#include "model/DeckSets.hpp"
 #include "model/FibreDirectionField.hpp"
 
 namespace glossa::model {
@@ -70,12 +71,6 @@ ParameterList muscleGroupParameters() {
 
 Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 
-std::string knownElementSets(const mesh::HexMesh &m) {
-  std::string s;
-  for (const auto &[name, elements] : m.elementSets) s += (s.empty() ? "" : ", ") + name;
-  return s.empty() ? "(none)" : s;
-}
-
 // One family as the deck gives it: where it is, which way it points, which group drives it.
 struct FamilySpec {
   std::string name;
@@ -86,30 +81,11 @@ struct FamilySpec {
 
 FamilySpec readFamily(const io::Deck &deck, const mesh::HexMesh &m, const std::string &name,
                       const MuscleArchitecture &muscles) {
-  const std::vector<std::string> path{"Material", "Fibre families", name};
   const ParameterList &f = deck.root().sublist("Material").sublist("Fibre families").sublist(name);
   FamilySpec spec;
   spec.name = name;
-  const auto set = f.get<std::string>("element set");
-  if (set.empty()) {
-    spec.elements.resize(m.numElements());
-    for (std::size_t e = 0; e < m.numElements(); ++e) spec.elements[e] = static_cast<mesh::ElementId>(e);
-  } else if (m.elementSets.count(set)) {
-    spec.elements = m.elementSets.at(set);
-  } else {
-    throw io::DeckError(deck.where([&] { auto p = path; p.push_back("element set"); return p; }()) +
-                        ": no element set '" + set + "'; the mesh has: " + knownElementSets(m));
-  }
-  const auto group = f.get<std::string>("muscle group");
-  if (!group.empty()) {
-    spec.group = muscles.groupIndex(group);
-    if (spec.group < 0) {
-      std::string known;
-      for (const auto &g : muscles.groups) known += (known.empty() ? "" : ", ") + g.name;
-      throw io::DeckError(deck.where({"Material", "Fibre families", name, "muscle group"}) + ": no muscle group '" +
-                          group + "' in Material/Muscle groups (" + (known.empty() ? "none declared" : known) + ")");
-    }
-  }
+  spec.elements = elementSetOrAll(deck, m, {"Material", "Fibre families", name, "element set"});
+  spec.group = muscleGroupAt(deck, muscles, {"Material", "Fibre families", name, "muscle group"}, false);
   const auto field = f.get<std::string>("direction field");
   try {
     if (field == "constant") {
@@ -134,7 +110,6 @@ FamilySpec readFamily(const io::Deck &deck, const mesh::HexMesh &m, const std::s
 
 MuscleGroup readGroup(const io::Deck &deck, const std::string &name, double endTime) {
   const ParameterList &g = deck.root().sublist("Material").sublist("Muscle groups").sublist(name);
-  const std::vector<std::string> path{"Material", "Muscle groups", name};
   MuscleGroup group;
   group.name = name;
   group.T0s = g.get<double>("T0s");
@@ -203,20 +178,9 @@ ExternalMuscleGroup readExternalMuscle(const io::Deck &deck, const mesh::HexMesh
   const ParameterList &e = mat.sublist("External muscles").sublist(name);
   ExternalMuscleGroup out;
   out.name = name;
-  const auto group = e.get<std::string>("muscle group");
-  out.group = muscles.groupIndex(group);
-  if (out.group < 0)
-    throw io::DeckError(deck.where({"Material", "External muscles", name, "muscle group"}) + ": no muscle group '" +
-                        group + "' in Material/Muscle groups");
-  const auto set = e.get<std::string>("insertion face set");
-  if (!m.faceSets.count(set)) {
-    std::string known;
-    for (const auto &[n, faces] : m.faceSets) known += (known.empty() ? "" : ", ") + n;
-    throw io::DeckError(deck.where({"Material", "External muscles", name, "insertion face set"}) + ": no face set '" +
-                        set + "'; the mesh has: " + known);
-  }
+  out.group = muscleGroupAt(deck, muscles, {"Material", "External muscles", name, "muscle group"}, true);
   std::vector<std::array<std::int64_t, 4>> faces;
-  for (const auto &f : m.faceSets.at(set)) {
+  for (const auto &f : faceSetAt(deck, m, {"Material", "External muscles", name, "insertion face set"})) {
     std::array<std::int64_t, 4> nodes{};
     for (int k = 0; k < 4; ++k) nodes[k] = m.elements[f.element][mesh::kHexFaceNodes[f.localFace][k]];
     faces.push_back(nodes);

@@ -25,10 +25,6 @@ public:
   // `elements`: the mesh ids of the rank's elements, in its local order.
   MuscleHistory(const MuscleArchitecture &architecture, const std::vector<mesh::ElementId> &elements);
 
-  bool active() const {
-    return architecture_ != nullptr && (architecture_->hasFibres() || !architecture_->external.empty());
-  }
-
   // Trial activation of every group at tNew = t_committed + dt (dt > 0).
   void beginStep(double tNew, double dt);
   // A controller's input for a group, replacing the deck's u(t) until cleared (nullopt).

@@ -14,6 +14,7 @@
 #include "mesh/MeshFile.hpp"
 #include "mesh/MeshRefinement.hpp"
 #include "mesh/ThickCylinderGenerator.hpp"
+#include "model/DeckSets.hpp"
 #include "model/MaterialFactory.hpp"
 
 namespace glossa::model {
@@ -194,14 +195,6 @@ std::string knownSets(const mesh::HexMesh &m) {
     if (!m.nodeSets.count(name)) s += (s.empty() ? "" : ", ") + name;
   return s;
 }
-// The face set a load names (Loads/<load>/face set); a DeckError listing the mesh's sets if absent.
-const std::vector<mesh::ElementFace> &faceSetOf(const io::Deck &deck, const mesh::HexMesh &m, const std::string &load) {
-  const std::string set = deck.root().sublist("Loads").sublist(load).get<std::string>("face set");
-  if (!m.faceSets.count(set))
-    throw io::DeckError(deck.where({"Loads", load, "face set"}) + ": no face set '" + set +
-                        "'; the mesh has: " + knownSets(m));
-  return m.faceSets.at(set);
-}
 } // namespace
 
 void declareSceneParameters(ParameterList &schema) {
@@ -260,7 +253,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     if (type == "follower pressure") {
       FollowerPressureLoad load;
       load.name = name;
-      load.faces = faceSetOf(deck, m, name);
+      load.faces = faceSetAt(deck, m, {"Loads", name, "face set"});
       const TimeFunction b = timeFunction(deck, {"Loads", name, "time function"}, endTime);
       const double pMax = l.get<double>("pressure");
       if (l.get<std::string>("profile") == "uniform") {
@@ -280,17 +273,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     if (type != "dead traction") {
       BodyForceLoad body;
       body.name = name;
-      const auto set = l.get<std::string>("element set");
-      if (set.empty()) {
-        for (std::size_t e = 0; e < m.numElements(); ++e) body.elements.push_back(static_cast<mesh::ElementId>(e));
-      } else if (m.elementSets.count(set)) {
-        body.elements = m.elementSets.at(set);
-      } else {
-        std::string known;
-        for (const auto &[n, elements] : m.elementSets) known += (known.empty() ? "" : ", ") + n;
-        throw io::DeckError(deck.where({"Loads", name, "element set"}) + ": no element set '" + set +
-                            "'; the mesh has: " + (known.empty() ? "(none)" : known));
-      }
+      body.elements = elementSetOrAll(deck, m, {"Loads", name, "element set"});
       const double g = l.get<double>("g");
       const auto posture = l.get<std::string>("posture");
       if (type == "body force") {
@@ -310,7 +293,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     }
     DeadTractionLoad load;
     load.name = name;
-    load.faces = faceSetOf(deck, m, name);
+    load.faces = faceSetAt(deck, m, {"Loads", name, "face set"});
     load.traction = vec3(l.get<Array<double>>("traction"));
     load.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
     scene.tractions.push_back(std::move(load));
