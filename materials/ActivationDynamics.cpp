@@ -23,6 +23,15 @@ double ActivationDynamics::step(double alphaOld, double u, double dt) const {
   return (alphaOld + dt * (rise + p_.alphaMin * fall)) / (1.0 + dt * (rise + fall));
 }
 
+double ActivationDynamics::stepInputDerivative(double alphaOld, double u, double dt) const {
+  step(alphaOld, u, dt); // validates the arguments
+  // alpha = N / D with N, D affine in u: d alpha / du = (N' D - N D') / D^2.
+  const double N = alphaOld + dt * (u / p_.tauR + p_.alphaMin * (1.0 - u) / p_.tauF);
+  const double D = 1.0 + dt * (u / p_.tauR + (1.0 - u) / p_.tauF);
+  const double dN = dt * (1.0 / p_.tauR - p_.alphaMin / p_.tauF), dD = dt * (1.0 / p_.tauR - 1.0 / p_.tauF);
+  return (dN * D - N * dD) / (D * D);
+}
+
 double ActivationDynamics::exact(double alpha0, double u, double t) const {
   const double rise = u / p_.tauR, fall = (1.0 - u) / p_.tauF;
   const double k = rise + fall;

@@ -23,6 +23,8 @@ class ActivationDynamics {
   // One backward-Euler step from alphaOld (in [alphaMin, 1]) with input u in [0, 1] over dt > 0.
   // Throws std::invalid_argument otherwise.
   double step(double alphaOld, double u, double dt) const;
+  // d step / d u at the same arguments (the controller's sensitivity of alpha to the input).
+  double stepInputDerivative(double alphaOld, double u, double dt) const;
   // The exact solution after time t >= 0 with constant u: alpha_inf + (alpha0 - alpha_inf) e^{-k t},
   // k = u/tau_R + (1-u)/tau_F, alpha_inf = (u/tau_R + alpha_min (1-u)/tau_F) / k.
   double exact(double alpha0, double u, double t) const;

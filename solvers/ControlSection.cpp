@@ -26,15 +26,20 @@ std::vector<std::string> splitList(const std::string &s) {
 ParameterList controlParameters() {
   ParameterList p;
   io::declareString(p, "type", "none",
-                    "none, or genetic algorithm: at every step choose the neural inputs of the controlled "
-                    "muscle groups that keep the control points at their goals (eq. 25; doc/control.md)",
-                    {"none", "genetic algorithm"});
+                    "none, genetic algorithm or gradient: at every step choose the neural inputs of the "
+                    "controlled muscle groups that keep the control points at their goals (eq. 25; "
+                    "doc/control.md); gradient: projected Gauss-Newton on continuous inputs with "
+                    "sensitivities from the converged tangent",
+                    {"none", "genetic algorithm", "gradient"});
   io::declareString(p, "control points", "", "named points held at their reference positions, comma separated");
   io::declareDoubleArray(p, "weights", Array<double>(), "", "w_p per control point (empty: all 1)", 0,
                          io::Range::nonNegative());
   io::declareString(p, "muscle groups", "", "the groups the controller drives, comma separated (empty: all)");
   io::declareString(p, "always evaluated", "", "groups never pruned, comma separated (the genioglossus parts)");
   io::declareBool(p, "pruning", true, "search only the groups whose mean fibre stretch is above its reference");
+  io::declareBool(p, "keep active groups", true,
+                  "never prune a group whose input was above 0 at the previous step (a muscle that holds "
+                  "the points is near its reference stretch, and pruning it would drop the hold)");
   io::declareDouble(p, "pruning tolerance", 0.0, "", "how far above the reference stretch counts as tension",
                     io::Range::nonNegative());
   io::declareString(p, "genes", "binary", "neural inputs in {0, 1} (the paper) or in [0, 1]", {"binary", "continuous"});
@@ -49,6 +54,17 @@ ParameterList controlParameters() {
                  io::Range::closed(1, 100000));
   io::declareDouble(p, "objective tolerance", 0.0, "m", "stop once the objective (eq. 25) is below this",
                     io::Range::nonNegative());
+  io::declareInt(p, "gradient iterations", 4, "gradient: Gauss-Newton iterations (sensitivity solves) per step",
+                 io::Range::closed(1, 1000));
+  io::declareInt(p, "gradient backtracks", 3, "gradient: step halvings when a step does not lower the objective",
+                 io::Range::closed(0, 60));
+  io::declareDouble(p, "gradient step tolerance", 1e-3, "", "gradient: stop when no input would move by more",
+                    io::Range{0.0, 1.0, true, false});
+  io::declareDouble(p, "gradient damping", 1e-6, "", "gradient: Levenberg damping relative to the largest diagonal of S^T S",
+                    io::Range::nonNegative());
+  io::declareBool(p, "verify sensitivities", false,
+                  "gradient: also difference two full solves per input (step 1e-3) and report the largest "
+                  "relative difference from the tangent's sensitivity (summary.json, sensitivity_check)");
   io::declareInt(p, "seed", 1, "random seed (same seed and rank count: the same run)", io::Range::closed(0, 2147483647));
   return p;
 }
@@ -88,7 +104,16 @@ ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
   auto &p = s.parameters;
   p.pruning = c.get<bool>("pruning");
   p.pruningTolerance = c.get<double>("pruning tolerance");
+  p.keepActiveGroups = c.get<bool>("keep active groups");
   p.alwaysEvaluated = splitList(c.get<std::string>("always evaluated"));
+  p.type = c.get<std::string>("type") == "gradient" ? control::ControllerType::gradient
+                                                    : control::ControllerType::geneticAlgorithm;
+  p.verifySensitivities = c.get<bool>("verify sensitivities");
+  p.gradient.maxIterations = c.get<int>("gradient iterations");
+  p.gradient.maxBacktracks = c.get<int>("gradient backtracks");
+  p.gradient.stepTolerance = c.get<double>("gradient step tolerance");
+  p.gradient.damping = c.get<double>("gradient damping");
+  p.gradient.objectiveTolerance = c.get<double>("objective tolerance");
   auto &ga = p.ga;
   ga.geneType = c.get<std::string>("genes") == "binary" ? control::GeneType::binary : control::GeneType::continuous;
   ga.populationSize = c.get<int>("population");

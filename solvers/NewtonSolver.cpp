@@ -6,6 +6,7 @@
 #include <NOX_Observer.hpp>
 #include <NOX_SolverStats.hpp>
 #include <NOX_Thyra.H>
+#include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include "io/deck/ParameterSpec.hpp"
@@ -182,6 +183,36 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, 
     u.assign(*solved);
   }
   return result;
+}
+
+int NewtonSolver::solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs,
+                               assembly::MultiVector &x) const {
+  model_->resetIterates(u);
+  auto in = model_->createInArgs();
+  auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
+  in.set_x(Thyra::createVector(RCP<assembly::Vector>(uCopy), model_->get_x_space()));
+  auto out = model_->createOutArgs();
+  const RCP<Thyra::LinearOpBase<double>> W = model_->create_W_op();
+  out.set_W_op(W);
+  model_->evalModel(in, out);
+  if (!model_->lastStatus().valid) throw std::runtime_error("tangent solve: an element is inverted at the state");
+  const auto lows = Thyra::linearOpWithSolve<double>(*model_->get_W_factory(), W);
+  const auto space = model_->get_x_space();
+  const auto B = Thyra::createConstMultiVector<double, assembly::LO, assembly::GO, assembly::Node>(
+      Teuchos::rcpFromRef(rhs), space);
+  x.putScalar(0.0);
+  const auto X = Thyra::createMultiVector<double, assembly::LO, assembly::GO, assembly::Node>(Teuchos::rcpFromRef(x), space);
+  Thyra::SolveCriteria<double> criteria;
+  criteria.solveMeasureType =
+      Thyra::SolveMeasureType(Thyra::SOLVE_MEASURE_NORM_RESIDUAL, Thyra::SOLVE_MEASURE_NORM_RHS);
+  criteria.requestedTol = linearTolerance_;
+  const auto status = lows->solve(Thyra::NOTRANS, *B, X.ptr(), Teuchos::ptrFromRef(criteria));
+  if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED)
+    throw std::runtime_error("tangent solve did not converge: " + status.message);
+  int iterations = 0;
+  if (!status.extraParameters.is_null() && status.extraParameters->isParameter("Iteration Count"))
+    iterations = status.extraParameters->get<int>("Iteration Count");
+  return iterations;
 }
 
 } // namespace glossa::solvers

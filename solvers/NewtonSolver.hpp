@@ -46,6 +46,12 @@ public:
   NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
                      double updateTolerance = -1.0) const;
 
+  // Solves K(u) x_j = b_j for every column of `rhs` with the tangent at u (the model's time and
+  // Lambda, the three-field bases condensed exactly at u), one preconditioner for all columns,
+  // to the deck's linear tolerance: the sensitivities of a converged state (issue 5). Returns
+  // the Krylov iterations; throws std::runtime_error if u is inadmissible or a solve fails.
+  int solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x) const;
+
   double relativeResidualTolerance() const { return section_.get<double>("residual tolerance"); }
 
 private:

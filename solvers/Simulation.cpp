@@ -20,7 +20,9 @@
 #include "control/ControlObjective.hpp"
 #include "control/ElitistGeneticAlgorithm.hpp"
 #include "control/MusclePruning.hpp"
+#include "control/GaussNewtonController.hpp"
 #include "solvers/ControlSection.hpp"
+#include "solvers/ControlSensitivity.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/NewtonSolver.hpp"
 #include "solvers/TimeStepping.hpp"
@@ -328,7 +330,11 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     std::vector<int> evaluated;
     double objective = 0.0;
     std::size_t candidates = 0;
-    int generations = 0;
+    int generations = 0;      // GA
+    int iterations = 0;       // gradient: accepted Gauss-Newton steps
+    int sensitivities = 0;    // gradient: sensitivity evaluations
+    int sensitivityKrylov = 0; // gradient: their Krylov iterations
+    double sensitivityCheck = -1.0; // verify sensitivities: max |S - S_fd| / max |S_fd| (-1: not checked)
     std::string stop;
     Eigen::VectorXd pointErrors;
   };
@@ -336,16 +342,19 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
                             std::vector<double> &lambdaTrial, StepAttempt &attempt, ControlOutcome &outcome) {
     const std::size_t G = scene.muscles.groups.size();
     // Pruning: the controlled groups whose mean fibre stretch at the committed state exceeds its
-    // reference value (1: no pre-strain), plus those always evaluated.
+    // reference value (1: no pre-strain), plus those always evaluated and (by default) those the
+    // previous step switched on.
     std::vector<double> stretch, reference;
     std::vector<bool> always;
     std::vector<std::string> names;
     for (const auto &g : scene.muscles.groups) names.push_back(g.name);
     const auto alwaysMask = control.parameters.alwaysEvaluatedMask(names);
-    for (int g : control.groups) {
+    for (std::size_t i = 0; i < control.groups.size(); ++i) {
+      const int g = control.groups[i];
       stretch.push_back(committedStretch[g]);
       reference.push_back(1.0);
-      always.push_back(alwaysMask[g]);
+      const bool active = control.parameters.keepActiveGroups && i < previousBest.size() && previousBest[i] > 0.0;
+      always.push_back(alwaysMask[g] || active);
     }
     std::vector<int> local = control.parameters.pruning
                                  ? control::groupsInTension(stretch, reference, control.parameters.pruningTolerance, always)
@@ -359,7 +368,10 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     Eigen::Matrix3Xd goal(3, control.pointNodes.size());
     for (std::size_t p = 0; p < control.pointNodes.size(); ++p) goal.col(p) = scene.mesh.nodes[control.pointNodes[p]];
     const control::ControlObjective objective(goal, control.weights);
-    double best = std::numeric_limits<double>::infinity();
+    // Every candidate is a full step solve from the committed state. The first candidate to beat
+    // every earlier one by `rank` (the GA: eq. 25; the gradient controller: the sum of squares it
+    // minimises) keeps its state, so the winner's state is at hand when the search ends.
+    double best = std::numeric_limits<double>::infinity(), bestRank = best;
     std::vector<double> bestInputs;
     assembly::Vector uBest(u, Teuchos::Copy);
     std::vector<double> lambdaBest;
@@ -370,56 +382,134 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
         if (std::find(control.groups.begin(), control.groups.end(), static_cast<int>(g)) != control.groups.end())
           history.overrideInput(static_cast<int>(g), inputs[g]);
     };
-    auto evaluate = [&](const std::vector<control::Genome> &genomes) {
-      std::vector<double> values;
-      for (const auto &genome : genomes) {
-        const std::vector<double> inputs = control::inputsFromGenome(evaluated, genome, G);
-        apply(inputs);
-        assembly::Vector uC(u, Teuchos::Copy);
-        std::vector<double> lambdaC = lambda;
-        inCandidate = true;
-        StepAttempt a = attemptStep(tNew, dt, uC, lambdaC);
-        inCandidate = false;
-        double value = std::numeric_limits<double>::infinity();
-        Eigen::VectorXd errors;
-        if (a.ok) {
-          const std::vector<double> all = assembler->gatherDisplacement(uC);
-          Eigen::Matrix3Xd x(3, control.pointNodes.size());
-          for (std::size_t p = 0; p < control.pointNodes.size(); ++p) {
-            const auto n = control.pointNodes[p];
-            x.col(p) = scene.mesh.nodes[n] + Eigen::Vector3d(all[3 * n], all[3 * n + 1], all[3 * n + 2]);
-          }
-          const auto v = objective.evaluate(x);
-          value = v.total;
-          errors = v.distance;
+    auto solveCandidate = [&](const std::vector<double> &inputs, bool rankByObjective) {
+      apply(inputs);
+      assembly::Vector uC(u, Teuchos::Copy);
+      std::vector<double> lambdaC = lambda;
+      inCandidate = true;
+      StepAttempt a = attemptStep(tNew, dt, uC, lambdaC);
+      inCandidate = false;
+      control::ControlEvaluation e;
+      e.objective = std::numeric_limits<double>::infinity();
+      Eigen::VectorXd errors;
+      if (a.ok) {
+        const std::vector<double> all = assembler->gatherDisplacement(uC);
+        Eigen::Matrix3Xd x(3, control.pointNodes.size());
+        for (std::size_t p = 0; p < control.pointNodes.size(); ++p) {
+          const auto n = control.pointNodes[p];
+          x.col(p) = scene.mesh.nodes[n] + Eigen::Vector3d(all[3 * n], all[3 * n + 1], all[3 * n + 2]);
         }
-        // The winner is the first candidate to beat every earlier one: keep its state.
-        if (value < best) {
-          best = value;
-          bestInputs = inputs;
-          uBest.assign(uC);
-          lambdaBest = lambdaC;
-          attemptBest = a;
-          bestErrors = errors;
-        }
-        values.push_back(value);
+        const auto v = objective.evaluate(x);
+        e.ok = true;
+        e.objective = v.total;
+        const Eigen::Matrix3Xd offset = x - goal;
+        e.residual = Eigen::Map<const Eigen::VectorXd>(offset.data(), offset.size());
+        for (Eigen::Index p = 0; p < x.cols(); ++p) e.residual.segment<3>(3 * p) *= control.weights(p);
+        errors = v.distance;
       }
-      return values;
+      const double rank = !e.ok ? e.objective : rankByObjective ? e.objective : e.residual.squaredNorm();
+      if (rank < bestRank) {
+        bestRank = rank;
+        best = e.objective;
+        bestInputs = inputs;
+        uBest.assign(uC);
+        lambdaBest = lambdaC;
+        attemptBest = a;
+        bestErrors = errors;
+      }
+      return e;
     };
-    control::GeneticAlgorithmParameters gaParameters = control.parameters.ga;
-    gaParameters.seed += static_cast<std::uint64_t>(stepIndex); // fresh draws per control step
-    const control::ElitistGeneticAlgorithm ga(gaParameters);
-    std::vector<control::Genome> seeds;
-    if (control.parameters.seedWithPreviousBest && !previousBest.empty()) {
-      std::vector<double> inputs(G, 0.0);
-      for (std::size_t i = 0; i < control.groups.size() && i < previousBest.size(); ++i)
-        inputs[control.groups[i]] = previousBest[i];
-      seeds.push_back(control::genomeFromInputs(evaluated, inputs));
+    std::vector<double> previousInputs(G, 0.0);
+    for (std::size_t i = 0; i < control.groups.size() && i < previousBest.size(); ++i)
+      previousInputs[control.groups[i]] = previousBest[i];
+    if (control.parameters.type == control::ControllerType::geneticAlgorithm) {
+      auto evaluate = [&](const std::vector<control::Genome> &genomes) {
+        std::vector<double> values;
+        for (const auto &genome : genomes)
+          values.push_back(solveCandidate(control::inputsFromGenome(evaluated, genome, G), true).objective);
+        return values;
+      };
+      control::GeneticAlgorithmParameters gaParameters = control.parameters.ga;
+      gaParameters.seed += static_cast<std::uint64_t>(stepIndex); // fresh draws per control step
+      const control::ElitistGeneticAlgorithm ga(gaParameters);
+      std::vector<control::Genome> seeds;
+      if (control.parameters.seedWithPreviousBest && !previousBest.empty())
+        seeds.push_back(control::genomeFromInputs(evaluated, previousInputs));
+      const auto result = ga.minimise(evaluated.size(), evaluate, seeds);
+      outcome.candidates = result.evaluations;
+      outcome.generations = result.generations;
+      outcome.stop = control::toString(result.stopReason);
+    } else {
+      // Projected Gauss-Newton from the previous step's inputs, on the evaluated groups.
+      auto inputsOf = [&](const Eigen::VectorXd &v) {
+        std::vector<double> inputs(G, 0.0);
+        for (std::size_t i = 0; i < evaluated.size(); ++i) inputs[evaluated[i]] = v(static_cast<Eigen::Index>(i));
+        return inputs;
+      };
+      auto evaluate = [&](const Eigen::VectorXd &v) { return solveCandidate(inputsOf(v), false); };
+      auto sensitivity = [&](const Eigen::VectorXd &v) {
+        if (inputsOf(v) != bestInputs)
+          throw std::logic_error("gradient controller: sensitivity asked away from the accepted state");
+        apply(bestInputs);
+        history.beginStep(tNew, dt);
+        model->setTime(tNew);
+        model->setLambda(&lambdaBest);
+        const auto s = controlPointSensitivity(*assembler, newton, uBest, lambdaBest, tNew, evaluated, control.pointNodes);
+        model->setLambda(nullptr);
+        outcome.sensitivityKrylov += s.krylovIterations;
+        if (control.parameters.verifySensitivities) {
+          // Central differences of full step solves (second-order one-sided at the bounds of [0, 1]).
+          constexpr double h = 1e-3;
+          auto pointsAt = [&](const std::vector<double> &inputs) {
+            apply(inputs);
+            assembly::Vector uC(u, Teuchos::Copy);
+            std::vector<double> lambdaC = lambda;
+            inCandidate = true;
+            const StepAttempt a = attemptStep(tNew, dt, uC, lambdaC);
+            inCandidate = false;
+            if (!a.ok) throw std::runtime_error("verify sensitivities: a differenced solve failed: " + a.why);
+            const std::vector<double> all = assembler->gatherDisplacement(uC);
+            Eigen::VectorXd x(3 * static_cast<Eigen::Index>(control.pointNodes.size()));
+            for (std::size_t p = 0; p < control.pointNodes.size(); ++p)
+              for (int c = 0; c < 3; ++c) x(3 * static_cast<Eigen::Index>(p) + c) = all[3 * control.pointNodes[p] + c];
+            return x;
+          };
+          Eigen::MatrixXd fd(s.dxdu.rows(), s.dxdu.cols());
+          for (std::size_t j = 0; j < evaluated.size(); ++j) {
+            const int g = evaluated[j];
+            auto at = [&](double du) {
+              std::vector<double> inputs = bestInputs;
+              inputs[g] += du;
+              return pointsAt(inputs);
+            };
+            const double ug = bestInputs[g];
+            const auto col = static_cast<Eigen::Index>(j);
+            if (ug - h >= 0.0 && ug + h <= 1.0) fd.col(col) = (at(h) - at(-h)) / (2.0 * h);
+            else {
+              const double s = ug - h < 0.0 ? h : -h; // second-order one-sided, inside [0, 1]
+              fd.col(col) = (-3.0 * at(0.0) + 4.0 * at(s) - at(2.0 * s)) / (2.0 * s);
+            }
+          }
+          const double scale = fd.cwiseAbs().maxCoeff();
+          if (scale > 0.0)
+            outcome.sensitivityCheck = std::max(outcome.sensitivityCheck, (s.dxdu - fd).cwiseAbs().maxCoeff() / scale);
+          if (talk)
+            std::printf("  sensitivity check: max |S - S_fd| / max |S_fd| = %.3e\n", outcome.sensitivityCheck);
+        }
+        Eigen::MatrixXd S = s.dxdu;
+        for (Eigen::Index p = 0; p < static_cast<Eigen::Index>(control.pointNodes.size()); ++p)
+          S.middleRows<3>(3 * p) *= control.weights(p);
+        return S;
+      };
+      Eigen::VectorXd start(static_cast<Eigen::Index>(evaluated.size()));
+      for (std::size_t i = 0; i < evaluated.size(); ++i) start(static_cast<Eigen::Index>(i)) = previousInputs[evaluated[i]];
+      const control::GaussNewtonController controller(control.parameters.gradient);
+      const auto result = controller.minimise(start, evaluate, sensitivity);
+      outcome.candidates = static_cast<std::size_t>(result.evaluations);
+      outcome.iterations = result.iterations;
+      outcome.sensitivities = result.sensitivities;
+      outcome.stop = control::toString(result.stop);
     }
-    const auto result = ga.minimise(evaluated.size(), evaluate, seeds);
-    outcome.candidates = result.evaluations;
-    outcome.generations = result.generations;
-    outcome.stop = control::toString(result.stopReason);
     outcome.objective = best;
     outcome.pointErrors = bestErrors;
     if (!std::isfinite(best)) {
@@ -504,7 +594,14 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
       nlohmann::json c;
       c["objective"] = outcome.objective;
       c["candidates"] = outcome.candidates;
-      c["generations"] = outcome.generations;
+      if (control.parameters.type == control::ControllerType::geneticAlgorithm) {
+        c["generations"] = outcome.generations;
+      } else {
+        c["iterations"] = outcome.iterations;
+        c["sensitivity_evaluations"] = outcome.sensitivities;
+        c["sensitivity_krylov"] = outcome.sensitivityKrylov;
+        if (outcome.sensitivityCheck >= 0.0) c["sensitivity_check"] = outcome.sensitivityCheck;
+      }
       c["stop"] = outcome.stop;
       nlohmann::json inputs = nlohmann::json::object(), errors = nlohmann::json::object();
       std::vector<std::pair<std::string, std::vector<double>>> rows;
@@ -521,8 +618,11 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
       step["control"] = c;
       if (controls) controls->append(t, rows);
       if (talk)
-        std::printf("  control: objective %.3e  candidates %zu  generations %d (%s)\n", outcome.objective,
-                    outcome.candidates, outcome.generations, outcome.stop.c_str());
+        std::printf("  control: objective %.3e  candidates %zu  %s %d (%s)\n", outcome.objective, outcome.candidates,
+                    control.parameters.type == control::ControllerType::geneticAlgorithm ? "generations" : "iterations",
+                    control.parameters.type == control::ControllerType::geneticAlgorithm ? outcome.generations
+                                                                                         : outcome.iterations,
+                    outcome.stop.c_str());
     }
     doc["steps"].push_back(step);
     committedStretch = muscle.groupMeanStretch;

@@ -55,6 +55,18 @@ void MuscleHistory::beginStep(double tNew, double dt) {
   externalLambdaCTrial_ = externalLambdaC_;
 }
 
+double MuscleHistory::trialActivationInputDerivative(int group) const {
+  if (group < 0 || group >= static_cast<int>(alpha_.size()))
+    throw std::out_of_range("MuscleHistory::trialActivationInputDerivative: no muscle group " + std::to_string(group));
+  return architecture_->groups[group].activation.stepInputDerivative(alpha_[group], inputTrial_[group], dt_);
+}
+
+void MuscleHistory::setTrialActivation(int group, double alpha) {
+  if (group < 0 || group >= static_cast<int>(alpha_.size()))
+    throw std::out_of_range("MuscleHistory::setTrialActivation: no muscle group " + std::to_string(group));
+  alphaTrial_[group] = alpha;
+}
+
 materials::FamilyValues MuscleHistory::familyActivation(std::size_t i) const {
   const FibreRegion &region = architecture_->regions[region_[i]];
   materials::FamilyValues a(region.law->familyCount());

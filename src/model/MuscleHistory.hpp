@@ -46,6 +46,12 @@ public:
   // lambda_c of fibre k of external muscle m (every rank keeps all; the node's owner updates it).
   double committedExternalLambdaC(std::size_t muscle, std::size_t k) const { return externalLambdaC_[muscle][k]; }
   double &trialExternalLambdaC(std::size_t muscle, std::size_t k) { return externalLambdaCTrial_[muscle][k]; }
+  // d alpha_trial / d u of a group at this step's input (after beginStep): the controller's
+  // sensitivity of the activation to the neural input through the backward-Euler step.
+  double trialActivationInputDerivative(int group) const;
+  // Replaces a group's trial activation (finite differences of the residual in alpha); the next
+  // beginStep recomputes it from the input.
+  void setTrialActivation(int group, double alpha);
   // Trial activation of a group (-1: passive, 0).
   double groupActivation(int group) const { return group < 0 ? 0.0 : alphaTrial_[group]; }
 

@@ -72,3 +72,19 @@ TEST(ActivationDynamics, RejectsInvalidInput) {
   EXPECT_THROW(a.step(1.5, 1.0, 0.01), std::invalid_argument);
   EXPECT_DOUBLE_EQ(fractionOfFullMuscleResponse(0.1, 0.5), 0.05);
 }
+
+// The input derivative of a step against central differences (one-sided at the ends of [0, 1]),
+// with unequal time constants so that it depends on u.
+TEST(ActivationDynamics, StepInputDerivativeMatchesFiniteDifferences) {
+  const ActivationDynamics a({0.1, 0.3, 0.05});
+  const double h = 1e-6;
+  for (double dt : {0.001, 0.01, 0.2})
+    for (double alphaOld : {0.05, 0.4, 1.0})
+      for (double u : {0.0, 0.3, 0.8, 1.0}) {
+        const double up = std::min(1.0, u + h), um = std::max(0.0, u - h);
+        const double fd = (a.step(alphaOld, up, dt) - a.step(alphaOld, um, dt)) / (up - um);
+        EXPECT_NEAR(a.stepInputDerivative(alphaOld, u, dt), fd, 1e-6 * (1.0 + std::abs(fd)))
+            << "dt " << dt << " alpha " << alphaOld << " u " << u;
+      }
+  EXPECT_THROW(a.stepInputDerivative(0.5, 1.5, 0.01), std::invalid_argument);
+}
