@@ -142,6 +142,10 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.add("type", "string", "gravity")
         x.add("posture", "string", "custom")
         x.add("direction", "Array(double)", vec(gravity))
+        x.open("time function")
+        x.add("type", "string", "ramp")
+        x.add("ramp duration", "double", 1)
+        x.close()
         x.close()
     if pressure is not None:
         x.open("airway pressure")
@@ -152,7 +156,9 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.add("P_A", "Array(double)", vec(P_A))
         x.add("P_P", "Array(double)", vec(P_P))
         x.open("time function")
-        x.add("type", "string", "ramp")
+        x.add("type", "string", "table")
+        x.add("times", "Array(double)", "{0, 1, 2}")
+        x.add("values", "Array(double)", "{0, 0, 1}")
         x.close()
         x.close()
     x.close()
@@ -205,3 +211,9 @@ PASSIVE = """
 Passive (no activation): gravity ramped over the first second, then the airway pressure, linear
 from 0 at P_A to p_max at P_P on the face set 'airway', ramped from 0 at t = 1 s to its maximum
 at t = 2 s (suction: p_max = -500 Pa draws the surface into the airway)."""
+for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
+    deck(f"s8_3_{posture}", f"Paper §8.3 (Figs. 8 and 9): {posture} posture, airway pressure 0 to 500 Pa.\n" + COMMON +
+         PASSIVE + f"""
+Gravity {posture}: along {vec(g)} in this mesh's axes. Every muscle group passive (u = 0).
+Expected (paper): supine moves the tongue posteriorly; the pressure draws it backwards.""",
+         {}, gravity=g, pressure=-500.0, end_time=2.0, step=0.25)

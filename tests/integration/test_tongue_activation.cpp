@@ -84,3 +84,32 @@ TEST(TongueActivation, TransverseAndVerticalisProtrudeTheTip) {
   expectMidsagittal(s, "P_A");
   expectMirrored(s, "C07 left", "C08 right");
 }
+
+// Paper §8.3 (decks s8_3_upright/supine.xml): passive tongue, gravity ramped over [0, 1] s, then
+// the airway suction (-500 Pa at P_P, 0 at P_A, on the face set 'airway') ramped over [1, 2] s.
+// The paper's findings: "supine moves the tongue posteriorly"; the pressure "draws it backwards".
+namespace {
+std::map<double, Eigen::Vector3d> pointTrace(const std::string &deck, const std::string &point) {
+  const auto rows = test::readTraces(test::scratchDirectory(deck) / "traces.csv");
+  std::map<double, Eigen::Vector3d> out;
+  for (const auto &r : rows)
+    if (r.point == point) out[r.time] = Eigen::Vector3d(r.u[0], r.u[1], r.u[2]);
+  return out;
+}
+} // namespace
+
+TEST(TonguePosture, SupineGravityMovesTheTongueBackAndSuctionDrawsItFurther) {
+  for (const std::string posture : {"upright", "supine"}) {
+    const std::string deck = "s8_3_" + posture;
+    const auto s = test::runDeck(test::inputPath("paper/" + deck + ".xml"), {}, test::scratchDirectory(deck));
+    ASSERT_TRUE(s.at("converged").get<bool>()) << deck;
+    for (const auto *point : {"P_A", "P_P"}) {
+      const auto trace = pointTrace(deck, point);
+      ASSERT_TRUE(trace.count(1.0) && trace.count(2.0)) << deck << " " << point;
+      const Eigen::Vector3d gravity = trace.at(1.0), both = trace.at(2.0);
+      if (posture == "supine") EXPECT_GT(gravity.x(), 1e-3) << point; // posteriorly (+x), by millimetres
+      else EXPECT_LT(gravity.z(), 0.0) << point;                        // upright: it sinks
+      EXPECT_GT(both.x() - gravity.x(), 1e-3) << deck << " " << point; // suction draws it back (+x)
+    }
+  }
+}
