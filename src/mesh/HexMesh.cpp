@@ -1,5 +1,7 @@
 #include "mesh/HexMesh.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <limits>
 #include <sstream>
@@ -157,6 +159,24 @@ std::vector<ElementFace> facesInBox(const HexMesh &mesh, const std::vector<Eleme
   for (const ElementFace &f : from) {
     if (inBox(faceCentroid(mesh, f), lo, hi, tol)) result.push_back(f);
   }
+  return result;
+}
+
+Eigen::Vector3d faceOutwardNormal(const HexMesh &mesh, ElementFace face) {
+  const auto &hex = mesh.elements.at(static_cast<std::size_t>(face.element));
+  const auto &local = kHexFaceNodes.at(static_cast<std::size_t>(face.localFace));
+  const Eigen::Vector3d &x0 = mesh.nodes[hex[local[0]]], &x1 = mesh.nodes[hex[local[1]]];
+  const Eigen::Vector3d &x2 = mesh.nodes[hex[local[2]]], &x3 = mesh.nodes[hex[local[3]]];
+  return (x2 - x0).cross(x3 - x1).normalized();
+}
+
+std::vector<ElementFace> facesFacing(const HexMesh &mesh, const std::vector<ElementFace> &from,
+                                     const Eigen::Vector3d &direction, double minCosine) {
+  if (!(direction.norm() > 0.0)) throw std::invalid_argument("facesFacing: the direction is zero");
+  const Eigen::Vector3d d = direction.normalized();
+  std::vector<ElementFace> result;
+  for (const ElementFace &f : from)
+    if (faceOutwardNormal(mesh, f).dot(d) >= minCosine) result.push_back(f);
   return result;
 }
 

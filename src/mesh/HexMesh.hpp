@@ -56,6 +56,9 @@ struct HexMesh {
   std::map<std::string, std::vector<ElementFace>> faceSets;   // boundary faces
   std::map<std::string, std::vector<ElementId>> elementSets;  // sorted, unique
   std::map<std::string, NamedPoint> namedPoints;
+  // Fibre polylines by muscle (e.g. the tongue's Fibers.mac): reference positions of each
+  // polyline's vertices, in the file's order. Geometric, so refinement copies them unchanged.
+  std::map<std::string, std::vector<std::vector<Eigen::Vector3d>>> fibrePolylines;
 
   std::size_t numNodes() const { return nodes.size(); }
   std::size_t numElements() const { return elements.size(); }
@@ -92,6 +95,16 @@ std::vector<ElementFace> boundaryFaces(const HexMesh &mesh);
 // so that a flat box (lo.x == hi.x) picks the faces lying in that plane. Keeps `from`'s order.
 std::vector<ElementFace> facesInBox(const HexMesh &mesh, const std::vector<ElementFace> &from,
                                     const Eigen::Vector3d &lo, const Eigen::Vector3d &hi);
+
+// Unit outward normal of an element face in the reference configuration (the area-weighted
+// normal of the bilinear face, (x2 - x0) x (x3 - x1) normalised).
+Eigen::Vector3d faceOutwardNormal(const HexMesh &mesh, ElementFace face);
+
+// Faces of `from` whose reference outward unit normal n satisfies n . d >= minCosine, d the
+// normalised `direction` (a boundary region selected by the way it faces). Keeps `from`'s order.
+// Throws std::invalid_argument for a zero direction.
+std::vector<ElementFace> facesFacing(const HexMesh &mesh, const std::vector<ElementFace> &from,
+                                     const Eigen::Vector3d &direction, double minCosine);
 
 // Nodes in the closed box [lo, hi] with the same tolerance as facesInBox (sorted).
 std::vector<NodeId> nodesInBox(const HexMesh &mesh, const Eigen::Vector3d &lo,

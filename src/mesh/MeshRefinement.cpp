@@ -87,6 +87,7 @@ HexMesh refineOnce(const HexMesh &mesh) {
     std::sort(nodes.begin(), nodes.end());
   }
   fine.namedPoints = mesh.namedPoints;
+  fine.fibrePolylines = mesh.fibrePolylines;
   return fine;
 }
 

@@ -1,6 +1,9 @@
 #include "model/FibreDirectionField.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -37,6 +40,35 @@ std::vector<Eigen::Vector3d> radialFanDirections(const mesh::HexMesh &mesh, cons
                                   ": its radial direction is undefined");
     out.push_back(d.normalized());
   }
+  return out;
+}
+
+Eigen::Vector3d nearestSegmentDirection(const Polylines &polylines, const Eigen::Vector3d &x) {
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+  for (const auto &line : polylines)
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+      const Eigen::Vector3d a = line[k], d = line[k + 1] - line[k];
+      const double length2 = d.squaredNorm();
+      if (!(length2 > 0.0)) continue;
+      const double s = std::clamp((x - a).dot(d) / length2, 0.0, 1.0);
+      const double distance = (a + s * d - x).norm();
+      if (distance < best) {
+        best = distance;
+        direction = d / std::sqrt(length2);
+      }
+    }
+  if (!(best < std::numeric_limits<double>::infinity()))
+    throw std::invalid_argument("the fibre polylines have no segment of positive length");
+  return direction;
+}
+
+std::vector<Eigen::Vector3d> polylineDirections(const mesh::HexMesh &mesh, const std::vector<mesh::ElementId> &elements,
+                                                const Polylines &polylines) {
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(elements.size());
+  for (const auto e : elements)
+    out.push_back(nearestSegmentDirection(polylines, mesh.elementCoordinates(e).colwise().mean().transpose()));
   return out;
 }
 

@@ -24,6 +24,22 @@ std::vector<Eigen::Vector3d> constantDirections(const Eigen::Vector3d &direction
 std::vector<Eigen::Vector3d> radialFanDirections(const mesh::HexMesh &mesh, const std::vector<mesh::ElementId> &elements,
                                                  const Eigen::Vector3d &centre, const Eigen::Vector3d &planeNormal);
 
+// Fibre polylines: each a list of at least two vertices (reference positions).
+using Polylines = std::vector<std::vector<Eigen::Vector3d>>;
+
+// The unit direction of the polyline segment nearest to `x` (Euclidean distance from x to the
+// closed segment; ties: the first in polyline, then segment, order). Sign convention: from a
+// segment's first vertex to its second, i.e. in the order the polyline lists its vertices (a
+// fibre is axial, so the sign has no mechanical meaning). Zero-length segments are skipped.
+// Throws std::invalid_argument when there is no segment of positive length.
+Eigen::Vector3d nearestSegmentDirection(const Polylines &polylines, const Eigen::Vector3d &x);
+
+// N_e = nearestSegmentDirection(polylines, centroid of element e): one direction per element
+// (the muscle architecture stores directions per element), the polyline segment nearest to the
+// element's centroid (the mean of its 8 nodes). Throws std::invalid_argument as above.
+std::vector<Eigen::Vector3d> polylineDirections(const mesh::HexMesh &mesh, const std::vector<mesh::ElementId> &elements,
+                                                const Polylines &polylines);
+
 enum class DirectionsPer { Element, Node };
 
 // A text file of lines "id nx ny nz" (separated by spaces, tabs or commas; '#' starts a comment;

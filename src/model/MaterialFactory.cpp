@@ -30,8 +30,9 @@ ParameterList fibreFamilyParameters() {
   io::declareString(family, "direction field", "constant",
                     "constant: 'direction' everywhere; radial fan: from 'fan centre' to each element's "
                     "centroid (in the plane normal to 'fan plane normal' if that is not zero); file: "
-                    "vectors read from 'file'",
-                    {"constant", "radial fan", "file"});
+                    "vectors read from 'file'; polylines: per element, the direction of the nearest "
+                    "segment (to the centroid) of the mesh's fibre polylines 'polylines'",
+                    {"constant", "radial fan", "file", "polylines"});
   io::declareDoubleArray(family, "direction", Array<double>(3, 0.0), "",
                          "reference fibre direction (normalised; must not be zero)", 3);
   io::declareDoubleArray(family, "fan centre", Array<double>(3, 0.0), "m", "the point the fan radiates from", 3);
@@ -40,6 +41,9 @@ ParameterList fibreFamilyParameters() {
   io::declareString(family, "file", "",
                     "text file of lines 'id nx ny nz' (0-based ids, '#' comments), relative to the deck");
   io::declareString(family, "file gives", "element", "what the file's ids number", {"element", "node"});
+  io::declareString(family, "polylines", "",
+                    "polylines: the mesh's fibre polylines to follow (a muscle of Mesh/File/ANSYS fibres); "
+                    "empty: those named like 'element set'");
   io::declareString(family, "element set", "", "elements the family is present in; empty: all");
   io::declareString(family, "muscle group", "",
                     "the muscle group (in 'Muscle groups') that activates the family; empty: passive fibres");
@@ -93,6 +97,18 @@ FamilySpec readFamily(const io::Deck &deck, const mesh::HexMesh &m, const std::s
     } else if (field == "radial fan") {
       spec.directions = radialFanDirections(m, spec.elements, vec3(f.get<Array<double>>("fan centre")),
                                             vec3(f.get<Array<double>>("fan plane normal")));
+    } else if (field == "polylines") {
+      std::string lines = f.get<std::string>("polylines");
+      if (lines.empty()) lines = f.get<std::string>("element set");
+      const auto found = m.fibrePolylines.find(lines);
+      if (found == m.fibrePolylines.end()) {
+        std::string known;
+        for (const auto &entry : m.fibrePolylines) known += (known.empty() ? "" : ", ") + entry.first;
+        throw io::DeckError(deck.where({"Material", "Fibre families", name, "polylines"}) + ": no fibre polylines '" +
+                            lines + "' in the mesh (" +
+                            (known.empty() ? "it has none: give Mesh/File/ANSYS fibres" : "it has: " + known) + ")");
+      }
+      spec.directions = polylineDirections(m, spec.elements, found->second);
     } else {
       const auto file = f.get<std::string>("file");
       if (file.empty()) throw std::invalid_argument("'direction field' is file but 'file' is empty");
@@ -101,6 +117,8 @@ FamilySpec readFamily(const io::Deck &deck, const mesh::HexMesh &m, const std::s
       spec.directions = directionsFromFile(
           p, f.get<std::string>("file gives") == "node" ? DirectionsPer::Node : DirectionsPer::Element, m, spec.elements);
     }
+  } catch (const io::DeckError &) {
+    throw;
   } catch (const std::exception &e) {
     throw io::DeckError(deck.where({"Material", "Fibre families", name, field == "file" ? "file" : "direction field"}) +
                         ": " + e.what());
@@ -281,9 +299,6 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
   const ParameterList &fibres = mat.sublist("Fibre families");
   std::vector<FamilySpec> families;
   for (auto it = fibres.begin(); it != fibres.end(); ++it) families.push_back(readFamily(deck, m, fibres.name(it), muscles));
-  if (families.size() > static_cast<std::size_t>(materials::kMaxFibreFamilies))
-    throw io::DeckError(deck.where({"Material", "Fibre families"}) + ": at most " +
-                        std::to_string(materials::kMaxFibreFamilies) + " fibre families");
 
   const ParameterList &externals = mat.sublist("External muscles");
   for (auto it = externals.begin(); it != externals.end(); ++it)
@@ -309,6 +324,15 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
     muscles.directions.resize(m.numElements());
     for (std::size_t e = 0; e < m.numElements(); ++e) {
       if (present[e].empty()) continue;
+      // The point law holds a fixed number of families; the deck may declare more, as long as
+      // no element carries more than that many (the tongue: 21 bundles, at most 3 per element).
+      if (present[e].size() > static_cast<std::size_t>(materials::kMaxFibreFamilies)) {
+        std::string names;
+        for (int f : present[e]) names += (names.empty() ? "" : ", ") + families[f].name;
+        throw io::DeckError(deck.where({"Material", "Fibre families"}) + ": element " + std::to_string(e) + " carries " +
+                            std::to_string(present[e].size()) + " fibre families (" + names + "); at most " +
+                            std::to_string(materials::kMaxFibreFamilies) + " per element");
+      }
       auto [it, inserted] = regionOf.emplace(present[e], static_cast<int>(muscles.regions.size()));
       if (inserted) {
         FibreRegion region;

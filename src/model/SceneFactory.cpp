@@ -36,6 +36,16 @@ ParameterList meshParameters() {
   io::declareInt(file, "refine", 0, "split every hexahedron into 8 this many times (sets carried over)",
                  io::Range::closed(0, 4));
   io::declareString(file, "ANSYS components", "", "ansys: APDL macro of element components (CreateMuscles.mac)");
+  io::declareString(file, "ANSYS fibres", "",
+                    "ansys: APDL macro of fibre polylines (Fibers.mac), muscles numbered as the components' "
+                    "muscleName array; each muscle's polylines are available to 'direction field = polylines'");
+  ParameterList externalPoints;
+  ParameterList &point = externalPoints.sublist(io::kAnySublist);
+  io::declareInt(point, "id", 0, "the node id the fibre macro uses for the point", io::Range::nonNegative());
+  io::declareDoubleArray(point, "position", Array<double>(3, 0.0), "m", "where the point is", 3);
+  file.set("ANSYS fibre anchors", externalPoints,
+           "ansys: fibre vertices that are not mesh nodes (the tongue's styloid anchors 4037 and 4042), one "
+           "sublist each");
   ParameterList nodeLists;
   ParameterList &list = nodeLists.sublist(io::kAnySublist);
   io::declareString(list, "file", "", "a list of node ids of the file (one per line): a node set of this name");
@@ -62,10 +72,16 @@ ParameterList meshParameters() {
   io::declareIntArray(cylinder, "cells", Array<int>(std::vector<int>{8, 8, 1}), "radial, circumferential, axial", 3,
                       io::Range::closed(1, 1000));
   ParameterList &faces = p.sublist("Face sets", false,
-                                   "derived face sets: the faces of an existing set whose centroid "
-                                   "lies in a box");
+                                   "derived face sets: the faces of an existing set (or of the whole "
+                                   "boundary) whose centroid lies in a box and whose outward normal "
+                                   "faces a direction");
   ParameterList &face = faces.sublist(io::kAnySublist);
-  io::declareString(face, "from", "", "existing face set to select from");
+  io::declareString(face, "from", "", "existing face set to select from; empty: every boundary face of the mesh");
+  io::declareDoubleArray(face, "outward normal", Array<double>(3, 0.0), "",
+                         "keep faces whose reference outward unit normal n has n . d >= 'minimum cosine', d "
+                         "this direction normalised; zero: no condition on the normal", 3);
+  io::declareDouble(face, "minimum cosine", 0.0, "", "the bound on n . d (cosine of the largest angle to d)",
+                    io::Range::closed(-1, 1));
   io::declareDoubleArray(face, "box min", Array<double>(3, -1e300), "m", "lower corner of the selection box", 3);
   io::declareDoubleArray(face, "box max", Array<double>(3, 1e300), "m", "upper corner of the selection box", 3);
   return p;
@@ -139,12 +155,39 @@ mesh::HexMesh buildMesh(const io::Deck &deck) {
         throw io::DeckError(deck.where({"Mesh", "File", "path"}) + " is empty: name the mesh file");
       try {
         mesh::ImportedMesh imported = mesh::readMeshFile(resolve(f.get<std::string>("path")), f.get<std::string>("format"));
+        mesh::AnsysComponents components;
         if (!f.get<std::string>("ANSYS components").empty())
-          mesh::readAnsysComponents(resolve(f.get<std::string>("ANSYS components")), imported);
+          components = mesh::readAnsysComponents(resolve(f.get<std::string>("ANSYS components")), imported);
+        if (!f.get<std::string>("ANSYS fibres").empty()) {
+          if (f.get<std::string>("ANSYS components").empty())
+            throw io::DeckError(deck.where({"Mesh", "File", "ANSYS fibres"}) +
+                                ": the fibre macro numbers its muscles by the components' muscleName array; "
+                                "give 'ANSYS components' too");
+          std::map<std::int64_t, Eigen::Vector3d> anchors;
+          const auto &points = f.sublist("ANSYS fibre anchors");
+          for (auto it = points.begin(); it != points.end(); ++it) {
+            const auto &a = points.sublist(points.name(it));
+            anchors[a.get<int>("id")] = vec3(a.get<Array<double>>("position"));
+          }
+          const auto &names = components.declaredNames.empty() ? components.names : components.declaredNames;
+          try {
+            for (auto &muscle : mesh::readAnsysFibres(resolve(f.get<std::string>("ANSYS fibres")), imported, names, anchors)) {
+              auto &lines = imported.mesh.fibrePolylines[muscle.muscle];
+              for (const auto &fibre : muscle.fibres) {
+                lines.emplace_back();
+                for (const auto &vertex : fibre) lines.back().push_back(vertex.position);
+              }
+            }
+          } catch (const std::runtime_error &e) {
+            throw io::DeckError(deck.where({"Mesh", "File", "ANSYS fibres"}) + ": " + e.what());
+          }
+        }
         const auto &lists = f.sublist("Node lists");
         for (auto it = lists.begin(); it != lists.end(); ++it)
           mesh::readAnsysNodeList(resolve(lists.sublist(lists.name(it)).get<std::string>("file")), lists.name(it), imported);
         m = std::move(imported.mesh);
+      } catch (const io::DeckError &) {
+        throw;
       } catch (const std::runtime_error &e) {
         throw io::DeckError(deck.where({"Mesh", "File", "path"}) + ": " + e.what());
       }
@@ -167,12 +210,16 @@ mesh::HexMesh buildMesh(const io::Deck &deck) {
     const std::string &name = faces.name(it);
     const ParameterList &f = faces.sublist(name);
     const std::string from = f.get<std::string>("from");
-    if (!m.faceSets.count(from))
+    if (!from.empty() && !m.faceSets.count(from))
       throw io::DeckError(deck.where({"Mesh", "Face sets", name, "from"}) + ": no face set '" + from + "'");
-    m.faceSets[name] = mesh::facesInBox(m, m.faceSets.at(from), vec3(f.get<Array<double>>("box min")),
-                                        vec3(f.get<Array<double>>("box max")));
-    if (m.faceSets[name].empty())
-      throw io::DeckError(deck.where({"Mesh", "Face sets", name}) + ": the box selects no face of '" + from + "'");
+    auto selected = mesh::facesInBox(m, from.empty() ? mesh::boundaryFaces(m) : m.faceSets.at(from),
+                                     vec3(f.get<Array<double>>("box min")), vec3(f.get<Array<double>>("box max")));
+    const Eigen::Vector3d facing = vec3(f.get<Array<double>>("outward normal"));
+    if (facing.norm() > 0.0) selected = mesh::facesFacing(m, selected, facing, f.get<double>("minimum cosine"));
+    if (selected.empty())
+      throw io::DeckError(deck.where({"Mesh", "Face sets", name}) + ": the box and normal select no face of " +
+                          (from.empty() ? std::string("the boundary") : "'" + from + "'"));
+    m.faceSets[name] = std::move(selected);
   }
   return m;
 }

@@ -126,6 +126,28 @@ TEST(BoxGenerator, SidesPartitionTheBoundary) {
   EXPECT_EQ(sides, boundary);
 }
 
+// Selecting boundary faces by the way they face: on a box each side is the set of boundary faces
+// whose outward normal is that side's axis; a diagonal direction with cos 45 deg picks two sides.
+TEST(HexMesh, FacesFacingSelectsSidesByOutwardNormal) {
+  const HexMesh mesh = unevenBox();
+  const std::vector<ElementFace> boundary = boundaryFaces(mesh);
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign : {-1, 1}) {
+      const Eigen::Vector3d d = sign * Eigen::Vector3d::Unit(axis);
+      auto expected = mesh.faceSet(kSides[2 * axis + (sign > 0)]);
+      std::sort(expected.begin(), expected.end());
+      EXPECT_EQ(facesFacing(mesh, boundary, 7.0 * d, 0.5), expected) << kSides[2 * axis + (sign > 0)];
+      for (const ElementFace &f : expected) EXPECT_NEAR(faceOutwardNormal(mesh, f).dot(d), 1.0, 1e-14);
+    }
+  // (1, 0, 1)/sqrt(2): xmax and zmax have cosine 0.7071 >= 0.7, every other side 0 or less.
+  auto both = mesh.faceSet("xmax");
+  both.insert(both.end(), mesh.faceSet("zmax").begin(), mesh.faceSet("zmax").end());
+  std::sort(both.begin(), both.end());
+  EXPECT_EQ(facesFacing(mesh, boundary, {1, 0, 1}, 0.7), both);
+  EXPECT_TRUE(facesFacing(mesh, boundary, {1, 0, 1}, 0.71).empty());
+  EXPECT_THROW(facesFacing(mesh, boundary, Eigen::Vector3d::Zero(), 0.0), std::invalid_argument);
+}
+
 TEST(BoxGenerator, NamedPointOnlyOrigin) {
   const HexMesh mesh = unevenBox();
   ASSERT_EQ(mesh.namedPoints.size(), std::size_t{1});

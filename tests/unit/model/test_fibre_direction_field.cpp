@@ -87,3 +87,47 @@ TEST(FibreDirectionField, FileErrorsNameFileAndLine) {
   EXPECT_THROW(model::directionsFromFile("/nonexistent/fibres.txt", model::DirectionsPer::Element, m, {0}),
                std::runtime_error);
 }
+
+// Polylines: each element takes the direction of the segment nearest to its centroid, oriented
+// from the segment's first vertex to its second.
+TEST(FibreDirectionField, StraightPolylineGivesItsDirection) {
+  const auto m = twoCells();
+  // One straight fibre along (1, 2, 2)/3 through the box, in three segments, far from neither.
+  const Eigen::Vector3d a(-1, -1, -1), d = Eigen::Vector3d(1, 2, 2) / 3.0;
+  const model::Polylines lines{{a, a + 1.0 * d, a + 2.5 * d, a + 6.0 * d}};
+  const auto N = model::polylineDirections(m, {0, 1}, lines);
+  ASSERT_EQ(N.size(), 2u);
+  for (const auto &n : N) EXPECT_LT((n - d).norm(), 1e-15) << n.transpose();
+  // Reversing the vertex order reverses the direction (the documented sign convention).
+  const model::Polylines reversed{{a + 6.0 * d, a + 2.5 * d, a + 1.0 * d, a}};
+  EXPECT_LT((model::polylineDirections(m, {1}, reversed)[0] + d).norm(), 1e-15);
+}
+
+TEST(FibreDirectionField, NearestSegmentIsChosen) {
+  // Two fibres: one along x at height z = 0, one along y at height z = 1 (an L-shaped polyline
+  // in the plane z = 1 whose second leg runs along z).
+  const model::Polylines lines{{{0, 0, 0}, {4, 0, 0}},
+                               {{0, 0, 1}, {0, 4, 1}, {0, 4, 5}}};
+  // Nearer the first fibre (distance 0.2 against 2.15).
+  EXPECT_LT((model::nearestSegmentDirection(lines, {2, 0, 0.2}) - Eigen::Vector3d::UnitX()).norm(), 1e-15);
+  // Nearer the second fibre's first segment (distance 0.14 against 2.19 and 2.0).
+  EXPECT_LT((model::nearestSegmentDirection(lines, {0.1, 2, 0.9}) - Eigen::Vector3d::UnitY()).norm(), 1e-15);
+  // Past the end of the first leg: the distance is to the closed segment, so the vertical leg
+  // (distance 0.5) wins over the first leg's end point (distance 1.58).
+  EXPECT_LT((model::nearestSegmentDirection(lines, {0, 4.5, 2.5}) - Eigen::Vector3d::UnitZ()).norm(), 1e-15);
+  // Per element: the box's two centroids (0.5, .5, .5) and (1.5, .5, .5), with a fibre along z
+  // through x = 1.6 and one along y at x = 0.4: each element takes the nearer one.
+  const model::Polylines two{{{0.4, -1, 0.5}, {0.4, 2, 0.5}}, {{1.6, 0.5, -1}, {1.6, 0.5, 2}}};
+  const auto N = model::polylineDirections(twoCells(), {0, 1}, two);
+  EXPECT_LT((N[0] - Eigen::Vector3d::UnitY()).norm(), 1e-15);
+  EXPECT_LT((N[1] - Eigen::Vector3d::UnitZ()).norm(), 1e-15);
+}
+
+TEST(FibreDirectionField, PolylinesWithoutASegmentAreRefused) {
+  EXPECT_THROW(model::nearestSegmentDirection({}, Eigen::Vector3d::Zero()), std::invalid_argument);
+  EXPECT_THROW(model::nearestSegmentDirection({{{1, 1, 1}, {1, 1, 1}}}, Eigen::Vector3d::Zero()),
+               std::invalid_argument);
+  // A zero-length segment is skipped, not taken as a direction.
+  const model::Polylines lines{{{0, 0, 0}, {0, 0, 0}, {0, 0, 3}}};
+  EXPECT_LT((model::nearestSegmentDirection(lines, {0, 0, -1}) - Eigen::Vector3d::UnitZ()).norm(), 1e-15);
+}
