@@ -11,6 +11,7 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/ResultWriter.hpp"
@@ -58,8 +59,10 @@ double peakMemoryMegabytes() {
 // Writes the fields of one converged step (rank 0 writes; every rank gathers).
 class Recorder {
 public:
-  Recorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields)
-      : assembler_(assembler), root_(assembler.comm()->getRank() == 0), fields_(fields) {
+  // `writer`: this rank writes the files (rank 0 of the world; with control groups every group
+  // records, collectively on its own communicator, but only one rank writes).
+  Recorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields, bool writer)
+      : assembler_(assembler), root_(writer), fields_(fields) {
     if (!root_) return;
     const auto &mesh = assembler.scene().mesh;
     if (fields_) results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.nodes, mesh.elements);
@@ -200,8 +203,22 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   const materials::VolumetricEnergy physicalVolumetric = scene.volumetric;
   scene.volumetric = scene.volumetric.withKappa(UzawaLoop::tangentKappa(incompressibility, scene.volumetric.kappa(), mu));
 
-  auto assembler = Teuchos::rcp(new assembly::Assembler(scene, comm));
-  LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), comm->getSize(),
+  // Control groups: the world splits into G groups of equal size, each with its own copy of
+  // the whole solver on a sub-communicator (every group steps the same committed state; GA
+  // candidates are dealt out among the groups and the winner's state is broadcast).
+  const int controlGroups = options.controlGroups;
+  if (controlGroups < 1 || comm->getSize() % controlGroups != 0)
+    throw io::DeckError("--control-groups " + std::to_string(controlGroups) +
+                                " must be at least 1 and divide the number of ranks (" +
+                                std::to_string(comm->getSize()) + ")");
+  const int groupSize = comm->getSize() / controlGroups;
+  const int myGroup = comm->getRank() / groupSize;
+  const Teuchos::RCP<const Teuchos::Comm<int>> solverComm =
+      controlGroups == 1 ? comm : Teuchos::RCP<const Teuchos::Comm<int>>(comm->split(myGroup, comm->getRank()));
+  const bool groupRoot = solverComm->getRank() == 0;
+
+  auto assembler = Teuchos::rcp(new assembly::Assembler(scene, solverComm));
+  LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), solverComm->getSize(),
                               assembler->layout().numGlobalDofs(), scene.symmetricTangent};
   const auto &linearSection = D.sublist("Linear solver");
   auto model = Teuchos::rcp(new assembly::ModelEvaluator(assembler, buildLinearSolver(linearSection, context)));
@@ -216,7 +233,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
                                   : options.outputDirectory;
   if (root) std::filesystem::create_directories(dir);
   comm->barrier();
-  Recorder recorder(*assembler, dir, D.sublist("Output").get<bool>("fields"));
+  Recorder recorder(*assembler, dir, D.sublist("Output").get<bool>("fields"), root);
   const int every = D.sublist("Output").get<int>("every");
 
   std::unique_ptr<io::SummaryWriter> summary;
@@ -225,6 +242,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   doc["converged"] = false;
   doc["running"] = true;
   doc["ranks"] = comm->getSize();
+  doc["control_groups"] = controlGroups;
   doc["dofs"] = assembler->layout().numGlobalDofs();
   doc["elements"] = scene.mesh.numElements();
   doc["incompressibility"] = incompressibility.get<std::string>("method");
@@ -319,6 +337,9 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   // that keep the control points at their reference positions (eq. 25), each candidate a full
   // step solve from the committed state; the winner's state is committed.
   const ControlSetup control = buildControl(deck, scene);
+  if (controlGroups > 1 && !(control.enabled && control.parameters.type == control::ControllerType::geneticAlgorithm))
+    throw io::DeckError("--control-groups " + std::to_string(controlGroups) +
+                                " needs Control/type = genetic algorithm (the candidates it shares out)");
   std::unique_ptr<io::KeyedCsvWriter> controls;
   if (control.enabled && root)
     controls = std::make_unique<io::KeyedCsvWriter>(
@@ -337,6 +358,98 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     double sensitivityCheck = -1.0; // verify sensitivities: max |S - S_fd| / max |S_fd| (-1: not checked)
     std::string stop;
     Eigen::VectorXd pointErrors;
+  };
+  // Control groups: every group holds its own best candidate; the world's winner is the one with
+  // the least rank, the earliest evaluated among equals (the single-group rule), and its root
+  // broadcasts the winner's inputs, state and solve statistics to every rank.
+  auto shareWinner = [&](double &best, double &bestRank, long &bestIndex, std::vector<double> &bestInputs,
+                         assembly::Vector &uBest, std::vector<double> &lambdaBest, StepAttempt &attemptBest,
+                         Eigen::VectorXd &bestErrors, const control::ControlObjective &objective) {
+    std::vector<double> ranks(controlGroups, 0.0), indices(controlGroups, 0.0), all(controlGroups);
+    if (groupRoot) {
+      ranks[myGroup] = bestRank;
+      indices[myGroup] = static_cast<double>(bestIndex);
+    }
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, controlGroups, ranks.data(), all.data());
+    ranks = all;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, controlGroups, indices.data(), all.data());
+    indices = all;
+    int winner = 0;
+    for (int c = 1; c < controlGroups; ++c)
+      if (ranks[c] < ranks[winner] || (ranks[c] == ranks[winner] && indices[c] < indices[winner])) winner = c;
+    if (!std::isfinite(ranks[winner])) { // no candidate converged anywhere
+      best = bestRank = std::numeric_limits<double>::infinity();
+      return;
+    }
+    // Pack: [best, rank, index, inputs..., u (all nodes)..., lambda (all elements)..., the solve's
+    // statistics and Newton histories].
+    std::vector<double> pack;
+    if (myGroup == winner) {
+      const std::vector<double> uAll = assembler->gatherDisplacement(uBest);
+      const std::vector<double> lambdaAll = assembler->gatherElementField(lambdaBest, 1);
+      const UzawaResult &r = attemptBest.uzawa;
+      pack = {best, bestRank, static_cast<double>(bestIndex)};
+      pack.insert(pack.end(), bestInputs.begin(), bestInputs.end());
+      pack.insert(pack.end(), uAll.begin(), uAll.end());
+      pack.insert(pack.end(), lambdaAll.begin(), lambdaAll.end());
+      for (double v : {double(r.converged), double(r.elementInverted), double(r.solves), double(r.newtonIterations),
+                       double(r.linearIterations), r.dilatation.max, r.dilatation.mean, r.dilatation.maxVolumeChange,
+                       double(r.newton.size())})
+        pack.push_back(v);
+      for (const auto &n : r.newton) {
+        for (double v : {double(n.converged), double(n.iterations), double(n.linearIterations),
+                         double(n.residualNorms.size()), double(n.linearIterationsPerStep.size())})
+          pack.push_back(v);
+        pack.insert(pack.end(), n.residualNorms.begin(), n.residualNorms.end());
+        pack.insert(pack.end(), n.linearIterationsPerStep.begin(), n.linearIterationsPerStep.end());
+      }
+    }
+    const int from = winner * groupSize;
+    int size = static_cast<int>(pack.size());
+    Teuchos::broadcast(*comm, from, Teuchos::outArg(size));
+    pack.resize(static_cast<std::size_t>(size));
+    Teuchos::broadcast(*comm, from, size, pack.data());
+    std::size_t k = 0;
+    auto take = [&](std::size_t n) {
+      std::vector<double> v(pack.begin() + static_cast<long>(k), pack.begin() + static_cast<long>(k + n));
+      k += n;
+      return v;
+    };
+    best = pack[0];
+    bestRank = pack[1];
+    bestIndex = static_cast<long>(pack[2]);
+    k = 3;
+    bestInputs = take(scene.muscles.groups.size());
+    const std::vector<double> uAll = take(3 * scene.mesh.numNodes());
+    assembler->scatterDisplacement(uAll, uBest);
+    lambdaBest = assembler->localElementValues(take(scene.mesh.numElements()));
+    UzawaResult r;
+    const auto head = take(9);
+    r.converged = head[0] != 0.0;
+    r.elementInverted = head[1] != 0.0;
+    r.solves = static_cast<int>(head[2]);
+    r.newtonIterations = static_cast<int>(head[3]);
+    r.linearIterations = static_cast<int>(head[4]);
+    r.dilatation = {head[5], head[6], head[7]};
+    for (int i = 0; i < static_cast<int>(head[8]); ++i) {
+      const auto h = take(5);
+      NewtonResult n;
+      n.converged = h[0] != 0.0;
+      n.iterations = static_cast<int>(h[1]);
+      n.linearIterations = static_cast<int>(h[2]);
+      n.residualNorms = take(static_cast<std::size_t>(h[3]));
+      for (double v : take(static_cast<std::size_t>(h[4]))) n.linearIterationsPerStep.push_back(static_cast<int>(v));
+      r.newton.push_back(n);
+    }
+    attemptBest = StepAttempt{};
+    attemptBest.uzawa = r;
+    attemptBest.ok = true;
+    Eigen::Matrix3Xd x(3, control.pointNodes.size());
+    for (std::size_t p = 0; p < control.pointNodes.size(); ++p) {
+      const auto n = control.pointNodes[p];
+      x.col(p) = scene.mesh.nodes[n] + Eigen::Vector3d(uAll[3 * n], uAll[3 * n + 1], uAll[3 * n + 2]);
+    }
+    bestErrors = objective.evaluate(x).distance;
   };
   auto controlledStep = [&](int stepIndex, double tNew, double dt, assembly::Vector &uTrial,
                             std::vector<double> &lambdaTrial, StepAttempt &attempt, ControlOutcome &outcome) {
@@ -372,6 +485,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     // every earlier one by `rank` (the GA: eq. 25; the gradient controller: the sum of squares it
     // minimises) keeps its state, so the winner's state is at hand when the search ends.
     double best = std::numeric_limits<double>::infinity(), bestRank = best;
+    long bestIndex = -1; // the winner's position in the order of evaluation (control groups)
     std::vector<double> bestInputs;
     assembly::Vector uBest(u, Teuchos::Copy);
     std::vector<double> lambdaBest;
@@ -382,7 +496,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
         if (std::find(control.groups.begin(), control.groups.end(), static_cast<int>(g)) != control.groups.end())
           history.overrideInput(static_cast<int>(g), inputs[g]);
     };
-    auto solveCandidate = [&](const std::vector<double> &inputs, bool rankByObjective) {
+    auto solveCandidate = [&](const std::vector<double> &inputs, bool rankByObjective, long index) {
       apply(inputs);
       assembly::Vector uC(u, Teuchos::Copy);
       std::vector<double> lambdaC = lambda;
@@ -410,6 +524,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
       const double rank = !e.ok ? e.objective : rankByObjective ? e.objective : e.residual.squaredNorm();
       if (rank < bestRank) {
         bestRank = rank;
+        bestIndex = index;
         best = e.objective;
         bestInputs = inputs;
         uBest.assign(uC);
@@ -423,11 +538,22 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     for (std::size_t i = 0; i < control.groups.size() && i < previousBest.size(); ++i)
       previousInputs[control.groups[i]] = previousBest[i];
     if (control.parameters.type == control::ControllerType::geneticAlgorithm) {
+      long evaluatedSoFar = 0;
       auto evaluate = [&](const std::vector<control::Genome> &genomes) {
-        std::vector<double> values;
-        for (const auto &genome : genomes)
-          values.push_back(solveCandidate(control::inputsFromGenome(evaluated, genome, G), true).objective);
-        return values;
+        // Candidate i of the batch is solved by control group i mod G; the objectives are summed
+        // over the world from each group's root (every other entry 0), so all ranks see all.
+        std::vector<double> values(genomes.size(), 0.0);
+        for (std::size_t i = 0; i < genomes.size(); ++i)
+          if (static_cast<int>(i % static_cast<std::size_t>(controlGroups)) == myGroup)
+            values[i] = solveCandidate(control::inputsFromGenome(evaluated, genomes[i], G), true,
+                                       evaluatedSoFar + static_cast<long>(i))
+                            .objective;
+        evaluatedSoFar += static_cast<long>(genomes.size());
+        if (controlGroups == 1) return values;
+        if (!groupRoot) std::fill(values.begin(), values.end(), 0.0);
+        std::vector<double> all(values.size(), 0.0);
+        Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(values.size()), values.data(), all.data());
+        return all;
       };
       control::GeneticAlgorithmParameters gaParameters = control.parameters.ga;
       gaParameters.seed += static_cast<std::uint64_t>(stepIndex); // fresh draws per control step
@@ -436,6 +562,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
       if (control.parameters.seedWithPreviousBest && !previousBest.empty())
         seeds.push_back(control::genomeFromInputs(evaluated, previousInputs));
       const auto result = ga.minimise(evaluated.size(), evaluate, seeds);
+      if (controlGroups > 1) shareWinner(best, bestRank, bestIndex, bestInputs, uBest, lambdaBest, attemptBest, bestErrors, objective);
       outcome.candidates = result.evaluations;
       outcome.generations = result.generations;
       outcome.stop = control::toString(result.stopReason);
@@ -446,7 +573,8 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
         for (std::size_t i = 0; i < evaluated.size(); ++i) inputs[evaluated[i]] = v(static_cast<Eigen::Index>(i));
         return inputs;
       };
-      auto evaluate = [&](const Eigen::VectorXd &v) { return solveCandidate(inputsOf(v), false); };
+      long evaluatedSoFar = 0;
+      auto evaluate = [&](const Eigen::VectorXd &v) { return solveCandidate(inputsOf(v), false, evaluatedSoFar++); };
       auto sensitivity = [&](const Eigen::VectorXd &v) {
         if (inputsOf(v) != bestInputs)
           throw std::logic_error("gradient controller: sensitivity asked away from the accepted state");

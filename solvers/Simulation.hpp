@@ -22,6 +22,9 @@ void declareSolverParameters(Teuchos::ParameterList &schema);
 struct RunOptions {
   std::filesystem::path outputDirectory; // empty: the deck's Output/directory
   bool quiet = false;
+  // The ranks split into this many groups, each solving GA candidates on its own
+  // sub-communicator (issue 5); must divide the rank count. 1: every rank solves every candidate.
+  int controlGroups = 1;
 };
 
 // Runs the deck; returns the summary that was written to summary.json. Collective.

@@ -24,9 +24,12 @@ const char *kUsage = R"(glossa - finite elements for nearly incompressible, fibr
 
 usage:
   glossa run DECK.xml [--output DIR] [--set path/to/parameter=value ...] [--quiet] [--timers]
+             [--control-groups G]
       run a deck; results (results.xdmf/.h5, traces.csv, summary.json) go to DIR
       (default: the deck's Output/directory). Under mpiexec -np N it runs on N ranks.
       --timers prints Trilinos' timers (MueLu set-up, Belos solve) at the end.
+      --control-groups G splits the N ranks into G groups that solve the genetic
+      algorithm's candidates concurrently, N/G ranks each (G must divide N).
   glossa validate DECK.xml [--set path=value ...]
       check a deck (parameters, and the mesh sets and points it names) and print it with
       every default filled in
@@ -55,6 +58,7 @@ struct Arguments {
   bool quiet = false, markdown = false, timers = false, json = false;
   std::string format = "auto";
   int refine = 0;
+  int controlGroups = 1;
 };
 
 Arguments parse(int argc, char **argv) {
@@ -83,6 +87,16 @@ Arguments parse(int argc, char **argv) {
         if (used != v.size() || a.refine < 0 || a.refine > 4) throw std::invalid_argument(v);
       } catch (const std::exception &) {
         throw glossa::io::DeckError("--refine needs an integer in [0, 4], got '" + v + "'");
+      }
+    }
+    else if (s == "--control-groups") {
+      const std::string v = value("--control-groups");
+      try {
+        std::size_t used = 0;
+        a.controlGroups = std::stoi(v, &used);
+        if (used != v.size() || a.controlGroups < 1) throw std::invalid_argument(v);
+      } catch (const std::exception &) {
+        throw glossa::io::DeckError("--control-groups needs a positive integer, got '" + v + "'");
       }
     }
     else if (!s.empty() && s[0] == '-') throw glossa::io::DeckError("unknown option " + s + "; see glossa --help");
@@ -157,7 +171,7 @@ int main(int argc, char **argv) {
     }
     if (a.command == "run") {
       const auto deck = loadDeck(a, schema);
-      const auto summary = glossa::solvers::runSimulation(deck, comm, {a.output, a.quiet});
+      const auto summary = glossa::solvers::runSimulation(deck, comm, {a.output, a.quiet, a.controlGroups});
       if (a.timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
       return summary.value("converged", false) ? 0 : 1;
     }

@@ -505,6 +505,20 @@ std::vector<double> Assembler::gatherDisplacement(const Vector &u) const {
   return global;
 }
 
+void Assembler::scatterDisplacement(const std::vector<double> &all, Vector &u) const {
+  if (all.size() != 3 * scene_.mesh.numNodes()) throw std::invalid_argument("scatterDisplacement: wrong size");
+  auto data = u.getDataNonConst(0);
+  for (std::size_t i = 0; i < layout_.ownedNodes.size(); ++i)
+    for (int c = 0; c < 3; ++c) data[3 * i + c] = all[3 * layout_.ownedNodes[i] + c];
+}
+
+std::vector<double> Assembler::localElementValues(const std::vector<double> &all) const {
+  if (all.size() != scene_.mesh.numElements()) throw std::invalid_argument("localElementValues: wrong size");
+  std::vector<double> local(layout_.localElements.size());
+  for (std::size_t i = 0; i < local.size(); ++i) local[i] = all[layout_.localElements[i]];
+  return local;
+}
+
 std::vector<double> Assembler::gatherElementField(const std::vector<double> &values, int components) const {
   std::vector<double> local(components * scene_.mesh.numElements(), 0.0), global(local.size(), 0.0);
   for (std::size_t i = 0; i < layout_.localElements.size(); ++i)

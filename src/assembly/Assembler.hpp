@@ -107,6 +107,10 @@ public:
 
   // All nodal displacements by mesh node id (3 per node) on every rank. Collective.
   std::vector<double> gatherDisplacement(const Vector &u) const;
+  // The inverse of gatherDisplacement: the owned part of u from all nodal displacements.
+  void scatterDisplacement(const std::vector<double> &all, Vector &u) const;
+  // The local elements' entries of a per-mesh-element field (one component).
+  std::vector<double> localElementValues(const std::vector<double> &all) const;
   // A per-local-element field gathered by mesh element id on every rank. Collective.
   std::vector<double> gatherElementField(const std::vector<double> &local, int components) const;
 
