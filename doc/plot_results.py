@@ -5,7 +5,9 @@
         a `glossa point` CSV: stress, fibre and contractile stretch, tension and activation
     /usr/bin/python3 doc/plot_results.py run RESULTS_DIR doc/figures/PREFIX
         a run directory: PREFIX_displacement.png (every traced point, ux uy uz over time) and,
-        when the run has muscle groups, PREFIX_activation.png (alpha and FFMR per group)
+        when the run has muscle groups, PREFIX_activation.png (alpha and FFMR per group) and,
+        when it was controlled, PREFIX_controls.png (the chosen neural input per group, which
+        groups were searched, and the eq. 25 objective over time: a figure like the paper's Fig. 6)
 """
 import csv
 import os
@@ -96,6 +98,34 @@ def plot_run(directory, prefix):
     fig.tight_layout()
     fig.savefig(prefix + "_activation.png", dpi=120)
     print("wrote", prefix + "_activation.png")
+    controls = os.path.join(directory, "controls.csv")
+    if os.path.exists(controls):
+        plot_controls(columns(controls), prefix + "_controls.png")
+
+
+def plot_controls(rows, png):
+    groups = defaultdict(lambda: ([], [], []))
+    objective = {}
+    for r in rows:
+        g = groups[r["group"]]
+        g[0].append(float(r["time"]))
+        g[1].append(float(r["u"]))
+        g[2].append(float(r["evaluated"]))
+        objective[float(r["time"])] = float(r["objective"])
+    fig, axes = plt.subplots(len(groups) + 1, 1, figsize=(7, 1.5 * (len(groups) + 1)), sharex=True)
+    for ax, (name, (t, u, searched)) in zip(axes, groups.items()):
+        ax.step(t, u, where="post", color="C0", label="input u")
+        ax.fill_between(t, 0, searched, step="post", color="C1", alpha=0.15, label="searched")
+        ax.set_ylim(-0.05, 1.05)
+        ax.set_ylabel(name)
+    axes[0].legend(fontsize=7, loc="upper right")
+    t = sorted(objective)
+    axes[-1].semilogy(t, [max(objective[x], 1e-12) * 1e6 for x in t], color="C2")
+    axes[-1].set_ylabel("eq. 25 [um]")
+    axes[-1].set_xlabel("time [s]")
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    print("wrote", png)
 
 
 if __name__ == "__main__":
