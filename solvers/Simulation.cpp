@@ -243,6 +243,16 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   doc["running"] = true;
   doc["ranks"] = comm->getSize();
   doc["control_groups"] = controlGroups;
+  {
+    // The partition's balance (per rank of a control group).
+    std::vector<double> mine(solverComm->getSize(), 0.0), all(mine.size(), 0.0);
+    mine[solverComm->getRank()] = static_cast<double>(assembler->numLocalElements());
+    Teuchos::reduceAll(*solverComm, Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(), all.data());
+    doc["elements_per_rank"] = all;
+    doc["partitioner"] = scene.partitioner == model::Partitioner::coordinateBisection ? "coordinate bisection"
+                         : scene.partitioner == model::Partitioner::zoltan2Rcb        ? "Zoltan2 RCB"
+                                                                                       : "Zoltan2 multijagged";
+  }
   doc["dofs"] = assembler->layout().numGlobalDofs();
   doc["elements"] = scene.mesh.numElements();
   doc["incompressibility"] = incompressibility.get<std::string>("method");

@@ -1,4 +1,5 @@
 #include "assembly/Assembler.hpp"
+#include "assembly/ZoltanPartition.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,11 @@ Teuchos::RCP<const Map> makeMap(const std::vector<GlobalIndex> &gids, Tpetra::gl
 Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
     : scene_(scene), comm_(std::move(comm)) {
   const mesh::HexMesh &mesh = scene_.mesh;
-  layout_ = buildDofLayout(mesh, comm_->getRank(), comm_->getSize());
+  std::vector<int> owner;
+  if (scene_.partitioner != model::Partitioner::coordinateBisection && comm_->getSize() > 1)
+    owner = partitionElementsWithZoltan2(mesh, comm_,
+                                         scene_.partitioner == model::Partitioner::zoltan2Rcb ? "rcb" : "multijagged");
+  layout_ = buildDofLayout(mesh, comm_->getRank(), comm_->getSize(), std::move(owner));
   ownedMap_ = makeMap(layout_.ownedDofs, layout_.numGlobalDofs(), comm_);
   overlapMap_ = makeMap(layout_.overlapDofs, Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), comm_);
   importer_ = Teuchos::rcp(new Import(ownedMap_, overlapMap_));

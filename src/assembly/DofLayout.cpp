@@ -3,16 +3,19 @@
 #include <algorithm>
 #include <limits>
 #include <set>
+#include <stdexcept>
 
 #include "mesh/Partition.hpp"
 
 namespace glossa::assembly {
 
-DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks) {
+DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks, std::vector<int> elementOwner) {
   DofLayout L;
   L.rank = rank;
   L.ranks = ranks;
-  L.elementOwner = mesh::partitionElements(mesh, ranks);
+  if (!elementOwner.empty() && elementOwner.size() != mesh.numElements())
+    throw std::invalid_argument("buildDofLayout: an owner per element is needed");
+  L.elementOwner = elementOwner.empty() ? mesh::partitionElements(mesh, ranks) : std::move(elementOwner);
   L.nodeOwner.assign(mesh.numNodes(), std::numeric_limits<int>::max());
   for (std::size_t e = 0; e < mesh.numElements(); ++e)
     for (mesh::NodeId n : mesh.elements[e]) L.nodeOwner[n] = std::min(L.nodeOwner[n], L.elementOwner[e]);

@@ -1,7 +1,7 @@
 #pragma once
 // Which rank owns which element, node and degree of freedom, without Trilinos. The mesh is
 // replicated on every rank, so every rank computes the same layout without communication:
-// elements are partitioned geometrically (mesh/Partition), a node belongs to the lowest rank
+// elements are partitioned geometrically (mesh/Partition, or given, from Zoltan2), a node belongs to the lowest rank
 // among its elements, and nodes are renumbered rank by rank so that every rank owns one
 // contiguous range of global dofs (dof = 3 * node + component).
 
@@ -29,6 +29,7 @@ struct DofLayout {
   GlobalIndex numGlobalDofs() const { return 3 * static_cast<GlobalIndex>(nodeNumber.size()); }
 };
 
-DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks);
+// `elementOwner`: the owner of every element (e.g. from Zoltan2); empty: the built-in bisection.
+DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks, std::vector<int> elementOwner = {});
 
 } // namespace glossa::assembly

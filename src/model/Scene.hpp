@@ -52,8 +52,13 @@ struct FollowerPressureLoad {
   loads::PressureField pressure = loads::PressureField::uniform(0.0);
 };
 
+// How elements are shared out among ranks: the built-in coordinate bisection (mesh/Partition) or
+// Zoltan2's geometric partitioners (assembly/ZoltanPartition).
+enum class Partitioner { coordinateBisection, zoltan2MultiJagged, zoltan2Rcb };
+
 struct Scene {
   mesh::HexMesh mesh;
+  Partitioner partitioner = Partitioner::coordinateBisection;
   // The matrix law: the whole material where no fibres are; its shear modulus scales the
   // penalty. Fibres and muscle groups (with the matrix in their point laws) are in `muscles`.
   std::shared_ptr<const materials::IsochoricMaterial> material;

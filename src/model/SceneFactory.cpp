@@ -29,6 +29,10 @@ ParameterList meshParameters() {
   ParameterList p;
   io::declareString(p, "type", "box", "a built-in generator, or file (doc/meshes.md)",
                     {"box", "cook-membrane", "thick cylinder", "file"});
+  io::declareString(p, "partitioner", "auto",
+                    "how elements are shared out among MPI ranks: auto (Zoltan2 multijagged for a mesh file, "
+                    "the built-in coordinate bisection for the generated meshes), or named",
+                    {"auto", "coordinate bisection", "Zoltan2 multijagged", "Zoltan2 RCB"});
   ParameterList &file = p.sublist("File", false, "a mesh read from a file (type = file)");
   io::declareString(file, "path", "", "the mesh file, relative to the deck (ANSYS: the .node or the .elem)");
   io::declareString(file, "format", "auto", "by extension (.msh gmsh, .inp abaqus, .node/.elem ansys), or named",
@@ -271,6 +275,15 @@ Scene buildScene(const io::Deck &deck, double endTime) {
   scene.density = material.density;
   scene.volumetric = material.volumetric;
   scene.formulation = material.plainQ1 ? ElementFormulation::PlainQ1 : ElementFormulation::Q1P0;
+  {
+    const ParameterList &m = deck.root().sublist("Mesh");
+    const std::string partitioner = m.get<std::string>("partitioner");
+    scene.partitioner = partitioner == "coordinate bisection" ? Partitioner::coordinateBisection
+                        : partitioner == "Zoltan2 RCB"        ? Partitioner::zoltan2Rcb
+                        : partitioner == "Zoltan2 multijagged" || m.get<std::string>("type") == "file"
+                            ? Partitioner::zoltan2MultiJagged
+                            : Partitioner::coordinateBisection;
+  }
   scene.symmetricTangent = material.symmetricTangent;
 
   const ParameterList &bcs = deck.root().sublist("Boundary conditions");
