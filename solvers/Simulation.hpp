@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 #include <Teuchos_Comm.hpp>
@@ -22,6 +23,9 @@ void declareSolverParameters(Teuchos::ParameterList &schema);
 struct RunOptions {
   std::filesystem::path outputDirectory; // empty: the deck's Output/directory
   bool quiet = false;
+  // If set, receives the last converged displacement of every node (3 per node, by mesh node),
+  // on every rank (glossa zero-strain).
+  std::vector<double> *finalDisplacement = nullptr;
 };
 
 // Runs the deck; returns the summary that was written to summary.json. Collective.

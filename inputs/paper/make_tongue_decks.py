@@ -65,9 +65,12 @@ class Xml:
         self.lines.append("  " * self.depth + p(name, typ, value))
 
 
-def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1):
+def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
+         reference=None, zero_strain=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
-    gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped)."""
+    gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
+    reference: None or a Mesh/reference coordinates file (relative to the deck);
+    zero_strain: None or {parameter: value} of the Zero strain section (glossa zero-strain)."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -105,6 +108,8 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.add("box max", "Array(double)", "{1, 1, 1}")
     x.close()
     x.close()
+    if reference is not None:
+        x.add("reference coordinates file", "string", reference)
     x.close()  # Mesh
     x.open("Material")
     x.add("type", "string", "Fung")
@@ -175,6 +180,11 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.open("Incompressibility")
     x.add("method", "string", "augmented Lagrangian")
     x.close()
+    if zero_strain is not None:
+        x.open("Zero strain")
+        for key, (typ, value) in zero_strain.items():
+            x.add(key, typ, value)
+        x.close()
     x.open("Output")
     x.add("directory", "string", f"results/{name}")
     x.add("every", "int", output_every)
@@ -217,3 +227,28 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
 Gravity {posture}: along {vec(g)} in this mesh's axes. Every muscle group passive (u = 0).
 Expected (paper): supine moves the tongue posteriorly; the pressure draws it backwards.""",
          {}, gravity=g, pressure=-500.0, end_time=2.0, step=0.25)
+
+ZERO_STRAIN = """
+Passive (no activation): upright gravity, along {0, 0, -1.0} in this mesh's axes, ramped over
+[0, 1] s in four steps. Every muscle group passive (u = 0)."""
+# The forward deck of the zero-strain study: glossa zero-strain reads its gravity and Zero strain
+# section; with a reference coordinates file it is the s8_1 check (gravity on X0 returns X_img).
+deck("s8_1_upright", "Paper §8.1 (Fig. 7a): the tongue under upright gravity, the forward problem of the\n"
+     "zero-strain configuration. On the imaged geometry as read; glossa zero-strain computes the\n"
+     "zero-strain configuration from this deck (doc/tongue.md, s8_1):\n"
+     "  build/glossa zero-strain inputs/paper/s8_1_upright.xml method approximate or inverse\n"
+     "which writes the reference coordinates that s8_1_approximate.xml and s8_1_inverse.xml use.\n" + COMMON + ZERO_STRAIN,
+     {}, gravity=(0, 0, -1), end_time=1.0, step=0.25,
+     zero_strain={"gravity factor": ("double", 1.2), "tolerance": ("double", 1e-3),
+                  "maximum iterations": ("int", 10)})
+for method in ("approximate", "inverse"):
+    what = ("the paper's approximation: the imaged geometry deformed by 1.2 g opposite to gravity"
+            if method == "approximate" else
+            "the iterative inverse: reference coordinates updated until gravity maps them onto the\n"
+            "imaged geometry, to 1e-3 of the mean element edge")
+    deck(f"s8_1_{method}", f"Paper §8.1 (Fig. 7a): upright gravity on the zero-strain configuration, {method}:\n"
+         f"{what}. The reference coordinates are s8_1/reference_{method}.txt, written by\n"
+         f"  build/glossa zero-strain inputs/paper/s8_1_upright.xml, method {method}, output that file.\n"
+         "The configuration under gravity should return the imaged geometry (doc/tongue.md gives the\n"
+         "distances).\n" + COMMON + ZERO_STRAIN,
+         {}, gravity=(0, 0, -1), end_time=1.0, step=0.25, reference=f"s8_1/reference_{method}.txt")
