@@ -247,7 +247,7 @@ for method in ("approximate", "inverse"):
             "the iterative inverse: reference coordinates updated until gravity maps them onto the\n"
             "imaged geometry, to 1e-3 of the mean element edge")
     deck(f"s8_1_{method}", f"Paper §8.1 (Fig. 7a): upright gravity on the zero-strain configuration, {method}:\n"
-         f"{what}. The reference coordinates are s8_1/reference_{method}.txt, written by\n"
+         f"{what}.\nThe reference coordinates are s8_1/reference_{method}.txt, written by\n"
          f"  build/glossa zero-strain inputs/paper/s8_1_upright.xml, method {method}, output that file.\n"
          "The configuration under gravity should return the imaged geometry (doc/tongue.md gives the\n"
          "distances).\n" + COMMON + ZERO_STRAIN,
