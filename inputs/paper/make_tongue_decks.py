@@ -66,11 +66,12 @@ class Xml:
 
 
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
-         reference=None, zero_strain=None):
+         reference=None, zero_strain=None, breathing_start=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
-    zero_strain: None or {parameter: value} of the Zero strain section (glossa zero-strain)."""
+    zero_strain: None or {parameter: value} of the Zero strain section (glossa zero-strain).
+    breathing_start: None (the pressure ramps over [1, 2] s) or when eq. 27's first breath starts."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -161,9 +162,15 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.add("P_A", "Array(double)", vec(P_A))
         x.add("P_P", "Array(double)", vec(P_P))
         x.open("time function")
-        x.add("type", "string", "table")
-        x.add("times", "Array(double)", "{0, 1, 2}")
-        x.add("values", "Array(double)", "{0, 0, 1}")
+        if breathing_start is None:
+            x.add("type", "string", "table")
+            x.add("times", "Array(double)", "{0, 1, 2}")
+            x.add("values", "Array(double)", "{0, 0, 1}")
+        else:
+            x.add("type", "string", "breathing")
+            x.add("breathing period", "double", 2.5)
+            x.add("breathing exponent", "double", 1.75)
+            x.add("breathing start", "double", breathing_start)
         x.close()
         x.close()
     x.close()
@@ -252,3 +259,15 @@ for method in ("approximate", "inverse"):
          "The configuration under gravity should return the imaged geometry (doc/tongue.md gives the\n"
          "distances).\n" + COMMON + ZERO_STRAIN,
          {}, gravity=(0, 0, -1), end_time=1.0, step=0.25, reference=f"s8_1/reference_{method}.txt")
+
+BREATHING = """
+Passive breathing, no control (the baseline of the controlled s8_5 runs): gravity ramped over
+the first second, then three breaths of eq. 27 from t0 = 1.25 s, p = p_max max(sin(2 pi (t - t0)/T), 0)^1.75
+with T = 2.5 s and p_max = -350 Pa (suction) on the face set 'airway', linear from 0 at P_A to
+p_max at P_P, until 8.75 s. On the imaged geometry (no zero-strain configuration). Steps of
+T/8 = 0.3125 s (coarse, for the regression test), which land on every peak (t0 + T/4 + kT)."""
+for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
+    deck(f"s8_5_passive_{posture}", f"Paper §8.5 (Figs. 11 and 12): {posture} posture, three 350 Pa breathing cycles.\n" +
+         COMMON + BREATHING + f"""
+Gravity {posture}: along {vec(g)} in this mesh's axes. Every muscle group passive (u = 0).""",
+         {}, gravity=g, pressure=-350.0, end_time=8.75, step=0.3125, breathing_start=1.25)
