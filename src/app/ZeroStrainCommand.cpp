@@ -46,15 +46,16 @@ Distance distance(const std::vector<Eigen::Vector3d> &x, const std::vector<Eigen
   if (!x.empty()) d.mean /= static_cast<double>(x.size());
   return d;
 }
-} // namespace
+}  // namespace
 
 Teuchos::ParameterList zeroStrainParameters() {
   Teuchos::ParameterList p;
-  io::declareString(p, "method", "inverse",
-                    "glossa zero-strain: approximate (the paper, §8.1: the imaged geometry deformed by the "
-                    "deck's gravity reversed and scaled by 'gravity factor') or inverse (fixed-point update of "
-                    "the reference coordinates until the deck's gravity maps them onto the imaged geometry)",
-                    {"approximate", "inverse"});
+  io::declareString(
+      p, "method", "inverse",
+      "glossa zero-strain: approximate (the paper, §8.1: the imaged geometry deformed by the "
+      "deck's gravity reversed and scaled by 'gravity factor') or inverse (fixed-point update of "
+      "the reference coordinates until the deck's gravity maps them onto the imaged geometry)",
+      {"approximate", "inverse"});
   io::declareDouble(p, "gravity factor", 1.2, "",
                     "approximate: the reversed gravity is this multiple of the deck's (the paper: 1.2)",
                     io::Range::positive());
@@ -74,16 +75,18 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   const auto &D = deck.root();
   const auto &z = D.sublist("Zero strain");
   if (!D.sublist("Mesh").get<std::string>("reference coordinates file").empty())
-    throw io::DeckError(deck.where({"Mesh", "reference coordinates file"}) +
-                        ": glossa zero-strain starts from the mesh as read (the imaged geometry); leave it empty");
+    throw io::DeckError(
+        deck.where({"Mesh", "reference coordinates file"}) +
+        ": glossa zero-strain starts from the mesh as read (the imaged geometry); leave it empty");
   const auto &loads = D.sublist("Loads");
   int gravityLoads = 0;
   for (auto it = loads.begin(); it != loads.end(); ++it) {
     const std::string &name = loads.name(it);
     if (loads.sublist(name).get<std::string>("type") != "gravity")
-      throw io::DeckError(deck.where({"Loads", name, "type"}) + ": glossa zero-strain needs a deck loaded by gravity "
-                          "alone (the configuration gravity maps onto the imaged geometry); '" + name + "' is a " +
-                          loads.sublist(name).get<std::string>("type") + " load");
+      throw io::DeckError(deck.where({"Loads", name, "type"}) +
+                          ": glossa zero-strain needs a deck loaded by gravity "
+                          "alone (the configuration gravity maps onto the imaged geometry); '" +
+                          name + "' is a " + loads.sublist(name).get<std::string>("type") + " load");
     ++gravityLoads;
   }
   if (gravityLoads == 0)
@@ -107,7 +110,9 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   auto forward = [&](const io::Deck &base, const std::vector<Eigen::Vector3d> &X, const std::string &label) {
     const auto t0 = Clock::now();
     const std::filesystem::path file = std::filesystem::absolute(runs / (label + "_reference.txt"));
-    if (root) mesh::writeReferenceCoordinates(file.string(), X, {"glossa zero-strain: the reference of run " + label});
+    if (root)
+      mesh::writeReferenceCoordinates(file.string(), X,
+                                      {"glossa zero-strain: the reference of run " + label});
     comm->barrier();
     io::Deck d = base;
     d.root().sublist("Mesh").set("reference coordinates file", file.string());
@@ -122,10 +127,11 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
     return std::make_pair(displaced(X, u), since(t0));
   };
   auto record = [&](const std::string &label, const Distance &d, double seconds) {
-    result.history.push_back({{"run", label}, {"max_distance", d.max}, {"mean_distance", d.mean}, {"seconds", seconds}});
+    result.history.push_back(
+        {{"run", label}, {"max_distance", d.max}, {"mean_distance", d.mean}, {"seconds", seconds}});
     if (root && !quiet)
-      std::printf("zero-strain: %-12s max |x - X_img| = %.4e m  mean %.4e m  (%.1f s)\n", label.c_str(), d.max, d.mean,
-                  seconds);
+      std::printf("zero-strain: %-12s max |x - X_img| = %.4e m  mean %.4e m  (%.1f s)\n", label.c_str(),
+                  d.max, d.mean, seconds);
   };
 
   std::vector<Eigen::Vector3d> X = Ximg;
@@ -140,7 +146,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
       Eigen::Vector3d a = loads::postureGravity(posture == "custom" ? "upright" : posture, g);
       if (posture == "custom") {
         const auto &d = l.get<Teuchos::Array<double>>("direction");
-        a = g * Eigen::Vector3d(d[0], d[1], d[2]).normalized(); // non-zero: buildScene checked it
+        a = g * Eigen::Vector3d(d[0], d[1], d[2]).normalized();  // non-zero: buildScene checked it
       }
       l.set("posture", std::string("custom"));
       l.set("direction", Teuchos::Array<double>(std::vector<double>{-a.x(), -a.y(), -a.z()}));
@@ -170,7 +176,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
         break;
       }
       if (k == maxIterations) break;
-      for (std::size_t n = 0; n < X.size(); ++n) X[n] += Ximg[n] - x[n]; // X_{k+1} = X_k + (X_img - x(X_k))
+      for (std::size_t n = 0; n < X.size(); ++n) X[n] += Ximg[n] - x[n];  // X_{k+1} = X_k + (X_img - x(X_k))
     }
   }
   result.seconds = since(start);
@@ -179,12 +185,12 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
 
   if (root) {
     char line[256];
-    std::snprintf(line, sizeof line, "under the deck's gravity: max |x - X_img| = %.6e m, mean %.6e m", result.maxDistance,
-                  result.meanDistance);
+    std::snprintf(line, sizeof line, "under the deck's gravity: max |x - X_img| = %.6e m, mean %.6e m",
+                  result.maxDistance, result.meanDistance);
     std::vector<std::string> header{"zero-strain configuration (DESIGN.md §8.1) of " + deck.file(),
                                     "method " + result.method + ", " + std::to_string(result.iterations) +
-                                        " iteration(s), " + std::to_string(result.solves) + " forward solves" +
-                                        (result.converged ? "" : ", TOLERANCE NOT MET"),
+                                        " iteration(s), " + std::to_string(result.solves) +
+                                        " forward solves" + (result.converged ? "" : ", TOLERANCE NOT MET"),
                                     line};
     mesh::writeReferenceCoordinates(output.string(), X, header);
     nlohmann::json report;
@@ -194,8 +200,10 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
     report["iterations"] = result.iterations;
     report["solves"] = result.solves;
     report["mesh_size"] = result.meshSize;
-    if (result.method == "inverse") report["tolerance"] = result.tolerance;
-    else report["gravity_factor"] = z.get<double>("gravity factor");
+    if (result.method == "inverse")
+      report["tolerance"] = result.tolerance;
+    else
+      report["gravity_factor"] = z.get<double>("gravity factor");
     report["max_distance"] = result.maxDistance;
     report["mean_distance"] = result.meanDistance;
     report["seconds"] = result.seconds;
@@ -204,11 +212,12 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
     json.replace_extension(".json");
     std::ofstream(json) << report.dump(2) << '\n';
     if (!quiet)
-      std::printf("zero-strain: %s, %d iteration(s), %d solves, %.1f s; wrote %s and %s\n", result.method.c_str(),
-                  result.iterations, result.solves, result.seconds, output.c_str(), json.c_str());
+      std::printf("zero-strain: %s, %d iteration(s), %d solves, %.1f s; wrote %s and %s\n",
+                  result.method.c_str(), result.iterations, result.solves, result.seconds, output.c_str(),
+                  json.c_str());
   }
   comm->barrier();
   return result;
 }
 
-} // namespace glossa::app
+}  // namespace glossa::app

@@ -9,13 +9,12 @@
 // Every solve is the deck's own run (solvers::runSimulation) with Mesh/reference coordinates file
 // pointing at the current iterate: no solver set-up is duplicated here.
 
-#include <filesystem>
-#include <string>
-#include <vector>
-
-#include <nlohmann/json.hpp>
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "io/deck/Deck.hpp"
 
@@ -26,16 +25,16 @@ Teuchos::ParameterList zeroStrainParameters();
 
 struct ZeroStrainResult {
   std::string method;
-  bool converged = false;        // inverse: the tolerance was met; approximate: always true
-  int iterations = 0;            // inverse: reference updates made; approximate: 1
-  int solves = 0;                // forward solves (runs of the deck), the check included
-  double meshSize = 0.0;         // h, mean element edge of the imaged geometry [m]
-  double tolerance = 0.0;        // inverse: absolute bound on the max distance [m]
-  double maxDistance = 0.0;      // max_n |x_n - X_img,n| of the stored configuration under gravity [m]
-  double meanDistance = 0.0;     // mean over the nodes [m]
+  bool converged = false;     // inverse: the tolerance was met; approximate: always true
+  int iterations = 0;         // inverse: reference updates made; approximate: 1
+  int solves = 0;             // forward solves (runs of the deck), the check included
+  double meshSize = 0.0;      // h, mean element edge of the imaged geometry [m]
+  double tolerance = 0.0;     // inverse: absolute bound on the max distance [m]
+  double maxDistance = 0.0;   // max_n |x_n - X_img,n| of the stored configuration under gravity [m]
+  double meanDistance = 0.0;  // mean over the nodes [m]
   double seconds = 0.0;
-  nlohmann::json history;        // per forward solve: max, mean distance, seconds
-  std::vector<double> reference; // the stored coordinates, 3 per node
+  nlohmann::json history;         // per forward solve: max, mean distance, seconds
+  std::vector<double> reference;  // the stored coordinates, 3 per node
 };
 
 // Computes the zero-strain configuration of a validated deck and writes it to `output` (the
@@ -46,4 +45,4 @@ struct ZeroStrainResult {
 ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
                                    const std::filesystem::path &output, bool quiet);
 
-} // namespace glossa::app
+}  // namespace glossa::app

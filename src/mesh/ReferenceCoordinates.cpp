@@ -26,8 +26,10 @@ std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, s
     std::istringstream s(line);
     std::string fields[4], extra;
     for (auto &f : fields)
-      if (!(s >> f)) throw std::runtime_error(where + "expected 'node x y z', got '" + line.substr(first) + "'");
-    if (s >> extra) throw std::runtime_error(where + "expected 'node x y z', got a fifth field '" + extra + "'");
+      if (!(s >> f))
+        throw std::runtime_error(where + "expected 'node x y z', got '" + line.substr(first) + "'");
+    if (s >> extra)
+      throw std::runtime_error(where + "expected 'node x y z', got a fifth field '" + extra + "'");
     long long node = -1;
     try {
       std::size_t used = 0;
@@ -73,4 +75,4 @@ void writeReferenceCoordinates(const std::string &path, const std::vector<Eigen:
   if (std::fclose(f) != 0) throw std::runtime_error(path + ": error writing the reference coordinates file");
 }
 
-} // namespace glossa::mesh
+}  // namespace glossa::mesh

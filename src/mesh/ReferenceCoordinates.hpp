@@ -9,10 +9,9 @@
 // tabs or commas. Blank lines and lines starting with '#' are comments. Every node appears
 // exactly once, in any order.
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace glossa::mesh {
 
@@ -26,4 +25,4 @@ std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, s
 void writeReferenceCoordinates(const std::string &path, const std::vector<Eigen::Vector3d> &nodes,
                                const std::vector<std::string> &header = {});
 
-} // namespace glossa::mesh
+}  // namespace glossa::mesh

@@ -8,10 +8,10 @@
 // CI-cheap: the tongue's 740 elements, gravity in one load step (the deck has four), at most
 // four inverse updates (it needs three), no field output: about 7 s in all.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <filesystem>
-
-#include <gtest/gtest.h>
 
 #include "RunDeck.hpp"
 #include "app/ZeroStrainCommand.hpp"
@@ -20,7 +20,8 @@
 namespace glossa::test {
 namespace {
 
-const std::vector<std::string> kCheap{"Time/step size=1", "Output/fields=false", "Zero strain/maximum iterations=4"};
+const std::vector<std::string> kCheap{"Time/step size=1", "Output/fields=false",
+                                      "Zero strain/maximum iterations=4"};
 
 struct Distances {
   double max = 0.0, mean = 0.0;
@@ -76,7 +77,8 @@ TEST(ZeroStrain, InverseReturnsTheImagedGeometryTenTimesCloserThanTheApproximati
   const auto a = zeroStrain("approximate", dir / "approximate.txt");
   const auto b = zeroStrain("inverse", dir / "inverse.txt");
   ASSERT_TRUE(a.converged);
-  ASSERT_TRUE(b.converged) << "max distance " << b.maxDistance << " m after " << b.iterations << " iterations";
+  ASSERT_TRUE(b.converged) << "max distance " << b.maxDistance << " m after " << b.iterations
+                           << " iterations";
 
   const Distances da = gravityOn(dir / "approximate.txt", dir / "check_approximate");
   const Distances db = gravityOn(dir / "inverse.txt", dir / "check_inverse");
@@ -88,7 +90,7 @@ TEST(ZeroStrain, InverseReturnsTheImagedGeometryTenTimesCloserThanTheApproximati
 
   // The tolerance: 1e-3 of the mean element edge of the imaged mesh (the s8_1 deck).
   EXPECT_NEAR(b.tolerance, 1e-3 * b.meshSize, 1e-15);
-  EXPECT_GT(b.meshSize, 1e-3); // the tongue's elements are millimetres across
+  EXPECT_GT(b.meshSize, 1e-3);  // the tongue's elements are millimetres across
   EXPECT_LE(db.max, b.tolerance);
   // Issue 7: at least 10 times closer than the 1.2 g approximation (max and mean distance).
   EXPECT_GE(da.max, 10.0 * db.max) << "approximate " << da.max << " m, inverse " << db.max << " m";
@@ -100,5 +102,5 @@ TEST(ZeroStrain, InverseReturnsTheImagedGeometryTenTimesCloserThanTheApproximati
   RecordProperty("inverse_max_um", std::to_string(db.max * 1e6));
 }
 
-} // namespace
-} // namespace glossa::test
+}  // namespace
+}  // namespace glossa::test

@@ -13,12 +13,14 @@ using testing::expectError;
 
 TEST(ReferenceCoordinates, RoundTripIsExact) {
   testing::ScratchDir scratch("reference_coordinates");
-  const std::vector<Eigen::Vector3d> nodes{{0.1, -2.5e-3, 1.0 / 3.0}, {1e-17, 0.0, -7.0}, {0.11355463004010322, 2, 3}};
+  const std::vector<Eigen::Vector3d> nodes{
+      {0.1, -2.5e-3, 1.0 / 3.0}, {1e-17, 0.0, -7.0}, {0.11355463004010322, 2, 3}};
   const std::string file = scratch.write("x.txt", "");
   writeReferenceCoordinates(file, nodes, {"a header line"});
   const auto read = readReferenceCoordinates(file, nodes.size());
   ASSERT_EQ(read.size(), nodes.size());
-  for (std::size_t n = 0; n < nodes.size(); ++n) EXPECT_EQ(read[n], nodes[n]) << "node " << n; // %.17g: bit-exact
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    EXPECT_EQ(read[n], nodes[n]) << "node " << n;  // %.17g: bit-exact
 }
 
 TEST(ReferenceCoordinates, AnyOrderCommasAndComments) {
