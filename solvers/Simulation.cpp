@@ -772,6 +772,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   }
 
   const std::vector<double> uAll = assembler->gatherDisplacement(u);
+  if (options.finalDisplacement) *options.finalDisplacement = uAll;
   nlohmann::json finals = nlohmann::json::object();
   for (const auto &[name, d] : recorder.pointDisplacements(uAll)) finals[name] = {d.x(), d.y(), d.z()};
   doc["final_displacement"] = finals;

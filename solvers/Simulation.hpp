@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 #include <Teuchos_Comm.hpp>
@@ -25,6 +26,9 @@ struct RunOptions {
   // The ranks split into this many groups, each solving GA candidates on its own
   // sub-communicator (issue 5); must divide the rank count. 1: every rank solves every candidate.
   int controlGroups = 1;
+  // If set, receives the last converged displacement of every node (3 per node, by mesh node),
+  // on every rank (glossa zero-strain).
+  std::vector<double> *finalDisplacement = nullptr;
 };
 
 // Runs the deck; returns the summary that was written to summary.json. Collective.

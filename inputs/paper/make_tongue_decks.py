@@ -65,9 +65,13 @@ class Xml:
         self.lines.append("  " * self.depth + p(name, typ, value))
 
 
-def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1):
+def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
+         reference=None, zero_strain=None, breathing_start=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
-    gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped)."""
+    gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
+    reference: None or a Mesh/reference coordinates file (relative to the deck);
+    zero_strain: None or {parameter: value} of the Zero strain section (glossa zero-strain).
+    breathing_start: None (the pressure ramps over [1, 2] s) or when eq. 27's first breath starts."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -105,6 +109,8 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.add("box max", "Array(double)", "{1, 1, 1}")
     x.close()
     x.close()
+    if reference is not None:
+        x.add("reference coordinates file", "string", reference)
     x.close()  # Mesh
     x.open("Material")
     x.add("type", "string", "Fung")
@@ -156,9 +162,15 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.add("P_A", "Array(double)", vec(P_A))
         x.add("P_P", "Array(double)", vec(P_P))
         x.open("time function")
-        x.add("type", "string", "table")
-        x.add("times", "Array(double)", "{0, 1, 2}")
-        x.add("values", "Array(double)", "{0, 0, 1}")
+        if breathing_start is None:
+            x.add("type", "string", "table")
+            x.add("times", "Array(double)", "{0, 1, 2}")
+            x.add("values", "Array(double)", "{0, 0, 1}")
+        else:
+            x.add("type", "string", "breathing")
+            x.add("breathing period", "double", 2.5)
+            x.add("breathing exponent", "double", 1.75)
+            x.add("breathing start", "double", breathing_start)
         x.close()
         x.close()
     x.close()
@@ -175,6 +187,11 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.open("Incompressibility")
     x.add("method", "string", "augmented Lagrangian")
     x.close()
+    if zero_strain is not None:
+        x.open("Zero strain")
+        for key, (typ, value) in zero_strain.items():
+            x.add(key, typ, value)
+        x.close()
     x.open("Output")
     x.add("directory", "string", f"results/{name}")
     x.add("every", "int", output_every)
@@ -217,3 +234,40 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
 Gravity {posture}: along {vec(g)} in this mesh's axes. Every muscle group passive (u = 0).
 Expected (paper): supine moves the tongue posteriorly; the pressure draws it backwards.""",
          {}, gravity=g, pressure=-500.0, end_time=2.0, step=0.25)
+
+ZERO_STRAIN = """
+Passive (no activation): upright gravity, along {0, 0, -1.0} in this mesh's axes, ramped over
+[0, 1] s in four steps. Every muscle group passive (u = 0)."""
+# The forward deck of the zero-strain study: glossa zero-strain reads its gravity and Zero strain
+# section; with a reference coordinates file it is the s8_1 check (gravity on X0 returns X_img).
+deck("s8_1_upright", "Paper §8.1 (Fig. 7a): the tongue under upright gravity, the forward problem of the\n"
+     "zero-strain configuration. On the imaged geometry as read; glossa zero-strain computes the\n"
+     "zero-strain configuration from this deck (doc/tongue.md, s8_1):\n"
+     "  build/glossa zero-strain inputs/paper/s8_1_upright.xml method approximate or inverse\n"
+     "which writes the reference coordinates that s8_1_approximate.xml and s8_1_inverse.xml use.\n" + COMMON + ZERO_STRAIN,
+     {}, gravity=(0, 0, -1), end_time=1.0, step=0.25,
+     zero_strain={"gravity factor": ("double", 1.2), "tolerance": ("double", 1e-3),
+                  "maximum iterations": ("int", 10)})
+for method in ("approximate", "inverse"):
+    what = ("the paper's approximation: the imaged geometry deformed by 1.2 g opposite to gravity"
+            if method == "approximate" else
+            "the iterative inverse: reference coordinates updated until gravity maps them onto the\n"
+            "imaged geometry, to 1e-3 of the mean element edge")
+    deck(f"s8_1_{method}", f"Paper §8.1 (Fig. 7a): upright gravity on the zero-strain configuration, {method}:\n"
+         f"{what}.\nThe reference coordinates are s8_1/reference_{method}.txt, written by\n"
+         f"  build/glossa zero-strain inputs/paper/s8_1_upright.xml, method {method}, output that file.\n"
+         "The configuration under gravity should return the imaged geometry (doc/tongue.md gives the\n"
+         "distances).\n" + COMMON + ZERO_STRAIN,
+         {}, gravity=(0, 0, -1), end_time=1.0, step=0.25, reference=f"s8_1/reference_{method}.txt")
+
+BREATHING = """
+Passive breathing, no control (the baseline of the controlled s8_5 runs): gravity ramped over
+the first second, then three breaths of eq. 27 from t0 = 1.25 s, p = p_max max(sin(2 pi (t - t0)/T), 0)^1.75
+with T = 2.5 s and p_max = -350 Pa (suction) on the face set 'airway', linear from 0 at P_A to
+p_max at P_P, until 8.75 s. On the imaged geometry (no zero-strain configuration). Steps of
+T/8 = 0.3125 s (coarse, for the regression test), which land on every peak (t0 + T/4 + kT)."""
+for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
+    deck(f"s8_5_passive_{posture}", f"Paper §8.5 (Figs. 11 and 12): {posture} posture, three 350 Pa breathing cycles.\n" +
+         COMMON + BREATHING + f"""
+Gravity {posture}: along {vec(g)} in this mesh's axes. Every muscle group passive (u = 0).""",
+         {}, gravity=g, pressure=-350.0, end_time=8.75, step=0.3125, breathing_start=1.25)

@@ -1,6 +1,7 @@
 #include "app/DeckSchema.hpp"
 
 #include "app/PointCommand.hpp"
+#include "app/ZeroStrainCommand.hpp"
 #include "model/SceneFactory.hpp"
 #include "solvers/Simulation.hpp"
 
@@ -11,6 +12,8 @@ Teuchos::ParameterList deckSchema() {
   model::declareSceneParameters(schema);
   solvers::declareSolverParameters(schema);
   schema.set("Point", pointParameters(), "the deformation path of glossa point (one material point)");
+  schema.set("Zero strain", zeroStrainParameters(),
+             "glossa zero-strain: the zero-strain configuration under the deck's gravity (§8.1)");
   return schema;
 }
 

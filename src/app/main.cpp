@@ -12,6 +12,7 @@
 #include "app/DeckSchema.hpp"
 #include "app/MeshCommand.hpp"
 #include "app/PointCommand.hpp"
+#include "app/ZeroStrainCommand.hpp"
 #include "io/deck/Deck.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/DeckReference.hpp"
@@ -43,6 +44,13 @@ usage:
   glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR]
       read a mesh (Gmsh .msh 4.1, Abaqus .inp, ANSYS .node/.elem), optionally refine it,
       and print its counts, sets, volume and element quality (--output: XDMF for ParaView)
+  glossa zero-strain DECK.xml --output FILE [--method approximate|inverse] [--tolerance T]
+         [--max-iterations N] [--set path=value ...] [--quiet]
+      the zero-strain configuration (paper §8.1) of a deck loaded by gravity alone: approximate
+      (the imaged mesh under the reversed gravity times 1.2) or inverse (reference coordinates
+      updated until gravity maps them onto the imaged mesh, to T times the mean element edge);
+      writes the coordinates to FILE (for Mesh/reference coordinates file) and a report to FILE
+      with extension .json. The options stand for --set "Zero strain/method=..." etc.
   glossa curves [--output DIR]
       tabulate the muscle curves f_cL, f_cV (both parameter sets), f_p and f_s to
       DIR/force_length.csv, force_velocity.csv, passive_series.csv (default DIR: ./curves)
@@ -57,6 +65,7 @@ struct Arguments {
   std::vector<std::string> overrides;
   bool quiet = false, markdown = false, timers = false, json = false;
   std::string format = "auto";
+  std::vector<std::string> zeroStrain; // --method, --tolerance, --max-iterations as deck overrides
   int refine = 0;
   int controlGroups = 1;
 };
@@ -79,6 +88,9 @@ Arguments parse(int argc, char **argv) {
     else if (s == "--markdown") a.markdown = true;
     else if (s == "--json") a.json = true;
     else if (s == "--format") a.format = value("--format");
+    else if (s == "--method") a.zeroStrain.push_back("Zero strain/method=" + value("--method"));
+    else if (s == "--tolerance") a.zeroStrain.push_back("Zero strain/tolerance=" + value("--tolerance"));
+    else if (s == "--max-iterations") a.zeroStrain.push_back("Zero strain/maximum iterations=" + value("--max-iterations"));
     else if (s == "--refine") {
       const std::string v = value("--refine");
       try {
@@ -110,6 +122,7 @@ glossa::io::Deck loadDeck(const Arguments &a, const Teuchos::ParameterList &sche
   if (a.deck.empty()) throw glossa::io::DeckError("glossa " + a.command + " needs a deck file");
   auto deck = glossa::io::Deck::fromFile(a.deck);
   for (const auto &o : a.overrides) deck.applyOverride(o, schema);
+  for (const auto &o : a.zeroStrain) deck.applyOverride(o, schema);
   deck.validate(schema);
   return deck;
 }
@@ -168,6 +181,17 @@ int main(int argc, char **argv) {
       glossa::model::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
       if (root) std::cout << deck.toXml();
       return 0;
+    }
+    if (!a.zeroStrain.empty() && a.command != "zero-strain")
+      throw glossa::io::DeckError("--method, --tolerance and --max-iterations belong to glossa zero-strain; see glossa --help");
+    if (a.command == "zero-strain") {
+      if (a.output.empty()) throw glossa::io::DeckError("glossa zero-strain needs --output FILE (the coordinates file)");
+      const auto deck = loadDeck(a, schema);
+      const auto result = glossa::app::computeZeroStrain(deck, comm, a.output, a.quiet);
+      if (!result.converged && root)
+        std::fprintf(stderr, "glossa: zero-strain: max distance %.3e m after %d iterations is above the tolerance %.3e m\n",
+                     result.maxDistance, result.iterations, result.tolerance);
+      return result.converged ? 0 : 1;
     }
     if (a.command == "run") {
       const auto deck = loadDeck(a, schema);

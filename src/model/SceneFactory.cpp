@@ -13,6 +13,7 @@
 #include "mesh/HexMesh.hpp"
 #include "mesh/MeshFile.hpp"
 #include "mesh/MeshRefinement.hpp"
+#include "mesh/ReferenceCoordinates.hpp"
 #include "mesh/ThickCylinderGenerator.hpp"
 #include "model/DeckSets.hpp"
 #include "model/MaterialFactory.hpp"
@@ -88,6 +89,11 @@ ParameterList meshParameters() {
                     io::Range::closed(-1, 1));
   io::declareDoubleArray(face, "box min", Array<double>(3, -1e300), "m", "lower corner of the selection box", 3);
   io::declareDoubleArray(face, "box max", Array<double>(3, 1e300), "m", "upper corner of the selection box", 3);
+  io::declareString(p, "reference coordinates file", "",
+                    "nodal coordinates that replace the mesh's as the reference (zero-strain) configuration, "
+                    "e.g. written by glossa zero-strain: lines 'node x y z', node the 0-based index in this mesh, "
+                    "relative to the deck; sets, named points and fibre directions stay those of the mesh as read "
+                    "(doc/tongue.md, s8_1); empty: the mesh as read");
   return p;
 }
 
@@ -239,6 +245,23 @@ TimeFunction timeFunction(const io::Deck &deck, const std::vector<std::string> &
   }
 }
 
+// Mesh/reference coordinates file (§8.1): the zero-strain configuration replaces the node
+// positions after everything that selects by geometry (face sets by box and normal, named points,
+// fibre directions from the polylines) has been done on the mesh as read: those are labels of the
+// imaged anatomy. Named points move with their nodes.
+void replaceReferenceCoordinates(const io::Deck &deck, mesh::HexMesh &m) {
+  const std::string file = deck.root().sublist("Mesh").get<std::string>("reference coordinates file");
+  if (file.empty()) return;
+  std::filesystem::path q(file);
+  if (q.is_relative()) q = std::filesystem::path(deck.file()).parent_path() / q;
+  try {
+    m.nodes = mesh::readReferenceCoordinates(q.string(), m.numNodes());
+  } catch (const std::runtime_error &e) {
+    throw io::DeckError(deck.where({"Mesh", "reference coordinates file"}) + ": " + e.what());
+  }
+  for (auto &[name, point] : m.namedPoints) point.position = m.nodes[point.node];
+}
+
 std::string knownSets(const mesh::HexMesh &m) {
   std::string s;
   for (const auto &[name, nodes] : m.nodeSets) s += (s.empty() ? "" : ", ") + name;
@@ -377,6 +400,10 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     if (std::find(scene.tracedPoints.begin(), scene.tracedPoints.end(), name) == scene.tracedPoints.end())
       scene.tracedPoints.push_back(name);
   }
+  replaceReferenceCoordinates(deck, m);
+  // External muscles keep their bony origins; their insertions are the nodes' reference positions.
+  for (auto &muscle : scene.muscles.external)
+    for (std::size_t i = 0; i < muscle.nodes.size(); ++i) muscle.fibres[i].insertion = m.nodes[muscle.nodes[i]];
   return scene;
 }
 

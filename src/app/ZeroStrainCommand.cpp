@@ -1,0 +1,226 @@
+#include "app/ZeroStrainCommand.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#include "io/deck/DeckError.hpp"
+#include "io/deck/ParameterSpec.hpp"
+#include "loads/BodyForce.hpp"
+#include "mesh/ReferenceCoordinates.hpp"
+#include "model/SceneFactory.hpp"
+#include "solvers/Simulation.hpp"
+
+namespace glossa::app {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Mean length of the 12 edges of every hexahedron (VTK numbering: 0-3 bottom, 4-7 top).
+double meanEdgeLength(const mesh::HexMesh &m) {
+  static const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                   {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  double sum = 0.0;
+  for (const auto &e : m.elements)
+    for (const auto &edge : edges) sum += (m.nodes[e[edge[1]]] - m.nodes[e[edge[0]]]).norm();
+  return m.elements.empty() ? 0.0 : sum / (12.0 * static_cast<double>(m.elements.size()));
+}
+
+std::vector<Eigen::Vector3d> displaced(const std::vector<Eigen::Vector3d> &X, const std::vector<double> &u) {
+  std::vector<Eigen::Vector3d> x(X);
+  for (std::size_t n = 0; n < x.size(); ++n) x[n] += Eigen::Vector3d(u[3 * n], u[3 * n + 1], u[3 * n + 2]);
+  return x;
+}
+
+struct Distance {
+  double max = 0.0, mean = 0.0;
+};
+Distance distance(const std::vector<Eigen::Vector3d> &x, const std::vector<Eigen::Vector3d> &target) {
+  Distance d;
+  for (std::size_t n = 0; n < x.size(); ++n) {
+    const double r = (x[n] - target[n]).norm();
+    d.max = std::max(d.max, r);
+    d.mean += r;
+  }
+  if (!x.empty()) d.mean /= static_cast<double>(x.size());
+  return d;
+}
+}  // namespace
+
+Teuchos::ParameterList zeroStrainParameters() {
+  Teuchos::ParameterList p;
+  io::declareString(
+      p, "method", "inverse",
+      "glossa zero-strain: approximate (the paper, §8.1: the imaged geometry deformed by the "
+      "deck's gravity reversed and scaled by 'gravity factor') or inverse (fixed-point update of "
+      "the reference coordinates until the deck's gravity maps them onto the imaged geometry)",
+      {"approximate", "inverse"});
+  io::declareDouble(p, "gravity factor", 1.2, "",
+                    "approximate: the reversed gravity is this multiple of the deck's (the paper: 1.2)",
+                    io::Range::positive());
+  io::declareDouble(p, "tolerance", 1e-3, "",
+                    "inverse: stop when the largest nodal distance between the configuration under gravity "
+                    "and the imaged geometry is at most this multiple of the mean element edge",
+                    io::Range::positive());
+  io::declareInt(p, "maximum iterations", 10, "inverse: reference updates before giving up",
+                 io::Range::closed(1, 1000));
+  return p;
+}
+
+ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
+                                   const std::filesystem::path &output, bool quiet) {
+  const auto start = Clock::now();
+  const bool root = comm->getRank() == 0;
+  const auto &D = deck.root();
+  const auto &z = D.sublist("Zero strain");
+  if (!D.sublist("Mesh").get<std::string>("reference coordinates file").empty())
+    throw io::DeckError(
+        deck.where({"Mesh", "reference coordinates file"}) +
+        ": glossa zero-strain starts from the mesh as read (the imaged geometry); leave it empty");
+  const auto &loads = D.sublist("Loads");
+  int gravityLoads = 0;
+  for (auto it = loads.begin(); it != loads.end(); ++it) {
+    const std::string &name = loads.name(it);
+    if (loads.sublist(name).get<std::string>("type") != "gravity")
+      throw io::DeckError(deck.where({"Loads", name, "type"}) +
+                          ": glossa zero-strain needs a deck loaded by gravity "
+                          "alone (the configuration gravity maps onto the imaged geometry); '" +
+                          name + "' is a " + loads.sublist(name).get<std::string>("type") + " load");
+    ++gravityLoads;
+  }
+  if (gravityLoads == 0)
+    throw io::DeckError(deck.where({"Loads"}) + ": glossa zero-strain needs at least one gravity load");
+
+  ZeroStrainResult result;
+  result.method = z.get<std::string>("method");
+  const mesh::HexMesh imaged = model::buildScene(deck, D.sublist("Time").get<double>("end time")).mesh;
+  const std::vector<Eigen::Vector3d> &Ximg = imaged.nodes;
+  result.meshSize = meanEdgeLength(imaged);
+  result.tolerance = z.get<double>("tolerance") * result.meshSize;
+  result.history = nlohmann::json::array();
+
+  std::filesystem::path runs = output;
+  runs.replace_extension("");
+  runs += "_runs";
+  if (root) std::filesystem::create_directories(runs);
+  comm->barrier();
+
+  // One run of `base` from the reference X: returns x = X + u at the end time.
+  auto forward = [&](const io::Deck &base, const std::vector<Eigen::Vector3d> &X, const std::string &label) {
+    const auto t0 = Clock::now();
+    const std::filesystem::path file = std::filesystem::absolute(runs / (label + "_reference.txt"));
+    if (root)
+      mesh::writeReferenceCoordinates(file.string(), X,
+                                      {"glossa zero-strain: the reference of run " + label});
+    comm->barrier();
+    io::Deck d = base;
+    d.root().sublist("Mesh").set("reference coordinates file", file.string());
+    std::vector<double> u;
+    solvers::RunOptions options;
+    options.outputDirectory = runs / label;
+    options.quiet = true;
+    options.finalDisplacement = &u;
+    const auto summary = solvers::runSimulation(d, comm, options);
+    if (!summary.value("converged", false))
+      throw std::runtime_error("glossa zero-strain: the forward run " + label + " did not converge (" +
+                               summary.value("failure", std::string("no reason given")) + "); results in " +
+                               (runs / label).string());
+    ++result.solves;
+    return std::make_pair(displaced(X, u), since(t0));
+  };
+  auto record = [&](const std::string &label, const Distance &d, double seconds) {
+    result.history.push_back(
+        {{"run", label}, {"max_distance", d.max}, {"mean_distance", d.mean}, {"seconds", seconds}});
+    if (root && !quiet)
+      std::printf("zero-strain: %-12s max |x - X_img| = %.4e m  mean %.4e m  (%.1f s)\n", label.c_str(),
+                  d.max, d.mean, seconds);
+  };
+
+  std::vector<Eigen::Vector3d> X = Ximg;
+  if (result.method == "approximate") {
+    // The deck's gravity reversed and scaled, on the imaged geometry.
+    io::Deck unload = deck;
+    auto &L = unload.root().sublist("Loads");
+    for (auto it = L.begin(); it != L.end(); ++it) {
+      auto &l = L.sublist(L.name(it));
+      const std::string posture = l.get<std::string>("posture");
+      const double g = l.get<double>("g");
+      Eigen::Vector3d a = loads::postureGravity(posture == "custom" ? "upright" : posture, g);
+      if (posture == "custom") {
+        const auto &d = l.get<Teuchos::Array<double>>("direction");
+        a = g * Eigen::Vector3d(d[0], d[1], d[2]).normalized();  // non-zero: buildScene checked it
+      }
+      l.set("posture", std::string("custom"));
+      l.set("direction", Teuchos::Array<double>(std::vector<double>{-a.x(), -a.y(), -a.z()}));
+      l.set("g", z.get<double>("gravity factor") * a.norm());
+    }
+    const auto [x, seconds] = forward(unload, Ximg, "unload");
+    record("unload", distance(x, Ximg), seconds);
+    X = x;
+    const auto [xg, checkSeconds] = forward(deck, X, "check");
+    const Distance d = distance(xg, Ximg);
+    record("check", d, checkSeconds);
+    result.iterations = 1;
+    result.converged = true;
+    result.maxDistance = d.max;
+    result.meanDistance = d.mean;
+  } else {
+    const int maxIterations = z.get<int>("maximum iterations");
+    for (int k = 0;; ++k) {
+      const auto [x, seconds] = forward(deck, X, "iteration_" + std::to_string(k));
+      const Distance d = distance(x, Ximg);
+      record("iteration_" + std::to_string(k), d, seconds);
+      result.maxDistance = d.max;
+      result.meanDistance = d.mean;
+      result.iterations = k;
+      if (d.max <= result.tolerance) {
+        result.converged = true;
+        break;
+      }
+      if (k == maxIterations) break;
+      for (std::size_t n = 0; n < X.size(); ++n) X[n] += Ximg[n] - x[n];  // X_{k+1} = X_k + (X_img - x(X_k))
+    }
+  }
+  result.seconds = since(start);
+  for (const auto &x : X)
+    for (int c = 0; c < 3; ++c) result.reference.push_back(x(c));
+
+  if (root) {
+    char line[256];
+    std::snprintf(line, sizeof line, "under the deck's gravity: max |x - X_img| = %.6e m, mean %.6e m",
+                  result.maxDistance, result.meanDistance);
+    std::vector<std::string> header{"zero-strain configuration (DESIGN.md §8.1) of " + deck.file(),
+                                    "method " + result.method + ", " + std::to_string(result.iterations) +
+                                        " iteration(s), " + std::to_string(result.solves) +
+                                        " forward solves" + (result.converged ? "" : ", TOLERANCE NOT MET"),
+                                    line};
+    mesh::writeReferenceCoordinates(output.string(), X, header);
+    nlohmann::json report;
+    report["deck"] = deck.file();
+    report["method"] = result.method;
+    report["converged"] = result.converged;
+    report["iterations"] = result.iterations;
+    report["solves"] = result.solves;
+    report["mesh_size"] = result.meshSize;
+    if (result.method == "inverse")
+      report["tolerance"] = result.tolerance;
+    else
+      report["gravity_factor"] = z.get<double>("gravity factor");
+    report["max_distance"] = result.maxDistance;
+    report["mean_distance"] = result.meanDistance;
+    report["seconds"] = result.seconds;
+    report["runs"] = result.history;
+    std::filesystem::path json = output;
+    json.replace_extension(".json");
+    std::ofstream(json) << report.dump(2) << '\n';
+    if (!quiet)
+      std::printf("zero-strain: %s, %d iteration(s), %d solves, %.1f s; wrote %s and %s\n",
+                  result.method.c_str(), result.iterations, result.solves, result.seconds, output.c_str(),
+                  json.c_str());
+  }
+  comm->barrier();
+  return result;
+}
+
+}  // namespace glossa::app

@@ -1,0 +1,28 @@
+#pragma once
+// Reference nodal coordinates stored in a file (DESIGN.md §8.1): the zero-strain configuration
+// computed by `glossa zero-strain` and reused by later runs through the deck's
+// Mesh/reference coordinates file. The mesh keeps its connectivity, sets and labels; only the
+// node positions change, so F_RI (eq. 1) is implied by the change of coordinates.
+//
+// Format: plain text, one node a line, "node x y z" with node the 0-based index of the node in
+// the mesh as the deck builds it (after refinement), coordinates in metres, separated by spaces,
+// tabs or commas. Blank lines and lines starting with '#' are comments. Every node appears
+// exactly once, in any order.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace glossa::mesh {
+
+// Reads the file for a mesh of `numNodes` nodes. Throws std::runtime_error with "FILE:LINE:"
+// for a malformed line, a node index out of range, a repeated node or a non-finite value, and
+// "FILE:" for a missing file or a node count that differs from the mesh's.
+std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, std::size_t numNodes);
+
+// Writes the nodes in this format; `header` lines are written as '#' comments first. Throws
+// std::runtime_error if the file cannot be written.
+void writeReferenceCoordinates(const std::string &path, const std::vector<Eigen::Vector3d> &nodes,
+                               const std::vector<std::string> &header = {});
+
+}  // namespace glossa::mesh
