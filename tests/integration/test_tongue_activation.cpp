@@ -9,6 +9,7 @@
 // Each run is activation alone (no gravity), three 0.1 s steps from full activation. The mesh is
 // mirror-symmetric about y = 0 (nodes 414-826 mirror 1-413) and so are its bundles, fibres and
 // attachments, so the left and right control points must move as mirror images.
+#include <cmath>
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
@@ -111,5 +112,17 @@ TEST(TonguePosture, SupineGravityMovesTheTongueBackAndSuctionDrawsItFurther) {
       else EXPECT_LT(gravity.z(), 0.0) << point;                        // upright: it sinks
       EXPECT_GT(both.x() - gravity.x(), 1e-3) << deck << " " << point; // suction draws it back (+x)
     }
+    // Paper §8.3 (Fig. 9): under gravity alone the genioglossus is overall in compression upright
+    // and in tension supine; the length-weighted mean fibre stretch of GGa+GGm+GGp (the
+    // activation.csv measure, weighted here by the parts' equal shares) says which.
+    const auto &steps = s.at("steps");
+    double gravityStretch = 0.0;
+    for (const auto &step : steps)
+      if (std::abs(step.at("time").get<double>() - 1.0) < 1e-9)
+        for (const auto *part : {"GGa", "GGm", "GGp"})
+          gravityStretch += step.at("activation").at(part).at("mean_fibre_stretch").get<double>() / 3.0;
+    ASSERT_GT(gravityStretch, 0.0) << deck;
+    if (posture == "supine") EXPECT_GT(gravityStretch, 1.0) << deck;
+    else EXPECT_LT(gravityStretch, 1.0) << deck;
   }
 }
