@@ -73,9 +73,14 @@ public:
     const std::size_t elements = mesh.numElements();
     for (const auto &region : muscles.regions)
       for (const auto &name : region.familyNames) fibreDirections_.try_emplace(name, 3 * elements, 0.0);
+    // Muscle sets (1 where an element carries a family of the group) for ParaView's threshold
+    // filter, and with them the FFMR field per group written every step.
+    for (const auto &g : muscles.groups) groupMembership_.emplace_back(g.name, std::vector<double>(elements, 0.0));
     for (std::size_t e = 0; e < elements && muscles.hasFibres(); ++e) {
       const int r = muscles.elementRegion[e];
       if (r < 0) continue;
+      for (int g : muscles.regions[r].familyGroup)
+        if (g >= 0) groupMembership_[g].second[e] = 1.0;
       for (std::size_t f = 0; f < muscles.regions[r].familyNames.size(); ++f)
         for (int c = 0; c < 3; ++c)
           fibreDirections_[muscles.regions[r].familyNames[f]][3 * e + c] =
@@ -148,6 +153,15 @@ public:
     if (assembler_.scene().muscles.hasFibres()) {
       cells.push_back({"fibre_stress", 1, assembler_.gatherElementField(muscle.fibreStress, 1)});
       for (const auto &[name, values] : fibreDirections_) cells.push_back({"fibre_direction_" + name, 3, values});
+      const auto &alpha = assembler_.muscleHistory().trialActivation();
+      for (std::size_t g = 0; g < groupMembership_.size() && root_; ++g) {
+        const auto &[name, member] = groupMembership_[g];
+        const double ffmr = materials::fractionOfFullMuscleResponse(assembler_.scene().muscles.groups[g].T0s, alpha[g]);
+        std::vector<double> field(member.size());
+        for (std::size_t e = 0; e < member.size(); ++e) field[e] = member[e] * ffmr;
+        cells.push_back({"muscle_set_" + name, 1, member});
+        cells.push_back({"ffmr_" + name, 1, field});
+      }
       // One column per group, gathered together and split by group on rank 0.
       const auto &groups = assembler_.scene().muscles.groups;
       const int G = muscle.groups;
@@ -174,6 +188,7 @@ private:
   std::unique_ptr<io::TraceWriter> traces_;
   std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_;
   std::map<std::string, std::vector<double>> fibreDirections_; // rank 0, per family
+  std::vector<std::pair<std::string, std::vector<double>>> groupMembership_; // per group, per element
 };
 } // namespace
 

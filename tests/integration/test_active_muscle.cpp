@@ -106,6 +106,20 @@ double isometric(double dt) {
     EXPECT_LE(st.sigma33, slack) << t;
     EXPECT_LE(st.shear, slack) << t;
   }
+  // The XDMF cell fields of the group: its muscle set (every element of this block) and its
+  // FFMR, equal to T0s alpha of activation.csv at every written step.
+  const io::testing::Hdf5File file(dir / "results.h5");
+  int ffmrSteps = 0;
+  for (const auto &path : file.datasetPaths()) {
+    const std::string suffix = "/ffmr_fibres";
+    if (path.size() < suffix.size() || path.substr(path.size() - suffix.size()) != suffix) continue;
+    const auto group = path.substr(0, path.size() - suffix.size());
+    const double t = file.timeOf(group);
+    for (double v : file.doubles(path).values) EXPECT_DOUBLE_EQ(v, act.at(t).ffmr) << t;
+    for (double v : file.doubles(group + "/muscle_set_fibres").values) EXPECT_EQ(v, 1.0) << t;
+    ++ffmrSteps;
+  }
+  EXPECT_EQ(static_cast<std::size_t>(ffmrSteps), act.size());
   EXPECT_LE(maxError, dt / (2 * std::exp(1.0) * tau) * (1 + dt / tau)) << "dt " << dt;
   // At 0.5 s the block pulls with 96 % of T0s T0max phi (1 - e^{-0.5/0.15}).
   EXPECT_NEAR(sigma.rbegin()->second.sigma11 / (phi * T0s * T0max), 1.0 - std::exp(-0.5 / tau), 0.04);
