@@ -1,6 +1,7 @@
 #pragma once
 // Runs a deck from inputs/ the way `glossa run` does, for the integration tests.
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -60,6 +61,14 @@ inline std::vector<TraceRow> readTraces(const std::filesystem::path &file) {
     rows.push_back(r);
   }
   return rows;
+}
+
+// The largest displacement magnitude of `point` over a stored trace file.
+inline double peakDisplacement(const std::filesystem::path &file, const std::string &point) {
+  double peak = 0.0;
+  for (const auto &r : readTraces(file))
+    if (r.point == point) peak = std::max(peak, std::sqrt(r.u[0] * r.u[0] + r.u[1] * r.u[1] + r.u[2] * r.u[2]));
+  return peak;
 }
 
 // y-displacement of `point` at each written time.
