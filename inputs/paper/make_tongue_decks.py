@@ -40,6 +40,37 @@ POINTS = [
 P_A = POINTS[0][2]
 P_P = POINTS[1][2]
 
+# The styloid anchors (data README) and the STY exit nodes: on every STY fibre of Fibers.mac, the
+# mesh node next to its anchor, where the muscle enters the tongue (8 per side).
+ANCHORS = {"left": (4037, (0.14984029, -0.035891287, 0.125)), "right": (4042, (0.14984029, 0.035891287, 0.125))}
+# Fibre cross-section of each side's external styloglossus: the data's maximum force of the
+# two-sided STY, 24 N (MuscleMaxForce.txt), as 12 N per side = phi_f T0max A with phi_f = 0.7 and
+# T0max = 668.8 kPa (Table I).
+SG_AREA = 12.0 / (0.7 * 668.8e3)
+
+
+def styloglossus_exit_nodes():
+    import re
+    fibres = {}
+    with open(os.path.join(HERE, "..", "tongue", "Fibers.mac"), encoding="latin-1") as f:
+        for line in f:
+            m = re.match(r"\s*FIBER\((\d+),(\d+),(\d+)\)\s*=\s*(\d+)", line)
+            if m:
+                k, fibre, muscle, node = map(int, m.groups())
+                fibres.setdefault((muscle, fibre), {})[k] = node
+    exits = {}
+    for side, (anchor, _) in ANCHORS.items():
+        nodes = set()
+        for points in fibres.values():
+            seq = [points[k] for k in sorted(points)]
+            if anchor in seq:
+                i = seq.index(anchor)
+                nodes.add(seq[i - 1] if i > 0 else seq[i + 1])
+        exits[side] = sorted(nodes)
+        with open(os.path.join(HERE, "..", "tongue", f"styloglossus_exit_nodes_{side}.txt"), "w") as f:
+            f.write("\n".join(str(n) for n in exits[side]) + "\n")
+    return exits
+
 
 def p(name, typ, value):
     return f'<Parameter name="{name}" type="{typ}" value="{value}"/>'
@@ -66,12 +97,14 @@ class Xml:
 
 
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
-         reference=None, zero_strain=None, breathing_start=None):
+         reference=None, zero_strain=None, breathing_start=None, external_sg=False):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
     zero_strain: None or {parameter: value} of the Zero strain section (glossa zero-strain).
-    breathing_start: None (the pressure ramps over [1, 2] s) or when eq. 27's first breath starts."""
+    breathing_start: None (the pressure ramps over [1, 2] s) or when eq. 27's first breath starts.
+    external_sg: the styloglossus also as an external muscle per side (eq. 22-23) from the styloid
+    anchor to its exit nodes, driven by the SG group."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -97,6 +130,12 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.open(s)
         x.add("file", "string", f"../tongue/{s}_attachment_nodes.txt")
         x.close()
+    if external_sg:
+        styloglossus_exit_nodes()
+        for side in ANCHORS:
+            x.open(f"SG exit {side}")
+            x.add("file", "string", f"../tongue/styloglossus_exit_nodes_{side}.txt")
+            x.close()
     x.close()
     x.close()  # File
     x.open("Face sets")
@@ -135,6 +174,17 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.add("muscle group", "string", group)
         x.close()
     x.close()
+    if external_sg:
+        x.open("External muscles")
+        for side, (_, position) in ANCHORS.items():
+            x.open(f"SG {side}")
+            x.add("muscle group", "string", "SG")
+            x.add("insertion node set", "string", f"SG exit {side}")
+            x.add("cross-section area", "double", repr(SG_AREA))
+            x.add("origin rule", "string", "fixed point")
+            x.add("origin", "Array(double)", vec(position))
+            x.close()
+        x.close()
     x.close()  # Material
     x.open("Boundary conditions")
     for s in ("jaw", "hyoid"):
@@ -219,9 +269,11 @@ contractile element shortens at the rate its force-velocity curve allows, three 
 deck("s8_4_ggm", "Paper §8.4 (Fig. 10a): the genioglossus medius (GGm) at FFMR 10 %.\n" + COMMON + ACTIVATION +
      "\nExpected (paper): the anterior part moves down, the posterior part forward.", {"GGm": 0.1})
 deck("s8_4_sg", "Paper §8.4 (Fig. 10b): the styloglossus (SG) at FFMR 25 %.\n" + COMMON + ACTIVATION + """
-The styloglossus is the internal fibre family of the STY bundles along their polylines, whose last
-segment runs to the styloid anchor (not an external muscle: doc/tongue.md says why).
-Expected (paper): the tongue is retracted (moves posteriorly, +x) and raised.""", {"SG": 0.25})
+The styloglossus acts twice, both driven by the SG group: inside the tongue as the fibre family
+of the STY bundles along their polylines, and outside it as an external muscle per side (eq. 22
+and 23) from the styloid anchor to the 8 nodes where its fibres enter the tongue, with the fibre
+cross-section that gives the data's maximum force (12 N per side; doc/tongue.md).
+Expected (paper): the tongue is retracted (moves posteriorly, +x) and raised.""", {"SG": 0.25}, external_sg=True)
 deck("s8_4_protrusion", "Paper §8.4 (Fig. 10c): SL, TV and VT at FFMR 7.5, 7.5 and 5 %.\n" + COMMON + ACTIVATION +
      "\nExpected (paper): the tip protrudes (moves anteriorly, -x).", {"SL": 0.075, "TV": 0.075, "VT": 0.05})
 PASSIVE = """

@@ -39,6 +39,14 @@ const std::vector<mesh::ElementFace> &faceSetAt(const io::Deck &deck, const mesh
   return m.faceSets.at(set);
 }
 
+const std::vector<mesh::NodeId> &nodeSetAt(const io::Deck &deck, const mesh::HexMesh &m,
+                                           const std::vector<std::string> &path) {
+  const std::string &set = deckString(deck, path);
+  if (!m.nodeSets.count(set))
+    throw io::DeckError(deck.where(path) + ": no node set '" + set + "'; the mesh has: " + namesOf(m.nodeSets));
+  return m.nodeSets.at(set);
+}
+
 int muscleGroupAt(const io::Deck &deck, const MuscleArchitecture &muscles, const std::vector<std::string> &path,
                   bool required) {
   const std::string &name = deckString(deck, path);

@@ -23,6 +23,10 @@ std::vector<mesh::ElementId> elementSetOrAll(const io::Deck &deck, const mesh::H
 const std::vector<mesh::ElementFace> &faceSetAt(const io::Deck &deck, const mesh::HexMesh &m,
                                                 const std::vector<std::string> &path);
 
+// The node set named at `path`.
+const std::vector<mesh::NodeId> &nodeSetAt(const io::Deck &deck, const mesh::HexMesh &m,
+                                           const std::vector<std::string> &path);
+
 // The index of the muscle group named at `path`; an empty name gives -1 unless `required`.
 int muscleGroupAt(const io::Deck &deck, const MuscleArchitecture &muscles, const std::vector<std::string> &path,
                   bool required);

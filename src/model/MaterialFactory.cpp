@@ -177,11 +177,20 @@ materials::HillMuscleFibre hillFibre(const ParameterList &mat, const MuscleArchi
 ParameterList externalMuscleParameters() {
   ParameterList e;
   io::declareString(e, "muscle group", "", "the muscle group (in 'Muscle groups') that activates it");
-  io::declareString(e, "insertion face set", "", "faces whose nodes the fibres insert into");
+  io::declareString(e, "insertion face set", "",
+                    "faces whose nodes the fibres insert into, each node with its tributary area");
+  io::declareString(e, "insertion node set", "",
+                    "instead of a face set: nodes the fibres insert into, sharing 'cross-section area' equally "
+                    "(a muscle entering the body through a few nodes, as the styloglossus does)");
+  io::declareDouble(e, "cross-section area", 0.0, "m^2",
+                    "with an insertion node set: the muscle's total fibre cross-section A (eq. 23)",
+                    io::Range::nonNegative());
   io::declareString(e, "origin rule", "spacing",
                     "where each insertion node's fibre starts: spacing (eq. 26): P^O = P^I scaled by 'cs' "
-                    "across 'axis' about the origin, moved by 'height' along 'axis'",
-                    {"spacing"});
+                    "across 'axis' about the origin, moved by 'height' along 'axis'; fixed point: every "
+                    "fibre starts at 'origin' (a bony anchor such as the styloid process)",
+                    {"spacing", "fixed point"});
+  io::declareDoubleArray(e, "origin", Teuchos::Array<double>(), "m", "fixed point: P^O (x, y, z)", 0);
   io::declareDouble(e, "cs", 1.0, "", "spacing rule: lateral scale of the origins (eq. 26)", io::Range::positive());
   io::declareDouble(e, "height", 2e-3, "m", "spacing rule: distance of the origins along 'axis' (eq. 26: h)");
   io::declareString(e, "axis", "y", "spacing rule: the direction the fibres run", {"x", "y", "z"});
@@ -197,18 +206,45 @@ ExternalMuscleGroup readExternalMuscle(const io::Deck &deck, const mesh::HexMesh
   ExternalMuscleGroup out;
   out.name = name;
   out.group = muscleGroupAt(deck, muscles, {"Material", "External muscles", name, "muscle group"}, true);
-  std::vector<std::array<std::int64_t, 4>> faces;
-  for (const auto &f : faceSetAt(deck, m, {"Material", "External muscles", name, "insertion face set"})) {
-    std::array<std::int64_t, 4> nodes{};
-    for (int k = 0; k < 4; ++k) nodes[k] = m.elements[f.element][mesh::kHexFaceNodes[f.localFace][k]];
-    faces.push_back(nodes);
+  const std::vector<std::string> here{"Material", "External muscles", name};
+  auto at = [&](const char *parameter) {
+    auto path = here;
+    path.emplace_back(parameter);
+    return path;
+  };
+  const bool byFaces = !e.get<std::string>("insertion face set").empty();
+  const bool byNodes = !e.get<std::string>("insertion node set").empty();
+  if (byFaces == byNodes)
+    throw io::DeckError(deck.where(here) + ": give either 'insertion face set' or 'insertion node set'");
+  std::map<mesh::NodeId, double> areas;
+  if (byFaces) {
+    std::vector<std::array<std::int64_t, 4>> faces;
+    for (const auto &f : faceSetAt(deck, m, at("insertion face set"))) {
+      std::array<std::int64_t, 4> nodes{};
+      for (int k = 0; k < 4; ++k) nodes[k] = m.elements[f.element][mesh::kHexFaceNodes[f.localFace][k]];
+      faces.push_back(nodes);
+    }
+    for (const auto &[node, area] : loads::tributaryAreas(faces, m.nodes)) areas[node] = area;
+  } else {
+    const auto &nodes = nodeSetAt(deck, m, at("insertion node set"));
+    const double total = e.get<double>("cross-section area");
+    if (!(total > 0.0))
+      throw io::DeckError(deck.where(at("cross-section area")) + " must be > 0 with an insertion node set");
+    for (const auto node : nodes) areas[node] = total / static_cast<double>(nodes.size());
   }
-  const auto areas = loads::tributaryAreas(faces, m.nodes);
+  const bool fixedPoint = e.get<std::string>("origin rule") == "fixed point";
+  const auto &origin = e.get<Teuchos::Array<double>>("origin");
+  if (fixedPoint && origin.size() != 3)
+    throw io::DeckError(deck.where(at("origin")) + ": the fixed point needs 3 coordinates, got " +
+                        std::to_string(origin.size()));
   const int axis = e.get<std::string>("axis")[0] - 'x';
   for (const auto &[node, area] : areas) {
     loads::ExternalFibre fibre;
     fibre.insertion = m.nodes[node];
-    fibre.origin = loads::spacingRuleOrigin(fibre.insertion, e.get<double>("cs"), e.get<double>("height"), axis);
+    fibre.origin = fixedPoint ? Eigen::Vector3d(origin[0], origin[1], origin[2])
+                              : loads::spacingRuleOrigin(fibre.insertion, e.get<double>("cs"), e.get<double>("height"), axis);
+    if (!((fibre.origin - fibre.insertion).norm() > 0.0))
+      throw io::DeckError(deck.where(at("origin")) + ": the origin coincides with insertion node " + std::to_string(node));
     fibre.area = area;
     out.nodes.push_back(node);
     out.fibres.push_back(fibre);
