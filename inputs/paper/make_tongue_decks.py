@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes the tongue muscle-anatomy decks of inputs/paper/ (s8_3_*, s8_4_*): the ICP/GIPSA tongue
+"""Writes the tongue muscle-anatomy decks of inputs/paper/ (s8_*): the ICP/GIPSA tongue
 (inputs/tongue/, Buchaillard, Perrier & Payan 2009; licence and citations there) with its 21
 muscle bundles as element sets, each its own fibre family following its Fibers.mac polylines,
 bilateral muscle groups named as in the paper (doc/tongue.md maps the names), the jaw and hyoid
@@ -286,6 +286,18 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
 Gravity {posture}: along {vec(g)} in this mesh's axes. Every muscle group passive (u = 0).
 Expected (paper): supine moves the tongue posteriorly; the pressure draws it backwards.""",
          {}, gravity=g, pressure=-500.0, end_time=2.0, step=0.25)
+
+MESH_STUDY = """
+Mesh dependence (bench/tongue_mesh_study.py runs this deck with Mesh/File/refine = 0, 1, 2: 740,
+5920 and 47360 hexahedra). Passive (u = 0 in every group), on the imaged geometry. Coarse load
+stepping, two steps per load, each converged: upright gravity along {0, 0, -1.0} ramped over
+[0, 1] s"""
+deck("s8_2_gravity", "Paper §8.2 (Tables III and IV analogue): mesh dependence under upright gravity.\n" + COMMON +
+     MESH_STUDY + " in steps of 0.5 s.", {}, gravity=(0, 0, -1), end_time=1.0, step=0.5)
+deck("s8_2_gravity_pressure", "Paper §8.2 (Tables III and IV analogue): mesh dependence under upright gravity and\n"
+     "the 500 Pa airway pressure.\n" + COMMON + MESH_STUDY + """, then the airway pressure as in
+s8_3: linear from 0 at P_A to p_max = -500 Pa (suction) at P_P on the face set 'airway', ramped
+over [1, 2] s; steps of 0.5 s.""", {}, gravity=(0, 0, -1), pressure=-500.0, end_time=2.0, step=0.5)
 
 ZERO_STRAIN = """
 Passive (no activation): upright gravity, along {0, 0, -1.0} in this mesh's axes, ramped over
