@@ -348,7 +348,8 @@ fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix 
   std::array<const double *, 8> lambdaCOld;
   for (int q = 0; q < 8; ++q) lambdaCOld[q] = history_.committedLambdaC(i, q);
   return kernel(model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
-                                      history_.familyActivation(i), history_.dt(), lambdaCOld));
+                                      history_.familyActivation(i), history_.dt(), lambdaCOld, nullptr,
+                                      scene_.muscles.pointDirectionsOf(e)));
 }
 
 MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
@@ -381,7 +382,7 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
       for (int q = 0; q < 8; ++q) lambdaCOld[q] = history_.committedLambdaC(i, q);
       model::ElementMuscleResponse response;
       const model::TissuePointLaw law(*r.law, muscles.directions[e], history_.familyActivation(i), history_.dt(),
-                                      lambdaCOld, &response);
+                                      lambdaCOld, &response, muscles.pointDirectionsOf(e));
       materials::PointResponse ignored;
       bool ok = fem::quadratureDeformationGradients(X, ue, F, dV);
       for (int q = 0; ok && q < 8; ++q) ok = F[q].determinant() > 0.0 && law.evaluate(q, F[q], ignored);

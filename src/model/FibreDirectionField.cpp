@@ -1,5 +1,7 @@
 #include "model/FibreDirectionField.hpp"
 
+#include "fem/HexShape.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -69,6 +71,22 @@ std::vector<Eigen::Vector3d> polylineDirections(const mesh::HexMesh &mesh, const
   out.reserve(elements.size());
   for (const auto e : elements)
     out.push_back(nearestSegmentDirection(polylines, mesh.elementCoordinates(e).colwise().mean().transpose()));
+  return out;
+}
+
+std::vector<PointDirections> polylinePointDirections(const mesh::HexMesh &mesh,
+                                                     const std::vector<mesh::ElementId> &elements,
+                                                     const Polylines &polylines) {
+  std::vector<PointDirections> out;
+  out.reserve(elements.size());
+  const auto &points = fem::gaussHex2();
+  for (const auto e : elements) {
+    const fem::NodeMatrix X = mesh.elementCoordinates(e);
+    PointDirections N;
+    for (int q = 0; q < 8; ++q)
+      N[q] = nearestSegmentDirection(polylines, X.transpose() * fem::hexShape(points[q].xi));
+    out.push_back(N);
+  }
   return out;
 }
 

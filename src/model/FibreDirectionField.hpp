@@ -6,6 +6,7 @@
 // element. Every direction returned is a unit vector; anything that would give a zero or
 // undefined direction is an error naming the element (or the file and line).
 
+#include <array>
 #include <filesystem>
 #include <vector>
 
@@ -39,6 +40,16 @@ Eigen::Vector3d nearestSegmentDirection(const Polylines &polylines, const Eigen:
 // element's centroid (the mean of its 8 nodes). Throws std::invalid_argument as above.
 std::vector<Eigen::Vector3d> polylineDirections(const mesh::HexMesh &mesh, const std::vector<mesh::ElementId> &elements,
                                                 const Polylines &polylines);
+
+// Per quadrature point (issue 7, item 3): for each element, the direction of the segment nearest
+// to each of its 8 Gauss points (the reference position x(xi_q) of fem::gaussHex2(), in that
+// order). An element a fibre bends through, or that lies between two fibres, then carries the
+// local direction at each point instead of one direction for all eight. Same sign convention and
+// errors as nearestSegmentDirection.
+using PointDirections = std::array<Eigen::Vector3d, 8>;
+std::vector<PointDirections> polylinePointDirections(const mesh::HexMesh &mesh,
+                                                     const std::vector<mesh::ElementId> &elements,
+                                                     const Polylines &polylines);
 
 enum class DirectionsPer { Element, Node };
 

@@ -30,8 +30,9 @@ ParameterList fibreFamilyParameters() {
   io::declareString(family, "direction field", "constant",
                     "constant: 'direction' everywhere; radial fan: from 'fan centre' to each element's "
                     "centroid (in the plane normal to 'fan plane normal' if that is not zero); file: "
-                    "vectors read from 'file'; polylines: per element, the direction of the nearest "
-                    "segment (to the centroid) of the mesh's fibre polylines 'polylines'",
+                    "vectors read from 'file'; polylines: the direction of the nearest segment of the "
+                    "mesh's fibre polylines 'polylines' (to the centroid or to each quadrature point: "
+                    "'polyline sampling')",
                     {"constant", "radial fan", "file", "polylines"});
   io::declareDoubleArray(family, "direction", Array<double>(3, 0.0), "",
                          "reference fibre direction (normalised; must not be zero)", 3);
@@ -44,6 +45,11 @@ ParameterList fibreFamilyParameters() {
   io::declareString(family, "polylines", "",
                     "polylines: the mesh's fibre polylines to follow (a muscle of Mesh/File/ANSYS fibres); "
                     "empty: those named like 'element set'");
+  io::declareString(family, "polyline sampling", "element centroid",
+                    "polylines: where the nearest segment is sought; element centroid: one direction per "
+                    "element; quadrature points: one per Gauss point, so the direction varies inside an "
+                    "element (doc/tongue.md measures the difference)",
+                    {"element centroid", "quadrature points"});
   io::declareString(family, "element set", "", "elements the family is present in; empty: all");
   io::declareString(family, "muscle group", "",
                     "the muscle group (in 'Muscle groups') that activates the family; empty: passive fibres");
@@ -81,6 +87,7 @@ struct FamilySpec {
   int group = -1;
   std::vector<mesh::ElementId> elements;
   std::vector<Eigen::Vector3d> directions; // per entry of `elements`
+  std::vector<PointDirections> pointDirections; // per entry of `elements`, or empty: constant in each element
 };
 
 FamilySpec readFamily(const io::Deck &deck, const mesh::HexMesh &m, const std::string &name,
@@ -109,6 +116,8 @@ FamilySpec readFamily(const io::Deck &deck, const mesh::HexMesh &m, const std::s
                             (known.empty() ? "it has none: give Mesh/File/ANSYS fibres" : "it has: " + known) + ")");
       }
       spec.directions = polylineDirections(m, spec.elements, found->second);
+      if (f.get<std::string>("polyline sampling") == "quadrature points")
+        spec.pointDirections = polylinePointDirections(m, spec.elements, found->second);
     } else {
       const auto file = f.get<std::string>("file");
       if (file.empty()) throw std::invalid_argument("'direction field' is file but 'file' is empty");
@@ -347,17 +356,28 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
     // Per element: the families present (in deck order) and their directions.
     std::vector<std::vector<int>> present(m.numElements());
     std::vector<std::vector<Eigen::Vector3d>> directions(m.numElements());
+    std::vector<std::vector<PointDirections>> pointDirections(m.numElements());
+    const bool perPoint = std::any_of(families.begin(), families.end(),
+                                      [](const FamilySpec &f) { return !f.pointDirections.empty(); });
     for (std::size_t f = 0; f < families.size(); ++f)
       for (std::size_t k = 0; k < families[f].elements.size(); ++k) {
         const auto e = static_cast<std::size_t>(families[f].elements[k]);
         present[e].push_back(static_cast<int>(f));
         directions[e].push_back(families[f].directions[k]);
+        if (!perPoint) continue;
+        PointDirections N;
+        if (families[f].pointDirections.empty())
+          N.fill(families[f].directions[k]);
+        else
+          N = families[f].pointDirections[k];
+        pointDirections[e].push_back(N);
       }
     const double total = law.get<double>("total fibre fraction");
     auto hill = [&](int group) { return hillFibre(mat, muscles, group); };
     std::map<std::vector<int>, int> regionOf;
     muscles.elementRegion.assign(m.numElements(), -1);
     muscles.directions.resize(m.numElements());
+    if (perPoint) muscles.pointDirections.resize(m.numElements());
     for (std::size_t e = 0; e < m.numElements(); ++e) {
       if (present[e].empty()) continue;
       // The point law holds a fixed number of families; the deck may declare more, as long as
@@ -386,6 +406,12 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
       materials::FamilyDirections N(3, static_cast<Eigen::Index>(present[e].size()));
       for (std::size_t k = 0; k < present[e].size(); ++k) N.col(static_cast<Eigen::Index>(k)) = directions[e][k];
       muscles.directions[e] = N;
+      if (perPoint)
+        for (std::size_t q = 0; q < 8; ++q) {
+          materials::FamilyDirections Nq(3, static_cast<Eigen::Index>(present[e].size()));
+          for (std::size_t k = 0; k < present[e].size(); ++k) Nq.col(static_cast<Eigen::Index>(k)) = pointDirections[e][k][q];
+          muscles.pointDirections[e][q] = Nq;
+        }
     }
   }
 

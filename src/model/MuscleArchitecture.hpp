@@ -6,6 +6,7 @@
 // equally among the families present (eq. 3, paper §5.2). Passive fibre families are Hill
 // fibres whose contractile element never activates (group -1). No Trilinos.
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,10 +51,18 @@ struct MuscleArchitecture {
   std::vector<FibreRegion> regions;
   std::vector<int> elementRegion;                    // per mesh element; -1: matrix only
   std::vector<materials::FamilyDirections> directions; // per mesh element, one column per family
+  // Per mesh element and quadrature point, when a family's directions vary inside elements
+  // (polylines sampled at the quadrature points); empty otherwise. `directions` then still holds
+  // the direction at the element's centroid, for output and fibre lengths.
+  std::vector<std::array<materials::FamilyDirections, 8>> pointDirections;
 
   std::vector<ExternalMuscleGroup> external;
 
   bool hasFibres() const { return !regions.empty(); }
+  // The per-point directions of mesh element e, or null when they equal directions[e].
+  const std::array<materials::FamilyDirections, 8> *pointDirectionsOf(std::size_t e) const {
+    return pointDirections.empty() ? nullptr : &pointDirections[e];
+  }
   int groupIndex(const std::string &name) const; // -1 if absent
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // The point law of one element carrying muscle fibres, as the element kernel sees it
-// (fem::QuadraturePointLaw): the region's MuscleMaterial with the element's fibre directions,
+// (fem::QuadraturePointLaw): the region's MuscleMaterial with the element's fibre directions (or one set per point),
 // its groups' trial activation, the step size and each point's committed lambda_c. Optionally
 // records what the point law computed (new lambda_c, fibre stretch and tension per family) for
 // the history update and the output; Newton iterations leave those null.
@@ -21,10 +21,13 @@ struct ElementMuscleResponse {
 class TissuePointLaw final : public fem::QuadraturePointLaw {
 public:
   // `lambdaCOld(q)` points at familyCount() committed values for point q.
+  // `pointDirections`, when not null, gives the directions per point (the element's directions
+  // varying inside it) and replaces `directions`.
   TissuePointLaw(const materials::MuscleMaterial &law, const materials::FamilyDirections &directions,
                  const materials::FamilyValues &alpha, double dt,
-                 std::array<const double *, 8> lambdaCOld, ElementMuscleResponse *record = nullptr)
-      : law_(law), lambdaCOld_(lambdaCOld), record_(record) {
+                 std::array<const double *, 8> lambdaCOld, ElementMuscleResponse *record = nullptr,
+                 const std::array<materials::FamilyDirections, 8> *pointDirections = nullptr)
+      : law_(law), lambdaCOld_(lambdaCOld), record_(record), pointDirections_(pointDirections) {
     input_.directions = directions;
     input_.alpha = alpha;
     input_.dt = dt;
@@ -33,6 +36,7 @@ public:
   bool evaluate(int q, const Eigen::Matrix3d &F, materials::PointResponse &out) const override {
     const int n = law_.familyCount();
     input_.F = F;
+    if (pointDirections_) input_.directions = (*pointDirections_)[static_cast<std::size_t>(q)];
     input_.lambdaCOld = Eigen::Map<const Eigen::VectorXd>(lambdaCOld_[q], n);
     const materials::MusclePointResponse r = law_.evaluate(input_);
     if (record_) {
@@ -53,6 +57,7 @@ private:
   mutable materials::MusclePointInput input_;
   std::array<const double *, 8> lambdaCOld_;
   ElementMuscleResponse *record_;
+  const std::array<materials::FamilyDirections, 8> *pointDirections_;
 };
 
 } // namespace glossa::model

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "fem/HexShape.hpp"
 #include "mesh/BoxGenerator.hpp"
 #include "model/FibreDirectionField.hpp"
 
@@ -130,4 +131,25 @@ TEST(FibreDirectionField, PolylinesWithoutASegmentAreRefused) {
   // A zero-length segment is skipped, not taken as a direction.
   const model::Polylines lines{{{0, 0, 0}, {0, 0, 0}, {0, 0, 3}}};
   EXPECT_LT((model::nearestSegmentDirection(lines, {0, 0, -1}) - Eigen::Vector3d::UnitZ()).norm(), 1e-15);
+}
+
+// Per quadrature point: each Gauss point takes the segment nearest to itself, so an element lying
+// between two fibres carries both directions, each where it is nearer.
+TEST(FibreDirectionField, PerQuadraturePointFollowsTheNearerFibre) {
+  // Element 0 is the unit cube; a fibre along y on its face x = 0 (at z = 0.5) and one along z on
+  // its face x = 1 (at y = 0.5). The Gauss points at x = 0.21 are 0.36 from the first fibre and
+  // at least 0.79 from the second; those at x = 0.79 the other way round.
+  const model::Polylines lines{{{0, -1, 0.5}, {0, 2, 0.5}}, {{1, 0.5, -1}, {1, 0.5, 2}}};
+  const auto N = model::polylinePointDirections(twoCells(), {0}, lines);
+  ASSERT_EQ(N.size(), 1u);
+  const auto &points = fem::gaussHex2();
+  for (int q = 0; q < 8; ++q) {
+    const Eigen::Vector3d expected = points[q].xi.x() < 0 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+    EXPECT_LT((N[0][q] - expected).norm(), 1e-15) << "point " << q;
+  }
+  // A straight fibre gives its direction at every point of every element.
+  const Eigen::Vector3d a(-1, -1, -1), d = Eigen::Vector3d(1, 2, 2) / 3.0;
+  for (const auto &element : model::polylinePointDirections(twoCells(), {0, 1}, {{a, a + 6.0 * d}}))
+    for (const auto &n : element) EXPECT_LT((n - d).norm(), 1e-15);
+  EXPECT_THROW(model::polylinePointDirections(twoCells(), {0}, {}), std::invalid_argument);
 }

@@ -5,6 +5,7 @@
 // invalid instead of returning numbers.
 #include <random>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "fem/Q1P0Element.hpp"
@@ -107,4 +108,61 @@ TEST(TissuePointLaw, FailedLocalSolveInvalidatesTheElement) {
   EXPECT_FALSE(r.valid);
   EXPECT_TRUE(r.lawFailed);
   EXPECT_EQ(record.status, materials::HillSolveStatus::InvalidInput);
+}
+
+// Directions varying inside the element (polylines sampled at the quadrature points): the
+// tangent is still the central difference of the residual, each point uses its own directions
+// (checked against the point law evaluated directly), and eight copies of the element's
+// directions give the element-constant result bit for bit.
+TEST(TissuePointLaw, PerPointDirections) {
+  Fixture f;
+  std::array<materials::FamilyDirections, 8> perPoint;
+  for (int q = 0; q < 8; ++q) {
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(0.2 * q, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    perPoint[q] = R * f.N;
+  }
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const NodeMatrix X = unitCube();
+  NodeMatrix u;
+  for (int i = 0; i < 24; ++i) u(i / 3, i % 3) = 5e-5 * unit(rng) + (i % 3 == 0 ? 2e-5 * X(i / 3, 0) / 1e-3 : 0.0);
+  model::ElementMuscleResponse record;
+  const model::TissuePointLaw law(f.law, f.N, f.alpha, 0.005, f.history, &record, &perPoint);
+  auto eval = [&](const NodeMatrix &v) { return fem::evaluateQ1P0(X, v, law, f.volumetric, 50.0); };
+  const auto r = eval(u);
+  ASSERT_TRUE(r.valid);
+  fem::ElementMatrix fd;
+  const double h = 1e-10;
+  for (int c = 0; c < 24; ++c) {
+    NodeMatrix up = u, um = u;
+    up(c / 3, c % 3) += h;
+    um(c / 3, c % 3) -= h;
+    fd.col(c) = (eval(up).residual - eval(um).residual) / (2 * h);
+  }
+  EXPECT_LT((fd - r.tangent).norm(), 1e-5 * r.tangent.norm());
+
+  eval(u); // the record holds the last evaluation: at u
+  std::array<Eigen::Matrix3d, 8> F;
+  std::array<double, 8> dV;
+  ASSERT_TRUE(fem::quadratureDeformationGradients(X, u, F, dV));
+  for (int q = 0; q < 8; ++q) {
+    materials::MusclePointInput in;
+    in.F = F[q];
+    in.dt = 0.005;
+    in.alpha = f.alpha;
+    in.lambdaCOld = Eigen::Vector2d(f.lambdaCOld[2 * q], f.lambdaCOld[2 * q + 1]);
+    in.directions = perPoint[q];
+    EXPECT_EQ(record.lambdaF[q], f.law.evaluate(in).lambdaF) << q;
+  }
+  // The rotated directions change the fibre stretches, so the check above can tell them apart.
+  EXPECT_GT((record.lambdaF[7] - record.lambdaF[0]).norm(), 1e-6);
+
+  std::array<materials::FamilyDirections, 8> same;
+  same.fill(f.N);
+  const model::TissuePointLaw constant(f.law, f.N, f.alpha, 0.005, f.history);
+  const model::TissuePointLaw copies(f.law, f.N, f.alpha, 0.005, f.history, nullptr, &same);
+  const auto a = fem::evaluateQ1P0(X, u, constant, f.volumetric, 50.0);
+  const auto b = fem::evaluateQ1P0(X, u, copies, f.volumetric, 50.0);
+  EXPECT_EQ((a.residual - b.residual).norm(), 0.0);
+  EXPECT_EQ((a.tangent - b.tangent).norm(), 0.0);
 }
