@@ -41,9 +41,10 @@ Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
 
   constrained_.assign(3 * mesh.numNodes(), 0);
   for (const auto &bc : scene_.dirichlet)
-    for (mesh::NodeId n : bc.nodes)
-      for (int c = 0; c < 3; ++c)
-        if (bc.fixed[c]) constrained_[3 * n + c] = 1;
+    if (!bc.elastic())
+      for (mesh::NodeId n : bc.nodes)
+        for (int c = 0; c < 3; ++c)
+          if (bc.fixed[c]) constrained_[3 * n + c] = 1;
 
   nodeMultiplicity_.assign(mesh.numNodes(), 0);
   double volume = 0.0;
@@ -104,6 +105,7 @@ Teuchos::RCP<FEMatrix> Assembler::createMatrix() const { return Teuchos::rcp(new
 
 void Assembler::applyDirichlet(Vector &u, double time) const {
   for (const auto &bc : scene_.dirichlet) {
+    if (bc.elastic()) continue;
     const double s = bc.scale(time);
     for (mesh::NodeId n : bc.nodes) {
       if (layout_.nodeOwner[n] != layout_.rank) continue;
@@ -221,6 +223,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
     }
     addExternalForces(time, fData);
     if (!addFollowerLoads(uData, time, fData, K, false)) localValid = 0;
+    addElasticSupports(uData, time, fData, K);
   }
   if (K) K->endAssembly();
   if (f) {
@@ -301,6 +304,27 @@ bool Assembler::addFollowerLoads(const Teuchos::ArrayRCP<const double> &uData, d
     }
   }
   return evaluateExternalMuscles(uData, &fData, K, constrainedToo, nullptr, nullptr);
+}
+
+void Assembler::addElasticSupports(const Teuchos::ArrayRCP<const double> &uData, double time,
+                                   Teuchos::ArrayRCP<double> &fData, FEMatrix *K) const {
+  // The spring's force on the body, -k (u - g), is an external force: the residual gains
+  // k (u - g) and the tangent k on the diagonal (scatterLoadBlock subtracts f and df).
+  for (const auto &bc : scene_.dirichlet) {
+    if (!bc.elastic()) continue;
+    const double s = bc.scale(time), k = bc.nodeStiffness;
+    for (mesh::NodeId n : bc.nodes) {
+      if (layout_.nodeOwner[n] != layout_.rank) continue;
+      Eigen::Vector3d f = Eigen::Vector3d::Zero();
+      Eigen::Matrix3d df = Eigen::Matrix3d::Zero();
+      for (int c = 0; c < 3; ++c) {
+        if (!bc.fixed[c]) continue;
+        f(c) = -k * (uData[overlapMap_->getLocalElement(layout_.dof(n, c))] - bc.value[c] * s);
+        df(c, c) = -k;
+      }
+      scatterLoadBlock(&n, 1, f.data(), df.data(), fData, K, /*constrainedToo=*/false);
+    }
+  }
 }
 
 bool Assembler::evaluateExternalMuscles(const Teuchos::ArrayRCP<const double> &uData, Teuchos::ArrayRCP<double> *fData,
@@ -452,8 +476,15 @@ std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, 
     const auto &bc = scene_.dirichlet[b];
     for (mesh::NodeId n : bc.nodes) {
       if (layout_.nodeOwner[n] != layout_.rank) continue;
-      for (int c = 0; c < 3; ++c)
-        if (bc.fixed[c]) local[3 * b + c] += fOwned[ownedMap_->getLocalElement(layout_.dof(n, c))];
+      for (int c = 0; c < 3; ++c) {
+        if (!bc.fixed[c]) continue;
+        if (!bc.elastic()) {
+          local[3 * b + c] += fOwned[ownedMap_->getLocalElement(layout_.dof(n, c))];
+        } else if (!constrained_[3 * n + c]) { // the spring's force on the body
+          const double u = uData[overlapMap_->getLocalElement(layout_.dof(n, c))];
+          local[3 * b + c] -= bc.nodeStiffness * (u - bc.value[c] * bc.scale(time));
+        }
+      }
     }
   }
   if (!local.empty())

@@ -94,7 +94,8 @@ public:
 
   // The reaction of every Dirichlet condition (scene order): the sum over its nodes of the
   // internal minus external force in its fixed components, i.e. the force the support exerts.
-  // A node in several conditions counts in each. Collective.
+  // A node in several conditions counts in each. For an elastic support: the sum of its springs'
+  // forces on the body, -k (u - g), over the components no other condition fixes. Collective.
   std::vector<Eigen::Vector3d> reactions(const Vector &u, double time, const std::vector<double> &lambda) const;
 
   // Norm of the external force vector at time t (the scale of the Newton tolerance).
@@ -128,6 +129,10 @@ private:
   // local solve failed on this rank.
   bool addFollowerLoads(const Teuchos::ArrayRCP<const double> &uOverlap, double time, Teuchos::ArrayRCP<double> &fData,
                         FEMatrix *K, bool constrainedToo) const;
+  // The springs of the elastic supports (DirichletCondition::elastic): residual k (u - g) and
+  // tangent k at every free supported component of this rank's nodes.
+  void addElasticSupports(const Teuchos::ArrayRCP<const double> &uOverlap, double time,
+                          Teuchos::ArrayRCP<double> &fData, FEMatrix *K) const;
   // The external muscles at u: their forces and tangent as above when `fData` is given; with
   // `history`, their new lambda_c written to its trial values; with `stretch` (2 per group),
   // lambda_f L_0 and L_0 added. False if a local solve failed on this rank.

@@ -19,13 +19,18 @@ namespace glossa::model {
 
 enum class ElementFormulation { Q1P0, PlainQ1 };
 
-// u_i(node, t) = value_i * scale(t) for every fixed component i of every node in the set.
+// u_i(node, t) = value_i * scale(t) for every fixed component i of every node in the set; or,
+// for an elastic support (nodeStiffness > 0), a linear spring per node and listed component
+// pulling u_i towards that value: the force on the body is -k (u_i - value_i scale(t)) (a
+// component that another condition fixes stays fixed, and its spring carries nothing).
 struct DirichletCondition {
   std::string name;
   std::vector<mesh::NodeId> nodes;
-  std::array<bool, 3> fixed{false, false, false};
+  std::array<bool, 3> fixed{false, false, false}; // the components the condition acts on
   Eigen::Vector3d value = Eigen::Vector3d::Zero();
   TimeFunction scale = TimeFunction::constant();
+  double nodeStiffness = 0.0; // [N/m] per node and component; 0: fixed
+  bool elastic() const { return nodeStiffness > 0.0; }
 };
 
 // A dead traction (force per reference area) on a face set, scaled in time.

@@ -99,6 +99,13 @@ ParameterList meshParameters() {
 
 ParameterList dirichletParameters() {
   ParameterList p;
+  io::declareString(p, "type", "fixed",
+                    "fixed: the components are prescribed; elastic: a spring per node and component "
+                    "pulls them towards the prescribed value (an elastic attachment, e.g. the hyoid)",
+                    {"fixed", "elastic"});
+  io::declareDouble(p, "stiffness", 0.0, "N/m",
+                    "elastic: the support's total stiffness per component, shared equally among its nodes",
+                    io::Range::nonNegative());
   io::declareString(p, "node set", "", "node set (or face set: its nodes) to constrain");
   io::declareString(p, "components", "x,y,z", "constrained components, comma separated",
                     {"x", "y", "z", "x,y", "x,z", "y,z", "x,y,z"});
@@ -275,8 +282,8 @@ void declareSceneParameters(ParameterList &schema) {
   schema.set("Mesh", meshParameters(), "the mesh and its sets");
   schema.set("Material", materialParameters(), "the material of every element");
   ParameterList bcs;
-  bcs.set(io::kAnySublist, dirichletParameters(), "one Dirichlet condition");
-  schema.set("Boundary conditions", bcs, "prescribed displacements, one sublist each");
+  bcs.set(io::kAnySublist, dirichletParameters(), "one condition: fixed (Dirichlet) or elastic");
+  schema.set("Boundary conditions", bcs, "prescribed displacements and elastic supports, one sublist each");
   ParameterList loads;
   loads.set(io::kAnySublist, loadParameters(), "one load");
   schema.set("Loads", loads, "surface loads, one sublist each");
@@ -325,6 +332,16 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     for (int i = 0; i < 3; ++i) bc.fixed[i] = comps.find("xyz"[i]) != std::string::npos;
     bc.value = vec3(b.get<Array<double>>("value"));
     bc.scale = timeFunction(deck, {"Boundary conditions", name, "time function"}, endTime);
+    if (b.get<std::string>("type") == "elastic") {
+      const double k = b.get<double>("stiffness");
+      if (!(k > 0.0))
+        throw io::DeckError(deck.where({"Boundary conditions", name, "stiffness"}) +
+                            ": an elastic support needs a stiffness > 0 [N/m] (its total, shared by its " +
+                            std::to_string(bc.nodes.size()) + " nodes)");
+      if (bc.nodes.empty())
+        throw io::DeckError(deck.where({"Boundary conditions", name, "node set"}) + ": the set '" + set + "' is empty");
+      bc.nodeStiffness = k / static_cast<double>(bc.nodes.size());
+    }
     scene.dirichlet.push_back(std::move(bc));
   }
 
