@@ -130,11 +130,12 @@ glossa::io::Deck loadDeck(const Arguments &a, const Teuchos::ParameterList &sche
 } // namespace
 
 int main(int argc, char **argv) {
-  // Kokkos answers --help itself: ours comes first.
-  if (argc >= 2 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help"))) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
+  // Kokkos answers --help itself, wherever it stands (glossa mesh --help): ours comes first.
+  for (int i = 1; i < argc; ++i)
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h") || (i == 1 && !std::strcmp(argv[i], "help"))) {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
   Tpetra::ScopeGuard mpi(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
