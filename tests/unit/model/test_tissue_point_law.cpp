@@ -37,6 +37,16 @@ struct Fixture {
   materials::FamilyValues alpha;
   std::array<double, 16> lambdaCOld{};
   std::array<const double *, 8> history{};
+  // What the element gives point q: its F, the fixture's activation and history, directions N.
+  materials::MusclePointInput pointInput(int q, const Eigen::Matrix3d &F, const materials::FamilyDirections &N) const {
+    materials::MusclePointInput in;
+    in.F = F;
+    in.dt = 0.005;
+    in.alpha = alpha;
+    in.lambdaCOld = Eigen::Vector2d(lambdaCOld[2 * q], lambdaCOld[2 * q + 1]);
+    in.directions = N;
+    return in;
+  }
   Fixture() {
     N.resize(3, 2);
     N.col(0) = Eigen::Vector3d(1, 1, 0).normalized(); // the element's own directions, not the law's
@@ -50,6 +60,19 @@ struct Fixture {
     }
   }
 };
+// Central differences (step 1e-10 m) of the element residual: column c is d residual / d u_c.
+template <class Evaluate>
+fem::ElementMatrix centralDifferenceTangent(const Evaluate &eval, const NodeMatrix &u) {
+  fem::ElementMatrix fd;
+  const double h = 1e-10;
+  for (int c = 0; c < 24; ++c) {
+    NodeMatrix up = u, um = u;
+    up(c / 3, c % 3) += h;
+    um(c / 3, c % 3) -= h;
+    fd.col(c) = (eval(up).residual - eval(um).residual) / (2 * h);
+  }
+  return fd;
+}
 } // namespace
 
 TEST(TissuePointLaw, ElementTangentMatchesFiniteDifferences) {
@@ -64,15 +87,7 @@ TEST(TissuePointLaw, ElementTangentMatchesFiniteDifferences) {
     auto eval = [&](const NodeMatrix &v) { return fem::evaluateQ1P0(X, v, law, f.volumetric, 50.0); };
     const auto r = eval(u);
     ASSERT_TRUE(r.valid);
-    fem::ElementMatrix fd;
-    const double h = 1e-10;
-    for (int c = 0; c < 24; ++c) {
-      NodeMatrix up = u, um = u;
-      up(c / 3, c % 3) += h;
-      um(c / 3, c % 3) -= h;
-      fd.col(c) = (eval(up).residual - eval(um).residual) / (2 * h);
-    }
-    EXPECT_LT((fd - r.tangent).norm(), 1e-5 * r.tangent.norm()) << "sample " << sample;
+    EXPECT_LT((centralDifferenceTangent(eval, u) - r.tangent).norm(), 1e-5 * r.tangent.norm()) << "sample " << sample;
   }
 }
 
@@ -87,13 +102,7 @@ TEST(TissuePointLaw, RecordsThePointLawsContractileStretch) {
   std::array<double, 8> dV;
   ASSERT_TRUE(fem::quadratureDeformationGradients(unitCube(), u, F, dV));
   for (int q = 0; q < 8; ++q) {
-    materials::MusclePointInput in;
-    in.F = F[q];
-    in.dt = 0.005;
-    in.alpha = f.alpha;
-    in.lambdaCOld = Eigen::Vector2d(f.lambdaCOld[2 * q], f.lambdaCOld[2 * q + 1]);
-    in.directions = f.N;
-    const auto direct = f.law.evaluate(in);
+    const auto direct = f.law.evaluate(f.pointInput(q, F[q], f.N));
     EXPECT_EQ(record.lambdaC[q], direct.lambdaC) << q;
     EXPECT_EQ(record.T[q], direct.T) << q;
   }
@@ -131,28 +140,14 @@ TEST(TissuePointLaw, PerPointDirections) {
   auto eval = [&](const NodeMatrix &v) { return fem::evaluateQ1P0(X, v, law, f.volumetric, 50.0); };
   const auto r = eval(u);
   ASSERT_TRUE(r.valid);
-  fem::ElementMatrix fd;
-  const double h = 1e-10;
-  for (int c = 0; c < 24; ++c) {
-    NodeMatrix up = u, um = u;
-    up(c / 3, c % 3) += h;
-    um(c / 3, c % 3) -= h;
-    fd.col(c) = (eval(up).residual - eval(um).residual) / (2 * h);
-  }
-  EXPECT_LT((fd - r.tangent).norm(), 1e-5 * r.tangent.norm());
+  EXPECT_LT((centralDifferenceTangent(eval, u) - r.tangent).norm(), 1e-5 * r.tangent.norm());
 
   eval(u); // the record holds the last evaluation: at u
   std::array<Eigen::Matrix3d, 8> F;
   std::array<double, 8> dV;
   ASSERT_TRUE(fem::quadratureDeformationGradients(X, u, F, dV));
   for (int q = 0; q < 8; ++q) {
-    materials::MusclePointInput in;
-    in.F = F[q];
-    in.dt = 0.005;
-    in.alpha = f.alpha;
-    in.lambdaCOld = Eigen::Vector2d(f.lambdaCOld[2 * q], f.lambdaCOld[2 * q + 1]);
-    in.directions = perPoint[q];
-    EXPECT_EQ(record.lambdaF[q], f.law.evaluate(in).lambdaF) << q;
+    EXPECT_EQ(record.lambdaF[q], f.law.evaluate(f.pointInput(q, F[q], perPoint[q])).lambdaF) << q;
   }
   // The rotated directions change the fibre stretches, so the check above can tell them apart.
   EXPECT_GT((record.lambdaF[7] - record.lambdaF[0]).norm(), 1e-6);
