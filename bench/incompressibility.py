@@ -48,6 +48,10 @@ STRATEGIES = {
     "cheb3-inexact": ["Linear solver/MueLu smoother=Chebyshev", "Incompressibility/Uzawa acceleration=inexact"],
     "cheb6r100-inexact": ["Linear solver/MueLu smoother=Chebyshev", "Linear solver/smoother degree=6",
                           "Linear solver/Chebyshev eigenvalue ratio=100", "Incompressibility/Uzawa acceleration=inexact"],
+    # The default with kappa_AL = 30 mu instead of 100 mu (the Krylov-total ratio of issue 8).
+    "cheb6r100-inexact-kal30": ["Linear solver/MueLu smoother=Chebyshev", "Linear solver/smoother degree=6",
+                                "Linear solver/Chebyshev eigenvalue ratio=100",
+                                "Incompressibility/Uzawa acceleration=inexact", "Incompressibility/penalty ratio=30"],
     "sgs2-inexact": ["Linear solver/MueLu smoother=symmetric Gauss-Seidel", "Linear solver/smoother degree=2",
                      "Incompressibility/Uzawa acceleration=inexact"],
 }
