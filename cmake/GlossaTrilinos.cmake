@@ -4,7 +4,7 @@
 # Trilinos' own warnings out of ours.
 find_package(MPI REQUIRED COMPONENTS CXX)
 find_package(Trilinos 13.2 REQUIRED COMPONENTS
-  Teuchos Tpetra Belos MueLu Ifpack2 Amesos2 Stratimikos Thyra ThyraTpetraAdapters NOX ShyLU_DDFROSch Zoltan2)
+  Teuchos Tpetra Belos MueLu Ifpack2 Amesos2 Stratimikos Thyra ThyraTpetraAdapters NOX ShyLU_DDFROSch Zoltan2 Teko)
 message(STATUS "Trilinos ${Trilinos_VERSION} from ${Trilinos_DIR}")
 
 add_library(glossa_trilinos INTERFACE)

@@ -241,15 +241,40 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const ParameterList &s, const 
   return p;
 }
 
-Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
-buildLinearSolver(const ParameterList &section, const LinearSolverContext &context) {
-  Stratimikos::DefaultLinearSolverBuilder builder;
+namespace {
+void registerPreconditioners(Stratimikos::DefaultLinearSolverBuilder &builder) {
   Stratimikos::enableMueLu<assembly::LO, assembly::GO, assembly::Node>(builder);
   Stratimikos::enableFROSch<assembly::LO, assembly::GO, assembly::Node>(builder);
   using Base = Thyra::PreconditionerFactoryBase<double>;
   using Impl = Thyra::Ifpack2PreconditionerFactory<assembly::CrsMatrix>;
   builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, Impl>(), "Ifpack2");
+}
+} // namespace
+
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
+buildLinearSolver(const ParameterList &section, const LinearSolverContext &context) {
+  Stratimikos::DefaultLinearSolverBuilder builder;
+  registerPreconditioners(builder);
   builder.setParameterList(stratimikosParameters(section, context));
+  return builder.createLinearSolveStrategy("");
+}
+
+Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>>
+buildDisplacementPreconditioner(const ParameterList &section, const LinearSolverContext &context) {
+  Stratimikos::DefaultLinearSolverBuilder builder;
+  registerPreconditioners(builder);
+  LinearSolverContext displacementBlock = context;
+  displacementBlock.symmetric = true; // K at fixed pressure is the symmetric part of a symmetric tangent
+  builder.setParameterList(stratimikosParameters(section, displacementBlock));
+  return builder.createPreconditioningStrategy("");
+}
+
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> buildBlockKrylovSolver(const ParameterList &section) {
+  ParameterList krylov = section;
+  krylov.set("Krylov method", "gmres"); // the block system is indefinite: no CG
+  krylov.set("preconditioner", "none");
+  Stratimikos::DefaultLinearSolverBuilder builder;
+  builder.setParameterList(stratimikosParameters(krylov, {}));
   return builder.createLinearSolveStrategy("");
 }
 

@@ -29,4 +29,11 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::Parame
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
 buildLinearSolver(const Teuchos::ParameterList &section, const LinearSolverContext &context);
 
+// For the mixed block solve (solvers/MixedBlockSolver): the preconditioner of the displacement
+// block as the section says (MueLu, FROSch, Ifpack2 or none), and Belos GMRES with the section's
+// tolerance, iteration limit and restart, which takes an external preconditioner.
+Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>>
+buildDisplacementPreconditioner(const Teuchos::ParameterList &section, const LinearSolverContext &context);
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> buildBlockKrylovSolver(const Teuchos::ParameterList &section);
+
 } // namespace glossa::solvers

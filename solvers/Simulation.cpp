@@ -27,6 +27,7 @@
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/NewtonSolver.hpp"
 #include "solvers/TimeStepping.hpp"
+#include "solvers/MixedBlockSolver.hpp"
 #include "solvers/UzawaLoop.hpp"
 
 namespace glossa::solvers {
@@ -201,6 +202,22 @@ void declareSolverParameters(Teuchos::ParameterList &schema) {
   schema.set("Control", controlParameters(), "neural control of the muscle groups (paper §6.1)");
 }
 
+namespace {
+// Incompressibility/method = mixed carries the element pressures in the Newton iterate: it needs
+// the mixed element, a full Newton step (the pressure increment is not line-searched), an
+// iterative block solve, and no controller (its sensitivities are condensed solves).
+void requireMixedCompatible(const Teuchos::ParameterList &D, const model::Scene &scene) {
+  const std::string why = "Incompressibility/method = mixed needs ";
+  if (scene.formulation != model::ElementFormulation::Q1P0) throw io::DeckError(why + "Material/element = Q1P0");
+  if (D.sublist("Nonlinear solver").get<std::string>("line search") != "full step")
+    throw io::DeckError(why + "Nonlinear solver/line search = full step (its pressure increment is not line-searched)");
+  if (D.sublist("Linear solver").get<std::string>("type") != "iterative")
+    throw io::DeckError(why + "Linear solver/type = iterative (the block system is solved by GMRES)");
+  if (D.sublist("Control").get<std::string>("type") != "none")
+    throw io::DeckError(why + "Control/type = none (the controllers' sensitivities use the condensed tangent)");
+}
+} // namespace
+
 nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
                              const RunOptions &options) {
   const auto start = Clock::now();
@@ -236,7 +253,17 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
   LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), solverComm->getSize(),
                               assembler->layout().numGlobalDofs(), scene.symmetricTangent};
   const auto &linearSection = D.sublist("Linear solver");
-  auto model = Teuchos::rcp(new assembly::ModelEvaluator(assembler, buildLinearSolver(linearSection, context)));
+  Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
+  if (incompressibility.get<std::string>("method") == "mixed") {
+    requireMixedCompatible(D, scene);
+    const AugmentedLagrangianRule law(physicalVolumetric, mu); // only its theta_phys(p) is used
+    mixedPressure = Teuchos::rcp(new assembly::MixedPressureState(
+        physicalVolumetric, [law](double p) { return law.dilatationAtPressure(p); }, mu));
+  }
+  auto model = Teuchos::rcp(new assembly::ModelEvaluator(
+      assembler, mixedPressure.is_null() ? buildLinearSolver(linearSection, context)
+                                         : buildMixedBlockSolver(linearSection, context, mixedPressure)));
+  model->setMixedPressure(mixedPressure);
   double lengthScale = 0.0;
   for (const auto &x : scene.mesh.nodes) lengthScale = std::max(lengthScale, x.norm());
   NewtonSolver newton(model, D.sublist("Nonlinear solver"), lengthScale, linearSection.get<double>("tolerance"),

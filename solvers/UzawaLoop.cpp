@@ -17,8 +17,12 @@ Teuchos::ParameterList incompressibilityParameters() {
                     "element pressure obeys the material's volumetric law (Poisson's ratio or bulk "
                     "modulus; nu = 0.5: theta = 1), with the moderate kappa_t = kappa kappa_AL / "
                     "(kappa + kappa_AL) in the tangent; penalty: one solve with the material's "
-                    "bulk modulus in the tangent (needs nu < 0.5)",
-                    {"augmented Lagrangian", "penalty"});
+                    "bulk modulus in the tangent (needs nu < 0.5); mixed: element pressures as "
+                    "unknowns beside the displacements, no condensation and no Uzawa loop (any nu "
+                    "up to 0.5), each Newton step a block solve by GMRES with a Teko block-triangular "
+                    "preconditioner (MueLu on the displacement block, the scaled pressure mass "
+                    "matrix for the Schur complement; needs Q1-P0 and the full-step line search)",
+                    {"augmented Lagrangian", "penalty", "mixed"});
   io::declareDouble(p, "penalty ratio", 30.0, "",
                     "kappa_AL / mu in augmented-Lagrangian mode, mu the law's small-strain shear "
                     "modulus (30 keeps the Krylov total within about 2.4x of nu = 0.3 at every nu "
@@ -49,6 +53,8 @@ double UzawaLoop::augmentationKappa(const Teuchos::ParameterList &s, double mu) 
 }
 
 double UzawaLoop::tangentKappa(const Teuchos::ParameterList &s, double materialKappa, double mu) {
+  // Mixed: the kernel carries no volumetric energy; the pressure unknowns carry the law.
+  if (s.get<std::string>("method") == "mixed") return 0.0;
   if (s.get<std::string>("method") == "augmented Lagrangian")
     return AugmentedLagrangianRule(materials::VolumetricEnergy(materials::VolumetricEnergy::Form::Quadratic, materialKappa),
                                    augmentationKappa(s, mu))
@@ -63,6 +69,7 @@ UzawaLoop::UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &n
                      const Teuchos::ParameterList &s, const materials::VolumetricEnergy &physical, double mu)
     : assembler_(assembler), newton_(newton),
       augmented_(s.get<std::string>("method") == "augmented Lagrangian"),
+      mixed_(s.get<std::string>("method") == "mixed"),
       rule_(physical, augmentationKappa(s, mu)), tolerance_(s.get<double>("dilatation tolerance")), maxIterations_(s.get<int>("maximum Uzawa iterations")),
       inexact_(augmented_ && s.get<std::string>("Uzawa acceleration") == "inexact"),
       innerTolerance_(s.get<double>("inner tolerance")) {}
@@ -71,7 +78,7 @@ DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) con
   double local[2] = {0.0, 0.0}, volume = 0.0, maxErr = 0.0, maxChange = 0.0;
   for (std::size_t i = 0; i < f.theta.size(); ++i) {
     const double change = std::abs(f.theta[i] - 1.0);
-    const double e = augmented_ ? rule_.dilatationError(f.theta[i], f.pressure[i]) : change;
+    const double e = augmented_ || mixed_ ? rule_.dilatationError(f.theta[i], f.pressure[i]) : change;
     maxErr = std::max(maxErr, e);
     maxChange = std::max(maxChange, change);
     local[0] += e * f.referenceVolume[i];
@@ -98,7 +105,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
   const double looseTolerance =
       std::max(residualTolerance, residualTolerance * innerTolerance_ / newton_.relativeResidualTolerance());
   bool tight = !inexact_;
-  for (int k = 1; k <= (augmented_ ? maxIterations_ : 1); ++k) {
+  for (int k = 1; k <= (augmented_ || mixed_ ? maxIterations_ : 1); ++k) {
     NewtonResult n = tight ? newton_.solve(u, residualTolerance, onNewton)
                            : newton_.solve(u, looseTolerance, onNewton, innerTolerance_);
     ++result.solves;
@@ -112,7 +119,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
     const assembly::ElementFields fields = assembler_.elementFields(u, lambda);
     result.dilatation = dilatationError(fields);
     if (onUzawa) onUzawa(k, result.newton.back(), result.dilatation);
-    if (!augmented_ || result.dilatation.max < tolerance_) {
+    if (!(augmented_ || mixed_) || result.dilatation.max < tolerance_) {
       if (tight) {
         result.converged = true;
         return result;
@@ -123,6 +130,10 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
     // a loose solve's own error puts a floor under the dilatation error it can reach (measured:
     // repeated loose solves stalled above a 1e-9 tolerance and the step failed).
     tight = true;
+    // Mixed: the Newton iterates moved the pressures with the displacements; a dilatation error
+    // above the tolerance after a converged solve (a loose residual tolerance) only asks for more
+    // Newton iterations from here.
+    if (mixed_) continue;
     // Lambda_e <- beta p_e (p_e = U_t'(theta_e) + Lambda_e; for nu = 0.5, beta = 1 and this is
     // Lambda_e + kappa_AL (theta_e - 1) to first order): the multiplier takes over the element
     // pressure, so the next solve needs less volume change to carry it (AugmentedLagrangianRule).

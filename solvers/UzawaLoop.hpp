@@ -44,6 +44,7 @@ public:
             const Teuchos::ParameterList &section, const materials::VolumetricEnergy &physical, double mu);
 
   bool augmentedLagrangian() const { return augmented_; }
+  bool mixedPressure() const { return mixed_; }
   // kappa_AL = penalty ratio x mu (augmented Lagrangian only).
   static double augmentationKappa(const Teuchos::ParameterList &section, double mu);
   // kappa in the tangent: kappa_t = kappa kappa_AL / (kappa + kappa_AL) in augmented-Lagrangian
@@ -62,6 +63,7 @@ private:
   const assembly::Assembler &assembler_;
   const NewtonSolver &newton_;
   bool augmented_;
+  bool mixed_;                // element pressures are Newton unknowns (MixedPressureState)
   AugmentedLagrangianRule rule_;
   double tolerance_;
   int maxIterations_;

@@ -37,6 +37,8 @@ Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
   ownedMap_ = makeMap(layout_.ownedDofs, layout_.numGlobalDofs(), comm_);
   overlapMap_ = makeMap(layout_.overlapDofs, Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), comm_);
   importer_ = Teuchos::rcp(new Import(ownedMap_, overlapMap_));
+  pressureMap_ = makeMap(std::vector<GlobalIndex>(layout_.localElements.begin(), layout_.localElements.end()),
+                         mesh.numElements(), comm_);
   exporter_ = Teuchos::rcp(new Export(overlapMap_, ownedMap_));
 
   constrained_.assign(3 * mesh.numNodes(), 0);
@@ -124,6 +126,38 @@ fem::NodeMatrix Assembler::elementDisplacement(std::size_t i, const Teuchos::Arr
   for (int a = 0; a < 8; ++a)
     for (int c = 0; c < 3; ++c) ue(a, c) = uData[elementLids_[i][3 * a + c]];
   return ue;
+}
+
+PressureCoupling Assembler::pressureCoupling(const Vector &u) const {
+  Vector uOverlap(overlapMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  const std::size_t n = layout_.localElements.size();
+  PressureCoupling out;
+  out.pressureMap = pressureMap_;
+  out.volumeGradient = Teuchos::rcp(new CrsMatrix(pressureMap_, 24));
+  out.referenceVolume.resize(n);
+  out.currentVolume.resize(n);
+  int ok = 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto e = layout_.localElements[i];
+    fem::ElementVector g;
+    if (!fem::elementVolumeGradient(scene_.mesh.elementCoordinates(e), elementDisplacement(i, uData),
+                                    out.referenceVolume[i], out.currentVolume[i], g)) {
+      ok = 0;
+      g.setZero();
+    }
+    const auto &hex = scene_.mesh.elements[e];
+    for (int l = 0; l < 24; ++l)
+      if (constrained_[3 * hex[l / 3] + l % 3]) g(l) = 0.0;
+    out.volumeGradient->insertGlobalValues(static_cast<GO>(e), Teuchos::ArrayView<const GO>(elementGids_[i].data(), 24),
+                                           Teuchos::ArrayView<const double>(g.data(), 24));
+  }
+  out.volumeGradient->fillComplete(ownedMap_, pressureMap_);
+  int all = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, ok, Teuchos::outArg(all));
+  out.valid = all == 1;
+  return out;
 }
 
 std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::vector<double> &lambda,

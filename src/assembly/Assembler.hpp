@@ -51,6 +51,18 @@ struct MuscleFields {
   std::vector<double> groupMeanStretch;
 };
 
+// The pressure blocks of the uncondensed (mixed) Q1-P0 system at a displacement
+// (Incompressibility/method = mixed): one pressure unknown per element, its coupling row
+// B_e = dv_e/du (the current volume's gradient, fem::elementVolumeGradient) with the columns of
+// constrained dofs zero, and the element volumes from which the solver forms the constraint
+// residual v_e - V_e theta_phys(p_e) and the pressure blocks.
+struct PressureCoupling {
+  Teuchos::RCP<const Map> pressureMap;      // one entry per local element, GID = mesh element id
+  Teuchos::RCP<CrsMatrix> volumeGradient;   // B: range = pressureMap, domain = the owned dof map
+  std::vector<double> referenceVolume, currentVolume; // per local element
+  bool valid = true;                        // false: an element inverted (on any rank)
+};
+
 class Assembler {
 public:
   Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm);
@@ -79,6 +91,11 @@ public:
   // `previous` carries the dilatation iterates forward. Collective (imports u).
   std::vector<fem::MixedBase> mixedBases(const Vector &u, const std::vector<double> &lambda,
                                          const std::vector<fem::MixedBase> *previous) const;
+
+  // The mixed system's coupling block and element volumes at u (see PressureCoupling).
+  // Collective (imports u).
+  PressureCoupling pressureCoupling(const Vector &u) const;
+  Teuchos::RCP<const Map> pressureMap() const { return pressureMap_; }
 
   // Element dilatation, pressure, stress, min J (local elements). Collective (imports u).
   ElementFields elementFields(const Vector &u, const std::vector<double> &lambda) const;
@@ -147,7 +164,7 @@ private:
   const model::Scene &scene_;
   Teuchos::RCP<const Comm> comm_;
   DofLayout layout_;
-  Teuchos::RCP<const Map> ownedMap_, overlapMap_;
+  Teuchos::RCP<const Map> ownedMap_, overlapMap_, pressureMap_;
   Teuchos::RCP<Import> importer_;
   Teuchos::RCP<Export> exporter_;
   Teuchos::RCP<FEGraph> graph_;

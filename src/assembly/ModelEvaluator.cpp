@@ -41,11 +41,15 @@ const std::vector<double> &ModelEvaluator::lambdaOrZero() const {
 }
 
 void ModelEvaluator::resetIterates(const Vector &u) {
-  mixed_ = assembler_->scene().formulation == model::ElementFormulation::Q1P0;
+  // With pressures as unknowns the kernel's volumetric energy is zero and the element pressure is
+  // the multiplier itself: the three-field iterates would carry nothing.
+  mixed_ = assembler_->scene().formulation == model::ElementFormulation::Q1P0 && pressure_.is_null();
+  if (!pressure_.is_null()) pressure_->pending = false;
   if (mixed_) bases_ = assembler_->mixedBases(u, lambdaOrZero(), nullptr);
 }
 
 void ModelEvaluator::advanceIterates(const Vector &u) {
+  if (!pressure_.is_null() && lambda_) pressure_->commit(*lambda_);
   if (mixed_) bases_ = assembler_->mixedBases(u, lambdaOrZero(), &bases_);
 }
 
@@ -66,7 +70,13 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
     K = dynamic_cast<FEMatrix *>(op.get());
     TEUCHOS_TEST_FOR_EXCEPTION(K == nullptr, std::logic_error, "W_op is not the model's FECrsMatrix");
   }
-  const std::vector<double> &lambda = lambdaOrZero();
+  if (K && !pressure_.is_null()) {
+    TEUCHOS_TEST_FOR_EXCEPTION(lambda_ == nullptr, std::logic_error, "mixed pressure unknowns need the multipliers");
+    // A tangent at a trial point: the point is the iterate, so its pressure is too.
+    pressure_->commit(*lambda_);
+    pressure_->linearise(*assembler_, *x, *lambda_);
+  }
+  const std::vector<double> &lambda = pressure_.is_null() ? lambdaOrZero() : pressure_->trialPressure(lambdaOrZero());
   Vector fScratch(assembler_->ownedMap());
   lastStatus_ = assembler_->assemble(*x, time_, lambda, mixed_ ? &bases_ : nullptr,
                                      f.is_null() ? (K ? &fScratch : nullptr) : f.get(), K);

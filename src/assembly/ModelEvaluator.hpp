@@ -8,6 +8,7 @@
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
 
 #include "assembly/Assembler.hpp"
+#include "assembly/MixedPressureState.hpp"
 
 namespace glossa::assembly {
 
@@ -17,7 +18,13 @@ public:
                  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory);
 
   void setTime(double t) { time_ = t; }
-  void setLambda(const std::vector<double> *lambda) { lambda_ = lambda; }
+  // The multipliers Lambda per local element; with element pressures as unknowns (setMixedPressure)
+  // they are those pressures, updated in place by every accepted Newton iterate.
+  void setLambda(std::vector<double> *lambda) { lambda_ = lambda; }
+  // Incompressibility/method = mixed: every tangent also linearises the pressure blocks, trial
+  // evaluations see the block solver's pending pressure increment, and accepted iterates commit it.
+  void setMixedPressure(Teuchos::RCP<MixedPressureState> state) { pressure_ = std::move(state); }
+  Teuchos::RCP<MixedPressureState> mixedPressure() const { return pressure_; }
   // Three-field Newton iterates (Q1-P0): reset to the exact condensation at u before a solve,
   // advanced to every accepted Newton iterate (fem::MixedBase).
   void resetIterates(const Vector &u);
@@ -51,7 +58,8 @@ private:
   Thyra::ModelEvaluatorBase::InArgs<double> prototypeInArgs_, nominal_;
   Thyra::ModelEvaluatorBase::OutArgs<double> prototypeOutArgs_;
   double time_ = 0.0;
-  const std::vector<double> *lambda_ = nullptr;
+  std::vector<double> *lambda_ = nullptr;
+  Teuchos::RCP<MixedPressureState> pressure_;
   const std::vector<double> &lambdaOrZero() const;
   std::vector<fem::MixedBase> bases_;
   mutable std::vector<double> zeroLambda_;

@@ -235,6 +235,14 @@ Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u, const Quadr
   return r;
 }
 
+bool elementVolumeGradient(const NodeMatrix &X, const NodeMatrix &u, double &V, double &v, ElementVector &g) {
+  std::array<PointKinematics, 8> pts;
+  double minJ = 0.0;
+  if (!kinematics(X, u, pts, minJ) || !(minJ > 0.0)) return false;
+  volumeAndGradient(pts, V, v, g);
+  return true;
+}
+
 bool quadratureDeformationGradients(const NodeMatrix &X, const NodeMatrix &u, std::array<Eigen::Matrix3d, 8> &F,
                                     std::array<double, 8> &dV) {
   std::array<PointKinematics, 8> pts;

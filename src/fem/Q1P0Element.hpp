@@ -102,6 +102,11 @@ inline Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u,
   return evaluatePlainQ1(X, u, UniformPointLaw(material), volumetric, what);
 }
 
+// The element's reference volume V, current volume v = int J dV and its gradient
+// g_a = dv/du_a = int J F^{-T} dN_a/dX dV: the coupling column of an element pressure in the
+// uncondensed (mixed) system. False for a degenerate element or J <= 0 at a quadrature point.
+bool elementVolumeGradient(const NodeMatrix &X, const NodeMatrix &u, double &V, double &v, ElementVector &g);
+
 // The deformation gradients and reference volume weights at the 8 quadrature points
 // (gaussHex2() order); false for a degenerate reference element. Used to evaluate point laws
 // outside an assembly (history updates, output of fibre stretches).

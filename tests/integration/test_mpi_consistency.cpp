@@ -1,6 +1,6 @@
 // Run under mpiexec -np 2: the same deck on one rank (a split communicator) and on both ranks
 // gives the same displacement field (every node, read from results.h5) to 1e-8 relative, for
-// the penalty and the augmented-Lagrangian paths.
+// the penalty, augmented-Lagrangian, mixed and FROSch paths.
 #include <cmath>
 #include <cstdio>
 
@@ -58,6 +58,14 @@ TEST(MpiConsistency, AugmentedLagrangianOneAndTwoRanksAgree) {
   expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/tolerance=1e-10",
                               "Nonlinear solver/forcing term=constant", "Incompressibility/method=augmented Lagrangian"},
                              "al");
+}
+
+// The mixed block solve (pressures as unknowns) at exact incompressibility, nu = 0.5.
+TEST(MpiConsistency, MixedOneAndTwoRanksAgree) {
+  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/tolerance=1e-10",
+                              "Nonlinear solver/forcing term=constant", "Incompressibility/method=mixed",
+                              "Material/Poisson's ratio=0.5"},
+                             "mixed");
 }
 
 // FROSch: one subdomain per rank, so 1 and 2 ranks are different preconditioners (a direct solve

@@ -219,3 +219,30 @@ TEST(Q1P0Element, MixedIterateExtrapolatesLinearly) {
   const auto at = fem::evaluateQ1P0Mixed(X, u0 + du, next, f.iso, f.vol, 0.0, false);
   EXPECT_LT((at.residual - r.residual).norm(), 1e-12 * r.residual.norm());
 }
+
+// The coupling column of the uncondensed system is the derivative of the current volume: checked
+// against central differences of v(u) and against v = V det F for a homogeneous deformation.
+TEST(Q1P0Element, VolumeGradientIsTheDerivativeOfTheCurrentVolume) {
+  std::mt19937 rng(7);
+  const NodeMatrix X = distortedHex(rng);
+  const NodeMatrix u = randomDisplacement(rng, 1e-4);
+  double V = 0.0, v = 0.0;
+  ElementVector g;
+  ASSERT_TRUE(fem::elementVolumeGradient(X, u, V, v, g));
+  const double h = 1e-9;
+  for (int k = 0; k < 24; ++k) {
+    NodeMatrix up = u, um = u;
+    up(k / 3, k % 3) += h;
+    um(k / 3, k % 3) -= h;
+    double Vp, vp, Vm, vm;
+    ElementVector gp, gm;
+    ASSERT_TRUE(fem::elementVolumeGradient(X, up, Vp, vp, gp));
+    ASSERT_TRUE(fem::elementVolumeGradient(X, um, Vm, vm, gm));
+    EXPECT_NEAR(g(k), (vp - vm) / (2 * h), 1e-7 * g.norm()) << k;
+  }
+  Eigen::Matrix3d F;
+  F << 1.1, 0.05, 0.0, -0.02, 0.95, 0.03, 0.01, 0.0, 1.02;
+  const NodeMatrix uh = X * (F - Eigen::Matrix3d::Identity()).transpose();
+  ASSERT_TRUE(fem::elementVolumeGradient(X, uh, V, v, g));
+  EXPECT_NEAR(v, V * F.determinant(), 1e-12 * V);
+}

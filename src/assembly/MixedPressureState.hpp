@@ -1,0 +1,59 @@
+#pragma once
+// The element pressures as unknowns of the Newton solve (Incompressibility/method = mixed): the
+// uncondensed Q1-P0 system
+//   [ K  B^T ] [du]   [ -R_u          ]
+//   [ B  -C  ] [dp] = [ -(v - V theta_phys(p)) ]
+// per element e, with K the tangent at fixed pressure (the kernel's volumetric energy is zero, so
+// the element pressure is the multiplier Lambda_e = p_e), B_e = dv_e/du, and C_e = V_e / U''(theta)
+// at theta = theta_phys(p_e), the material's compliance (0 for kappa = inf: exact incompressibility,
+// which the condensed form cannot express). Eliminating dp element by element gives back the
+// condensed three-field Newton step, so both give the same iterates (doc/incompressibility.md).
+//
+// This state is shared by the model evaluator, which linearises it with every tangent and applies
+// the pending pressure increment to trial evaluations, and the block solver, which reads the
+// blocks and writes the increment.
+
+#include <functional>
+#include <vector>
+
+#include "assembly/Assembler.hpp"
+#include "materials/VolumetricEnergy.hpp"
+
+namespace glossa::assembly {
+
+struct MixedPressureState {
+  MixedPressureState(materials::VolumetricEnergy physicalLaw, std::function<double(double)> dilatationOfPressure,
+                     double mu)
+      : physical(physicalLaw), dilatationAtPressure(std::move(dilatationOfPressure)), shearModulus(mu) {}
+
+  materials::VolumetricEnergy physical;                // the material's law (kappa may be inf)
+  std::function<double(double)> dilatationAtPressure;  // theta_phys(p): U'(theta) = p
+  double shearModulus;
+
+  // The blocks at the last tangent (linearise), with the pressure unknown and its equation scaled
+  // by sigma_e = mu / V_e^(1/3): B ~ h^2 and M_p / mu ~ h^3 / mu against K ~ mu h would leave the
+  // pressure rows 1e-11 of the displacement rows (SI units, 1 mm elements), and GMRES would stop
+  // before it had touched them. Scaled, every block is of the size mu h.
+  PressureCoupling coupling;               // its volumeGradient holds sigma B
+  Teuchos::RCP<Vector> pressureScale;      // sigma_e
+  Teuchos::RCP<Vector> compliance;         // sigma_e^2 C_e
+  Teuchos::RCP<Vector> schurDiagonal;      // sigma_e^2 (C_e + V_e / mu): minus the Schur-complement approximation
+  Teuchos::RCP<Vector> constraintResidual; // sigma_e (v_e - V_e theta_phys(p_e))
+
+  // The pressure increment of the last block solve (unscaled, Pa). A trial evaluation sees p + increment; the
+  // accepted Newton iterate commits it (the line search must be the full step).
+  std::vector<double> increment;
+  bool pending = false;
+
+  // Forms the blocks at displacement u and element pressures p (local elements). Collective.
+  void linearise(const Assembler &assembler, const Vector &u, const std::vector<double> &pressure);
+  // p + increment if one is pending, else p.
+  const std::vector<double> &trialPressure(const std::vector<double> &pressure) const;
+  // p += increment; nothing pending afterwards.
+  void commit(std::vector<double> &pressure);
+
+private:
+  mutable std::vector<double> trial_;
+};
+
+} // namespace glossa::assembly
