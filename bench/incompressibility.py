@@ -52,6 +52,10 @@ STRATEGIES = {
     "cheb6r100-inexact-kal30": ["Linear solver/MueLu smoother=Chebyshev", "Linear solver/smoother degree=6",
                                 "Linear solver/Chebyshev eigenvalue ratio=100",
                                 "Incompressibility/Uzawa acceleration=inexact", "Incompressibility/penalty ratio=30"],
+    # Issue 8 (d): element pressures as unknowns, GMRES on the block system with Teko's block
+    # upper-triangular preconditioner (the default MueLu on K, C + M_p/mu on the Schur complement);
+    # no Uzawa loop at any nu, nu = 0.5 exactly.
+    "mixed": ["Incompressibility/method=mixed"],
     "sgs2-inexact": ["Linear solver/MueLu smoother=symmetric Gauss-Seidel", "Linear solver/smoother degree=2",
                      "Incompressibility/Uzawa acceleration=inexact"],
 }

@@ -65,14 +65,16 @@ ParameterList linearSolverParameters() {
                     io::Range::atLeast(2.0));
   io::declareString(p, "MueLu reuse", "RP",
                     "what MueLu keeps between Newton iterations: none (rebuild), RP (aggregates and "
-                    "transfer operators; coarse matrices and smoothers recomputed), full (the whole "
-                    "hierarchy, stale); the vertex-patch smoother always uses none (Ifpack2 13.2's "
-                    "overlapping block relaxation returns NaN when reused; it runs on one rank only)",
-                    {"none", "RP", "full"});
+                    "transfer operators; coarse matrices and smoothers recomputed), RAP (also the "
+                    "coarse matrices and their smoothers and coarse solve, stale; only the finest "
+                    "smoother is rebuilt), full (the whole hierarchy, stale); the vertex-patch "
+                    "smoother always uses none (Ifpack2 13.2's overlapping block relaxation returns "
+                    "NaN when reused; it runs on one rank only)",
+                    {"none", "RP", "RAP", "full"});
   io::declareString(p, "MueLu reuse scope", "Newton solve",
                     "how long a reused hierarchy lives: Newton solve (rebuilt at the start of every "
                     "Newton solve, i.e. every Uzawa iteration and load step) or run (kept across "
-                    "Uzawa iterations and load steps; only with MueLu reuse = RP or full)",
+                    "Uzawa iterations and load steps; only with MueLu reuse = RP, RAP or full)",
                     {"Newton solve", "run"});
   io::declareInt(p, "coarse size", 2000, "MueLu stops coarsening below this many rows", io::Range::atLeast(10));
   io::declareString(p, "Ifpack2 type", "symmetric Gauss-Seidel",

@@ -61,7 +61,7 @@ double UzawaLoop::tangentKappa(const Teuchos::ParameterList &s, double materialK
         .tangentKappa();
   if (!std::isfinite(materialKappa))
     throw io::DeckError("Material: an infinite bulk modulus (Poisson's ratio = 0.5, exact incompressibility) "
-                        "needs Incompressibility/method = augmented Lagrangian; a penalty needs nu < 0.5");
+                        "needs Incompressibility/method = augmented Lagrangian or mixed; a penalty needs nu < 0.5");
   return materialKappa;
 }
 

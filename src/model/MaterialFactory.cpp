@@ -279,7 +279,7 @@ ParameterList materialParameters() {
   io::declareDouble(p, "Poisson's ratio", 0.4999, "",
                     "nu, gives the bulk modulus kappa = 2 mu (1+nu) / (3 (1-2nu)) from the law's "
                     "small-strain shear modulus unless 'bulk modulus' is set; 0.5: exactly "
-                    "incompressible (needs Incompressibility/method = augmented Lagrangian)",
+                    "incompressible (needs Incompressibility/method = augmented Lagrangian or mixed)",
                     {-1.0, 0.5, true, false});
   io::declareDouble(p, "bulk modulus", 0.0, "Pa", "kappa; 0 means: from Poisson's ratio",
                     io::Range::nonNegative());

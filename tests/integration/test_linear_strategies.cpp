@@ -70,6 +70,7 @@ INSTANTIATE_TEST_SUITE_P(
                       std::vector<std::string>{"Linear solver/preconditioner=FROSch",
                                                "Linear solver/FROSch coarse space=RGDSW"},
                       std::vector<std::string>{"Linear solver/MueLu reuse=none"},
+                      std::vector<std::string>{"Linear solver/MueLu reuse=RAP"},
                       std::vector<std::string>{"Linear solver/MueLu reuse=full"},
                       std::vector<std::string>{"Linear solver/MueLu reuse scope=run"},
                       std::vector<std::string>{"Linear solver/MueLu reuse scope=run",
@@ -86,6 +87,10 @@ TEST(LinearStrategyLists, EachSmootherIsWhatTheDeckSays) {
     EXPECT_EQ(m.sublist("smoother: params").get<int>("relaxation: sweeps"), 2);
     EXPECT_EQ(m.sublist("smoother: params").get<std::string>("relaxation: container"), "Dense");
     EXPECT_EQ(m.get<std::string>("reuse: type"), "RP");
+  }
+  {
+    const auto m = mueluList({"Linear solver/MueLu reuse=RAP"});
+    EXPECT_EQ(m.get<std::string>("reuse: type"), "RAP");
   }
   {
     const auto m = mueluList({"Linear solver/MueLu smoother=vertex-patch"});
