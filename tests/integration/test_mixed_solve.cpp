@@ -9,31 +9,17 @@
 
 #include <cmath>
 
-#include "Hdf5Reading.hpp"
+#include "LastStepField.hpp"
 #include "RunDeck.hpp"
 #include "io/deck/DeckError.hpp"
 
 using namespace glossa;
+using test::lastStepField;
+using test::maxAbs;
 
 namespace {
 // deal.II step-44, 4 elements per side, nu = 0.4999, t = 1 (doc/verification/step44_reference.md).
 constexpr double kDealII4 = -0.789713e-3;
-
-std::vector<double> lastStepField(const std::filesystem::path &dir, const std::string &name) {
-  const io::testing::Hdf5File file(dir / "results.h5");
-  std::string last;
-  for (const auto &path : file.datasetPaths())
-    if (path.rfind("/step_", 0) == 0 && path.size() > name.size() + 1 &&
-        path.substr(path.size() - name.size() - 1) == "/" + name && path > last)
-      last = path;
-  return file.doubles(last).values;
-}
-
-double maxAbs(const std::vector<double> &v) {
-  double m = 0.0;
-  for (double x : v) m = std::max(m, std::abs(x));
-  return m;
-}
 
 const std::vector<std::string> kTight = {"Mesh/Box/cells=4,4,4", "Output/every=10", "Linear solver/tolerance=1e-10",
                                          "Nonlinear solver/forcing term=constant"};

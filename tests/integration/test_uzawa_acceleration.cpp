@@ -6,27 +6,14 @@
 
 #include <cmath>
 
-#include "Hdf5Reading.hpp"
+#include "LastStepField.hpp"
 #include "RunDeck.hpp"
 
 using namespace glossa;
+using test::lastStepField;
+using test::maxAbs;
 
 namespace {
-std::vector<double> lastStepField(const std::filesystem::path &dir, const std::string &name) {
-  const io::testing::Hdf5File file(dir / "results.h5");
-  std::string last;
-  for (const auto &path : file.datasetPaths())
-    if (path.rfind("/step_", 0) == 0 && path.size() > name.size() + 1 &&
-        path.substr(path.size() - name.size() - 1) == "/" + name && path > last)
-      last = path;
-  return file.doubles(last).values;
-}
-
-double maxAbs(const std::vector<double> &v) {
-  double m = 0.0;
-  for (double x : v) m = std::max(m, std::abs(x));
-  return m;
-}
 
 int total(const nlohmann::json &s, const std::string &key) {
   int n = 0;
