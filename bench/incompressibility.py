@@ -153,7 +153,7 @@ def plot(scene, rows):
     ax.set_xlabel("Poisson's ratio")
     ax.set_ylabel("max Krylov iterations per linear solve")
     ax.set_yscale("log")
-    ax.set_title(f"{scene}: augmented Lagrangian, kappa_AL = 100 mu")
+    ax.set_title(f"{scene}: augmented Lagrangian (kappa_AL = 100 mu; -kal30: 30 mu) and mixed")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()

@@ -1,6 +1,8 @@
 #pragma once
 // Serves the residual and the tangent to NOX through Thyra (Trilinos' model-evaluator
-// interface): x is the owned displacement vector, f = f_int - f_ext, W the condensed tangent.
+// interface): x is the owned displacement vector, f = f_int - f_ext, W the condensed tangent
+// (with element pressures as unknowns, setMixedPressure: the tangent at fixed pressure, whose
+// block system solvers/MixedBlockSolver solves).
 // The time and the augmented Lagrange multipliers are held fixed during one Newton solve and
 // set by the Uzawa loop and the time stepper.
 
