@@ -26,6 +26,7 @@
 #include "solvers/ControlSensitivity.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/NewtonSolver.hpp"
+#include "solvers/StepRecorder.hpp"
 #include "solvers/TimeStepping.hpp"
 #include "solvers/MixedBlockSolver.hpp"
 #include "solvers/UzawaLoop.hpp"
@@ -57,140 +58,6 @@ double peakMemoryMegabytes() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
-// Writes the fields of one converged step (rank 0 writes; every rank gathers).
-class Recorder {
-public:
-  // `writer`: this rank writes the files (rank 0 of the world; with control groups every group
-  // records, collectively on its own communicator, but only one rank writes).
-  Recorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields, bool writer)
-      : assembler_(assembler), root_(writer), fields_(fields) {
-    if (!root_) return;
-    const auto &mesh = assembler.scene().mesh;
-    if (fields_) results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.nodes, mesh.elements);
-    traces_ = std::make_unique<io::TraceWriter>(dir / "traces.csv");
-    // Reference fibre directions per family (zero where the family is absent), for ParaView's
-    // glyphs; they do not change, and the mesh is replicated, so rank 0 builds them once.
-    const auto &muscles = assembler.scene().muscles;
-    const std::size_t elements = mesh.numElements();
-    for (const auto &region : muscles.regions)
-      for (const auto &name : region.familyNames) fibreDirections_.try_emplace(name, 3 * elements, 0.0);
-    // Muscle sets (1 where an element carries a family of the group) for ParaView's threshold
-    // filter, and with them the FFMR field per group written every step.
-    for (const auto &g : muscles.groups) groupMembership_.emplace_back(g.name, std::vector<double>(elements, 0.0));
-    for (std::size_t e = 0; e < elements && muscles.hasFibres(); ++e) {
-      const int r = muscles.elementRegion[e];
-      if (r < 0) continue;
-      for (int g : muscles.regions[r].familyGroup)
-        if (g >= 0) groupMembership_[g].second[e] = 1.0;
-      for (std::size_t f = 0; f < muscles.regions[r].familyNames.size(); ++f)
-        for (int c = 0; c < 3; ++c)
-          fibreDirections_[muscles.regions[r].familyNames[f]][3 * e + c] =
-              muscles.directions[e](c, static_cast<Eigen::Index>(f));
-    }
-    if (!assembler.scene().dirichlet.empty())
-      reactions_ = std::make_unique<io::KeyedCsvWriter>(dir / "reactions.csv", "condition",
-                                                        std::vector<std::string>{"fx", "fy", "fz"});
-    if (!assembler.scene().muscles.groups.empty())
-      activation_ = std::make_unique<io::KeyedCsvWriter>(
-          dir / "activation.csv", "group", std::vector<std::string>{"u", "alpha", "ffmr", "mean_fibre_stretch"});
-  }
-
-  // Displacement of every traced point (on every rank).
-  std::vector<std::pair<std::string, Eigen::Vector3d>> pointDisplacements(const std::vector<double> &u) const {
-    std::vector<std::pair<std::string, Eigen::Vector3d>> out;
-    const auto &mesh = assembler_.scene().mesh;
-    for (const auto &name : assembler_.scene().tracedPoints) {
-      const auto node = mesh.namedPoints.at(name).node;
-      out.emplace_back(name, Eigen::Vector3d(u[3 * node], u[3 * node + 1], u[3 * node + 2]));
-    }
-    return out;
-  }
-
-  // Per muscle group: u, alpha, FFMR = T0s alpha (§6) and the mean fibre stretch, as written
-  // to activation.csv (the converged step's values, before they are committed).
-  std::vector<std::pair<std::string, std::vector<double>>> activationRows(const assembly::MuscleFields &muscle,
-                                                                          const std::vector<double> &input) const {
-    const auto &groups = assembler_.scene().muscles.groups;
-    const auto &alpha = assembler_.muscleHistory().trialActivation();
-    std::vector<std::pair<std::string, std::vector<double>>> rows;
-    for (std::size_t g = 0; g < groups.size(); ++g)
-      rows.push_back({groups[g].name,
-                      {input[g], alpha[g], materials::fractionOfFullMuscleResponse(groups[g].T0s, alpha[g]),
-                       muscle.groupMeanStretch[g]}});
-    return rows;
-  }
-
-  // The reaction of every Dirichlet condition [N] (collective).
-  std::vector<std::pair<std::string, std::vector<double>>> reactionRows(const assembly::Vector &u, double time,
-                                                                        const std::vector<double> &lambda) const {
-    const auto forces = assembler_.reactions(u, time, lambda);
-    std::vector<std::pair<std::string, std::vector<double>>> rows;
-    for (std::size_t b = 0; b < forces.size(); ++b)
-      rows.push_back({assembler_.scene().dirichlet[b].name, {forces[b].x(), forces[b].y(), forces[b].z()}});
-    return rows;
-  }
-
-  // Returns the reactions it wrote (for the summary).
-  std::vector<std::pair<std::string, std::vector<double>>> record(double time, const assembly::Vector &u,
-                                                                  const std::vector<double> &lambda, bool writeFields,
-                                                                  const assembly::MuscleFields &muscle,
-                                                                  const std::vector<double> &input) {
-    const std::vector<double> uAll = assembler_.gatherDisplacement(u);
-    const auto reactions = reactionRows(u, time, lambda);
-    if (root_) traces_->append(time, pointDisplacements(uAll));
-    if (root_ && reactions_) reactions_->append(time, reactions);
-    if (root_ && activation_) activation_->append(time, activationRows(muscle, input));
-    if (!fields_ || !writeFields) return reactions;
-    const auto f = assembler_.elementFields(u, lambda);
-    std::vector<double> stress;
-    for (const auto &s : f.cauchy)
-      for (double v : {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)}) stress.push_back(v);
-    auto pressure = assembler_.gatherElementField(f.pressure, 1);
-    auto theta = assembler_.gatherElementField(f.theta, 1);
-    auto minJ = assembler_.gatherElementField(f.minJ, 1);
-    auto cauchy = assembler_.gatherElementField(stress, 6);
-    std::vector<io::Field> cells{
-        {"pressure", 1, pressure}, {"dilatation", 1, theta}, {"J", 1, minJ}, {"cauchy_stress", 6, cauchy}};
-    if (assembler_.scene().muscles.hasFibres()) {
-      cells.push_back({"fibre_stress", 1, assembler_.gatherElementField(muscle.fibreStress, 1)});
-      for (const auto &[name, values] : fibreDirections_) cells.push_back({"fibre_direction_" + name, 3, values});
-      const auto &alpha = assembler_.muscleHistory().trialActivation();
-      for (std::size_t g = 0; g < groupMembership_.size() && root_; ++g) {
-        const auto &[name, member] = groupMembership_[g];
-        const double ffmr = materials::fractionOfFullMuscleResponse(assembler_.scene().muscles.groups[g].T0s, alpha[g]);
-        std::vector<double> field(member.size());
-        for (std::size_t e = 0; e < member.size(); ++e) field[e] = member[e] * ffmr;
-        cells.push_back({"muscle_set_" + name, 1, member});
-        cells.push_back({"ffmr_" + name, 1, field});
-      }
-      // One column per group, gathered together and split by group on rank 0.
-      const auto &groups = assembler_.scene().muscles.groups;
-      const int G = muscle.groups;
-      const auto stretch = assembler_.gatherElementField(muscle.fibreStretch, G);
-      const auto contractile = assembler_.gatherElementField(muscle.contractileStretch, G);
-      for (int g = 0; g < G && root_; ++g) {
-        std::vector<double> a, b;
-        for (std::size_t e = 0; e < stretch.size() / static_cast<std::size_t>(G); ++e) {
-          a.push_back(stretch[e * G + g]);
-          b.push_back(contractile[e * G + g]);
-        }
-        cells.push_back({"fibre_stretch_" + groups[g].name, 1, a});
-        cells.push_back({"contractile_stretch_" + groups[g].name, 1, b});
-      }
-    }
-    if (root_) results_->writeStep(time, {{"displacement", 3, uAll}}, cells);
-    return reactions;
-  }
-
-private:
-  const assembly::Assembler &assembler_;
-  bool root_, fields_;
-  std::unique_ptr<io::ResultWriter> results_;
-  std::unique_ptr<io::TraceWriter> traces_;
-  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_;
-  std::map<std::string, std::vector<double>> fibreDirections_; // rank 0, per family
-  std::vector<std::pair<std::string, std::vector<double>>> groupMembership_; // per group, per element
-};
 } // namespace
 
 void declareSolverParameters(Teuchos::ParameterList &schema) {
@@ -275,7 +142,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
                                   : options.outputDirectory;
   if (root) std::filesystem::create_directories(dir);
   comm->barrier();
-  Recorder recorder(*assembler, dir, D.sublist("Output").get<bool>("fields"), root);
+  StepRecorder recorder(*assembler, dir, D.sublist("Output").get<bool>("fields"), root);
   const int every = D.sublist("Output").get<int>("every");
 
   std::unique_ptr<io::SummaryWriter> summary;

@@ -1,0 +1,59 @@
+#pragma once
+// Writes what a run records of every converged step: the traced points (traces.csv), the
+// reactions of the Dirichlet conditions (reactions.csv), the muscle groups' input, activation,
+// FFMR and mean fibre stretch (activation.csv), and, every `Output/every` steps, the fields for
+// ParaView (results.h5 + XDMF: displacement, element pressure, dilatation, J, Cauchy stress and,
+// with muscles, fibre stress, directions, stretches and muscle sets). Every rank gathers; the
+// writer rank writes.
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "assembly/Assembler.hpp"
+#include "io/output/KeyedCsvWriter.hpp"
+#include "io/output/ResultWriter.hpp"
+#include "io/output/TraceWriter.hpp"
+
+namespace glossa::solvers {
+
+class StepRecorder {
+public:
+  // `writer`: this rank writes the files (rank 0 of the world; with control groups every group
+  // records, collectively on its own communicator, but only one rank writes).
+  StepRecorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields, bool writer);
+
+  // Displacement of every traced point (on every rank).
+  std::vector<std::pair<std::string, Eigen::Vector3d>> pointDisplacements(const std::vector<double> &u) const;
+
+  // Per muscle group: u, alpha, FFMR = T0s alpha (§6) and the mean fibre stretch, as written
+  // to activation.csv (the converged step's values, before they are committed).
+  std::vector<std::pair<std::string, std::vector<double>>> activationRows(const assembly::MuscleFields &muscle,
+                                                                          const std::vector<double> &input) const;
+
+  // The reaction of every Dirichlet condition [N] (collective).
+  std::vector<std::pair<std::string, std::vector<double>>> reactionRows(const assembly::Vector &u, double time,
+                                                                        const std::vector<double> &lambda) const;
+
+  // Records one converged step (collective); returns the reactions it wrote (for the summary).
+  std::vector<std::pair<std::string, std::vector<double>>> record(double time, const assembly::Vector &u,
+                                                                  const std::vector<double> &lambda, bool writeFields,
+                                                                  const assembly::MuscleFields &muscle,
+                                                                  const std::vector<double> &input);
+
+private:
+  const assembly::Assembler &assembler_;
+  bool root_, fields_;
+  std::unique_ptr<io::ResultWriter> results_;
+  std::unique_ptr<io::TraceWriter> traces_;
+  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_;
+  std::map<std::string, std::vector<double>> fibreDirections_; // rank 0, per family
+  std::vector<std::pair<std::string, std::vector<double>>> groupMembership_; // per group, per element
+};
+
+} // namespace glossa::solvers
