@@ -78,7 +78,7 @@ DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) con
   double local[2] = {0.0, 0.0}, volume = 0.0, maxErr = 0.0, maxChange = 0.0;
   for (std::size_t i = 0; i < f.theta.size(); ++i) {
     const double change = std::abs(f.theta[i] - 1.0);
-    const double e = augmented_ || mixed_ ? rule_.dilatationError(f.theta[i], f.pressure[i]) : change;
+    const double e = measuresPhysicalLaw() ? rule_.dilatationError(f.theta[i], f.pressure[i]) : change;
     maxErr = std::max(maxErr, e);
     maxChange = std::max(maxChange, change);
     local[0] += e * f.referenceVolume[i];
@@ -105,7 +105,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
   const double looseTolerance =
       std::max(residualTolerance, residualTolerance * innerTolerance_ / newton_.relativeResidualTolerance());
   bool tight = !inexact_;
-  for (int k = 1; k <= (augmented_ || mixed_ ? maxIterations_ : 1); ++k) {
+  for (int k = 1; k <= (measuresPhysicalLaw() ? maxIterations_ : 1); ++k) {
     NewtonResult n = tight ? newton_.solve(u, residualTolerance, onNewton)
                            : newton_.solve(u, looseTolerance, onNewton, innerTolerance_);
     ++result.solves;
@@ -119,7 +119,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
     const assembly::ElementFields fields = assembler_.elementFields(u, lambda);
     result.dilatation = dilatationError(fields);
     if (onUzawa) onUzawa(k, result.newton.back(), result.dilatation);
-    if (!(augmented_ || mixed_) || result.dilatation.max < tolerance_) {
+    if (!measuresPhysicalLaw() || result.dilatation.max < tolerance_) {
       if (tight) {
         result.converged = true;
         return result;

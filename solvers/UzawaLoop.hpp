@@ -64,6 +64,9 @@ private:
   const NewtonSolver &newton_;
   bool augmented_;
   bool mixed_;                // element pressures are Newton unknowns (MixedPressureState)
+  // Stops on the distance from the physical law, with room for more than one Newton solve
+  // (augmented Lagrangian and mixed; a penalty makes one solve and reports |theta - 1|).
+  bool measuresPhysicalLaw() const { return augmented_ || mixed_; }
   AugmentedLagrangianRule rule_;
   double tolerance_;
   int maxIterations_;

@@ -138,15 +138,12 @@ PressureCoupling Assembler::pressureCoupling(const Vector &u) const {
   out.volumeGradient = Teuchos::rcp(new CrsMatrix(pressureMap_, 24));
   out.referenceVolume.resize(n);
   out.currentVolume.resize(n);
-  int ok = 1;
   for (std::size_t i = 0; i < n; ++i) {
     const auto e = layout_.localElements[i];
     fem::ElementVector g;
     if (!fem::elementVolumeGradient(scene_.mesh.elementCoordinates(e), elementDisplacement(i, uData),
-                                    out.referenceVolume[i], out.currentVolume[i], g)) {
-      ok = 0;
+                                    out.referenceVolume[i], out.currentVolume[i], g))
       g.setZero();
-    }
     const auto &hex = scene_.mesh.elements[e];
     for (int l = 0; l < 24; ++l)
       if (constrained_[3 * hex[l / 3] + l % 3]) g(l) = 0.0;
@@ -154,9 +151,6 @@ PressureCoupling Assembler::pressureCoupling(const Vector &u) const {
                                            Teuchos::ArrayView<const double>(g.data(), 24));
   }
   out.volumeGradient->fillComplete(ownedMap_, pressureMap_);
-  int all = 0;
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, ok, Teuchos::outArg(all));
-  out.valid = all == 1;
   return out;
 }
 

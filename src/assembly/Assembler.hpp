@@ -60,7 +60,6 @@ struct PressureCoupling {
   Teuchos::RCP<const Map> pressureMap;      // one entry per local element, GID = mesh element id
   Teuchos::RCP<CrsMatrix> volumeGradient;   // B: range = pressureMap, domain = the owned dof map
   std::vector<double> referenceVolume, currentVolume; // per local element
-  bool valid = true;                        // false: an element inverted (on any rank)
 };
 
 class Assembler {
@@ -92,10 +91,9 @@ public:
   std::vector<fem::MixedBase> mixedBases(const Vector &u, const std::vector<double> &lambda,
                                          const std::vector<fem::MixedBase> *previous) const;
 
-  // The mixed system's coupling block and element volumes at u (see PressureCoupling).
-  // Collective (imports u).
+  // The mixed system's coupling block and element volumes at u (see PressureCoupling); an
+  // inverted element gets a zero row (the tangent's assembly reports it). Collective (imports u).
   PressureCoupling pressureCoupling(const Vector &u) const;
-  Teuchos::RCP<const Map> pressureMap() const { return pressureMap_; }
 
   // Element dilatation, pressure, stress, min J (local elements). Collective (imports u).
   ElementFields elementFields(const Vector &u, const std::vector<double> &lambda) const;
