@@ -86,6 +86,9 @@ ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
     s.pointNodes.push_back(it->second.node);
   }
   if (s.pointNames.empty()) throw io::DeckError(where("control points") + " is empty: name the points to hold");
+  s.goals.resize(3, static_cast<Eigen::Index>(s.pointNodes.size()));
+  for (std::size_t p = 0; p < s.pointNodes.size(); ++p)
+    s.goals.col(static_cast<Eigen::Index>(p)) = scene.mesh.imagedPosition(s.pointNodes[p]);
   const auto &w = c.get<Array<double>>("weights");
   if (!w.empty() && w.size() != static_cast<Array<double>::size_type>(s.pointNames.size()))
     throw io::DeckError(where("weights") + ": " + std::to_string(w.size()) + " weights for " +

@@ -21,6 +21,9 @@ struct ControlSetup {
   control::ControllerParameters parameters;
   std::vector<std::string> pointNames;
   std::vector<mesh::NodeId> pointNodes;
+  // xbar_p of eq. 25, one column per point: the points' imaged positions (the mesh as read),
+  // which are the reference positions unless a zero-strain configuration replaced them (§8.1).
+  Eigen::Matrix3Xd goals;
   Eigen::VectorXd weights;
   std::vector<int> groups; // the controlled muscle groups (scene indices), ascending
 };

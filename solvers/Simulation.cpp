@@ -397,8 +397,7 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     for (int i : local) evaluated.push_back(control.groups[i]);
     outcome.evaluated = evaluated;
 
-    Eigen::Matrix3Xd goal(3, control.pointNodes.size());
-    for (std::size_t p = 0; p < control.pointNodes.size(); ++p) goal.col(p) = scene.mesh.nodes[control.pointNodes[p]];
+    const Eigen::Matrix3Xd &goal = control.goals;
     const control::ControlObjective objective(goal, control.weights);
     // Every candidate is a full step solve from the committed state. The first candidate to beat
     // every earlier one by `rank` (the GA: eq. 25; the gradient controller: the sum of squares it
@@ -634,7 +633,8 @@ nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuc
     if (!scene.muscles.groups.empty()) {
       nlohmann::json activation = nlohmann::json::object();
       for (const auto &[group, values] : recorder.activationRows(muscle, history.trialInput()))
-        activation[group] = {{"u", values[0]}, {"alpha", values[1]}, {"ffmr", values[2]}, {"mean_fibre_stretch", values[3]}};
+        activation[group] = {{"u", values[0]}, {"alpha", values[1]}, {"ffmr", values[2]}, {"mean_fibre_stretch", values[3]},
+                             {"mean_contractile_stretch", values[4]}};
       step["activation"] = activation;
     }
     if (control.enabled) {

@@ -35,7 +35,7 @@ StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::file
                                                       std::vector<std::string>{"fx", "fy", "fz"});
   if (!assembler.scene().muscles.groups.empty())
     activation_ = std::make_unique<io::KeyedCsvWriter>(
-        dir / "activation.csv", "group", std::vector<std::string>{"u", "alpha", "ffmr", "mean_fibre_stretch"});
+        dir / "activation.csv", "group", std::vector<std::string>{"u", "alpha", "ffmr", "mean_fibre_stretch", "mean_contractile_stretch"});
 }
 
 std::vector<std::pair<std::string, Eigen::Vector3d>> StepRecorder::pointDisplacements(const std::vector<double> &u) const {
@@ -56,7 +56,7 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::activatio
   for (std::size_t g = 0; g < groups.size(); ++g)
     rows.push_back({groups[g].name,
                     {input[g], alpha[g], materials::fractionOfFullMuscleResponse(groups[g].T0s, alpha[g]),
-                     muscle.groupMeanStretch[g]}});
+                     muscle.groupMeanStretch[g], muscle.groupMeanContractileStretch[g]}});
   return rows;
 }
 
@@ -75,7 +75,15 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(do
                                                                 const std::vector<double> &input) {
   const std::vector<double> uAll = assembler_.gatherDisplacement(u);
   const auto reactions = reactionRows(u, time, lambda);
-  if (root_) traces_->append(time, pointDisplacements(uAll));
+  if (root_) {
+    std::vector<io::TraceWriter::Point> points;
+    const auto &mesh = assembler_.scene().mesh;
+    for (const auto &[name, d] : pointDisplacements(uAll)) {
+      const auto node = mesh.namedPoints.at(name).node;
+      points.push_back({name, d, mesh.nodes[node] + d - mesh.imagedPosition(node)});
+    }
+    traces_->append(time, points);
+  }
   if (root_ && reactions_) reactions_->append(time, reactions);
   if (root_ && activation_) activation_->append(time, activationRows(muscle, input));
   if (!fields_ || !writeFields) return reactions;

@@ -1,7 +1,7 @@
 #pragma once
 // Writes what a run records of every converged step: the traced points (traces.csv), the
 // reactions of the Dirichlet conditions (reactions.csv), the muscle groups' input, activation,
-// FFMR and mean fibre stretch (activation.csv), and, every `Output/every` steps, the fields for
+// FFMR and mean fibre and contractile stretch (activation.csv), and, every `Output/every` steps, the fields for
 // ParaView (results.h5 + XDMF: displacement, element pressure, dilatation, J, Cauchy stress and,
 // with muscles, fibre stress, directions, stretches and muscle sets). Every rank gathers; the
 // writer rank writes.
@@ -31,7 +31,8 @@ public:
   // Displacement of every traced point (on every rank).
   std::vector<std::pair<std::string, Eigen::Vector3d>> pointDisplacements(const std::vector<double> &u) const;
 
-  // Per muscle group: u, alpha, FFMR = T0s alpha (§6) and the mean fibre stretch, as written
+  // Per muscle group: u, alpha, FFMR = T0s alpha (§6) and the length-weighted mean fibre and
+  // contractile stretches, as written
   // to activation.csv (the converged step's values, before they are committed).
   std::vector<std::pair<std::string, std::vector<double>>> activationRows(const assembly::MuscleFields &muscle,
                                                                           const std::vector<double> &input) const;

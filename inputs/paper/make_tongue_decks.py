@@ -97,14 +97,15 @@ class Xml:
 
 
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
-         reference=None, zero_strain=None, breathing_start=None, external_sg=True):
+         reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
     zero_strain: None or {parameter: value} of the Zero strain section (glossa zero-strain).
     breathing_start: None (the pressure ramps over [1, 2] s) or when eq. 27's first breath starts.
     external_sg: the styloglossus also as an external muscle per side (eq. 22-23) from the styloid
-    anchor to its exit nodes, driven by the SG group (passive where SG is)."""
+    anchor to its exit nodes, driven by the SG group (passive where SG is).
+    control: None or {parameter: (type, value)} of the Control section (neural control, §6.1)."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -241,6 +242,11 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.open("Incompressibility")
     x.add("method", "string", "augmented Lagrangian")
     x.close()
+    if control is not None:
+        x.open("Control")
+        for key, (typ, value) in control.items():
+            x.add(key, typ, value)
+        x.close()
     if zero_strain is not None:
         x.open("Zero strain")
         for key, (typ, value) in zero_strain.items():
@@ -329,13 +335,47 @@ for method in ("approximate", "inverse"):
          {}, gravity=(0, 0, -1), end_time=1.0, step=0.25, reference=f"s8_1/reference_{method}.txt")
 
 BREATHING = """
-Passive breathing, no control (the baseline of the controlled s8_5 runs): gravity ramped over
-the first second, then three breaths of eq. 27 from t0 = 1.25 s, p = p_max max(sin(2 pi (t - t0)/T), 0)^1.75
-with T = 2.5 s and p_max = -350 Pa (suction) on the face set 'airway', linear from 0 at P_A to
-p_max at P_P, until 8.75 s. On the imaged geometry (no zero-strain configuration). Steps of
-T/8 = 0.3125 s (coarse, for the regression test), which land on every peak (t0 + T/4 + kT)."""
-for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
+Three breaths of eq. 27 after the gravity ramp (gravity over the first second): from
+t0 = 1.25 s, p = p_max max(sin(2 pi (t - t0)/T), 0)^1.75 with T = 2.5 s and p_max = -350 Pa
+(suction) on the face set 'airway', linear from 0 at P_A to p_max at P_P, until 8.75 s. On the
+zero-strain configuration of s8_1 (s8_1/reference_inverse.txt: upright gravity on it gives back
+the imaged geometry), as the paper's section 8 is; traces.csv gives each point's displacement
+from the reference coordinates (ux, uy, uz) and from its imaged position (dx, dy, dz), the goal
+of the controlled runs. Steps of T/8 = 0.3125 s, which land on every peak (t0 + T/4 + kT)."""
+PASSIVE_BREATHING = """
+Passive breathing, no control: the baseline of the controlled s8_5 runs."""
+CONTROL_POINTS = ", ".join(name for name, _, _ in POINTS if name.startswith("C"))
+CONTROLLED = """
+Neural control of all 11 groups (paper section 6.1): at every step the controller picks the
+neural inputs that keep the ten control points C01 to C10 at their imaged positions (eq. 25,
+w_p = 1); the genioglossus parts are always evaluated, the other groups are pruned by their
+length-weighted mean fibre stretch against its value in the zero-strain configuration (1), and
+a group switched on at the previous step is kept."""
+GA = """
+Elitist GA (the paper's): binary genes, population 16, at most 20 generations (stop after 5
+without improvement), the initial population holding the previous step's inputs and the
+corners of the search space; seed 1 (the same seed gives the same run)."""
+GRADIENT = """
+Gradient controller: projected Gauss-Newton on continuous inputs in [0, 1] from the previous
+step's, sensitivities from the converged tangent, at most 4 iterations per step."""
+CONTROL_COMMON = {"control points": ("string", CONTROL_POINTS), "always evaluated": ("string", "GGa, GGm, GGp")}
+CONTROLLERS = {
+    "ga": (GA, dict(CONTROL_COMMON, **{"type": ("string", "genetic algorithm"), "genes": ("string", "binary"),
+                                        "population": ("int", 16), "generations": ("int", 20),
+                                        "seed": ("int", 1)})),
+    "gradient": (GRADIENT, dict(CONTROL_COMMON, **{"type": ("string", "gradient"),
+                                                    "gradient iterations": ("int", 4)})),
+}
+POSTURES = (("upright", (0, 0, -1)), ("supine", (1, 0, 0)))
+for posture, g in POSTURES:
+    gravity = f"\nGravity {posture}: along {vec(g)} in this mesh's axes."
     deck(f"s8_5_passive_{posture}", f"Paper §8.5 (Figs. 11 and 12): {posture} posture, three 350 Pa breathing cycles.\n" +
-         COMMON + BREATHING + f"""
-Gravity {posture}: along {vec(g)} in this mesh's axes. Every muscle group passive (u = 0).""",
-         {}, gravity=g, pressure=-350.0, end_time=8.75, step=0.3125, breathing_start=1.25)
+         COMMON + BREATHING + PASSIVE_BREATHING + gravity + " Every muscle group passive (u = 0).",
+         {}, gravity=g, pressure=-350.0, end_time=8.75, step=0.3125, breathing_start=1.25,
+         reference="s8_1/reference_inverse.txt")
+    for controller, (text, control) in CONTROLLERS.items():
+        deck(f"s8_5_{controller}_{posture}",
+             f"Paper §8.5 (Figs. 11 and 12): {posture} posture, three 350 Pa breathing cycles, position\n"
+             "maintenance by neural control.\n" + COMMON + BREATHING + CONTROLLED + text + gravity,
+             {}, gravity=g, pressure=-350.0, end_time=8.75, step=0.3125, breathing_start=1.25,
+             reference="s8_1/reference_inverse.txt", control=control)

@@ -1,4 +1,6 @@
 #include "assembly/Assembler.hpp"
+
+#include "control/MusclePruning.hpp"
 #include "assembly/ZoltanPartition.hpp"
 
 #include <algorithm>
@@ -414,8 +416,11 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
   out.fibreStretch.assign(n * G, 0.0);
   out.contractileStretch.assign(n * G, 0.0);
   out.fibreStress.assign(n, 0.0);
-  // Per group: sum of lambda_f dV and of dV (then reduced over ranks).
-  std::vector<double> weighted(2 * G, 0.0), weightedAll(2 * G, 0.0);
+  // Per group: sums of lambda_f w, lambda_c w and w (then reduced over ranks), w the fibre length
+  // a point carries: L_f of the element along the family's reference direction (§6.1's
+  // length-weighted average fibre stretch, control::fibreLengthMeasure) times the point's share
+  // of the element's reference volume.
+  std::vector<double> weighted(3 * G, 0.0), weightedAll(3 * G, 0.0);
   int localValid = 1;
   Vector uOverlap(overlapMap_);
   importToOverlap(u, uOverlap);
@@ -444,6 +449,11 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
       }
       const int families = r.law->familyCount();
       std::vector<int> count(G, 0);
+      double volume = 0.0;
+      for (int q = 0; q < 8; ++q) volume += dV[q];
+      std::vector<double> fibreLength(static_cast<std::size_t>(families), 0.0);
+      for (int f = 0; f < families; ++f)
+        if (r.familyGroup[f] >= 0) fibreLength[f] = control::fibreLengthMeasure(X, muscles.directions[e].col(f));
       for (int q = 0; q < 8; ++q) {
         double* lambdaC = history_.trialLambdaC(i, q);
         for (int f = 0; f < families; ++f) {
@@ -454,8 +464,10 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
           out.fibreStretch[i * G + g] += response.lambdaF[q](f);
           out.contractileStretch[i * G + g] += response.lambdaC[q](f);
           ++count[g];
-          weighted[2 * g] += response.lambdaF[q](f) * dV[q];
-          weighted[2 * g + 1] += dV[q];
+          const double w = fibreLength[f] * dV[q] / volume;
+          weighted[3 * g] += response.lambdaF[q](f) * w;
+          weighted[3 * g + 1] += response.lambdaC[q](f) * w;
+          weighted[3 * g + 2] += w;
         }
       }
       for (std::size_t g = 0; g < G; ++g)
@@ -472,13 +484,17 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
   out.valid = globalValid == 1;
   if (G > 0) {
-    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(2 * G), weighted.data(), weightedAll.data());
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(3 * G), weighted.data(), weightedAll.data());
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(2 * G), external.data(), externalAll.data());
   }
-  for (std::size_t g = 0; g < G; ++g)
-    out.groupMeanStretch.push_back(weightedAll[2 * g + 1] > 0.0    ? weightedAll[2 * g] / weightedAll[2 * g + 1]
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t g = 0; g < G; ++g) {
+    const double length = weightedAll[3 * g + 2];
+    out.groupMeanStretch.push_back(length > 0.0                   ? weightedAll[3 * g] / length
                                    : externalAll[2 * g + 1] > 0.0 ? externalAll[2 * g] / externalAll[2 * g + 1]
-                                                                   : std::numeric_limits<double>::quiet_NaN());
+                                                                   : nan);
+    out.groupMeanContractileStretch.push_back(length > 0.0 ? weightedAll[3 * g + 1] / length : nan);
+  }
   return out;
 }
 

@@ -45,10 +45,13 @@ struct MuscleFields {
   // absent.
   std::vector<double> fibreStretch, contractileStretch;
   std::vector<double> fibreStress; // per local element: mean of sum_f phi_f T_f [Pa]
-  // Per group, over the whole mesh: the reference-volume-weighted mean fibre stretch of its
-  // internal families (the pruning measure of §6.1 on a mesh); for a group with external fibres
-  // only, their reference-length-weighted mean stretch; NaN for a group with no fibres.
-  std::vector<double> groupMeanStretch;
+  // Per group, over the whole mesh: the length-weighted mean fibre stretch of its internal
+  // families (the pruning measure of §6.1: each point weighted by the fibre length its element
+  // holds along the family's reference direction, control::fibreLengthMeasure, times its share
+  // of the element's volume); for a group with external fibres only, their reference-length-
+  // weighted mean stretch; NaN for a group with no fibres. The same mean of the contractile
+  // stretch lambda_c of the internal families (NaN without them), for f_cL at the group's mean.
+  std::vector<double> groupMeanStretch, groupMeanContractileStretch;
 };
 
 // The pressure blocks of the uncondensed (mixed) Q1-P0 system at a displacement

@@ -59,8 +59,14 @@ struct HexMesh {
   // Fibre polylines by muscle (e.g. the tongue's Fibers.mac): reference positions of each
   // polyline's vertices, in the file's order. Geometric, so refinement copies them unchanged.
   std::map<std::string, std::vector<std::vector<Eigen::Vector3d>>> fibrePolylines;
+  // The node positions as imaged (as read), kept when a zero-strain configuration replaced them
+  // (Mesh/reference coordinates file, §8.1); empty when `nodes` are the imaged positions. They
+  // are the goals of the controlled runs and what traces.csv measures the dx, dy, dz from.
+  std::vector<Eigen::Vector3d> imagedNodes;
 
   std::size_t numNodes() const { return nodes.size(); }
+  // Where node n is in the imaged geometry: imagedNodes[n], or nodes[n] when there is no other.
+  const Eigen::Vector3d &imagedPosition(NodeId n) const { return imagedNodes.empty() ? nodes.at(n) : imagedNodes.at(n); }
   std::size_t numElements() const { return elements.size(); }
 
   // Node coordinates of one element as the 8x3 matrix the element kernels take.

@@ -262,6 +262,7 @@ void replaceReferenceCoordinates(const io::Deck &deck, mesh::HexMesh &m) {
   std::filesystem::path q(file);
   if (q.is_relative()) q = std::filesystem::path(deck.file()).parent_path() / q;
   try {
+    m.imagedNodes = m.nodes;
     m.nodes = mesh::readReferenceCoordinates(q.string(), m.numNodes());
   } catch (const std::runtime_error &e) {
     throw io::DeckError(deck.where({"Mesh", "reference coordinates file"}) + ": " + e.what());

@@ -40,8 +40,10 @@ std::vector<TraceRow> parseTraces(const std::filesystem::path &path) {
     std::vector<std::string> cell;
     std::istringstream row(all[i]);
     for (std::string c; std::getline(row, c, ',');) cell.push_back(c);
-    EXPECT_EQ(cell.size(), 5u) << all[i];
-    if (cell.size() != 5) continue;
+    EXPECT_EQ(cell.size(), 8u) << all[i];
+    if (cell.size() != 8) continue;
+    // Written without a zero-strain configuration: the offset from the imaged position is u.
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(cell[5 + c], cell[2 + c]) << all[i];
     auto number = [](const std::string &s) { return std::strtod(s.c_str(), nullptr); };
     rows.push_back({number(cell[0]), cell[1], {number(cell[2]), number(cell[3]), number(cell[4])}});
   }
@@ -58,7 +60,7 @@ TEST(TraceWriter, RowsRoundTripExactlyAndAreOnDiskAfterEachCall) {
       {"tip", {1e-17, std::nextafter(1.0, 2.0), -0.0}}, {"corner_A", {123456789.123456789, 0.0, 5e-324}}};
 
   TraceWriter traces(file);
-  EXPECT_EQ(lines(file), std::vector<std::string>{"time,point,ux,uy,uz"});
+  EXPECT_EQ(lines(file), std::vector<std::string>{"time,point,ux,uy,uz,dx,dy,dz"});
   traces.append(0.1, first);
   EXPECT_EQ(parseTraces(file).size(), 2u); // flushed: readable while the writer is alive
   traces.append(2.0 / 3.0, second);
