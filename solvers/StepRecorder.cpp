@@ -82,7 +82,7 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(do
       const auto node = mesh.namedPoints.at(name).node;
       points.push_back({name, d, mesh.nodes[node] + d - mesh.imagedPosition(node)});
     }
-    traces_->append(time, points);
+    traces_->appendPoints(time, points);
   }
   if (root_ && reactions_) reactions_->append(time, reactions);
   if (root_ && activation_) activation_->append(time, activationRows(muscle, input));

@@ -33,7 +33,7 @@ public:
   // Throws std::invalid_argument (before writing anything) for a point name that CSV cannot
   // carry unquoted: empty, or containing ',', '"', '\n' or '\r'; std::runtime_error if writing
   // fails (e.g. a full disk).
-  void append(double time, const std::vector<Point> &points) {
+  void appendPoints(double time, const std::vector<Point> &points) {
     std::vector<std::pair<std::string, std::vector<double>>> rows;
     for (const auto &p : points)
       rows.push_back({p.name, {p.displacement.x(), p.displacement.y(), p.displacement.z(), p.fromImaged.x(),
@@ -44,7 +44,7 @@ public:
   void append(double time, const std::vector<std::pair<std::string, Eigen::Vector3d>> &pointDisplacements) {
     std::vector<Point> points;
     for (const auto &[name, u] : pointDisplacements) points.push_back({name, u, u});
-    append(time, points);
+    appendPoints(time, points);
   }
 
 private:
