@@ -1,14 +1,16 @@
 #!/bin/sh
 # Regenerates the stored reference trace of a deck, on purpose only (never called by a test):
-#   sh tests/regression/regenerate.sh inputs/paper/s7_1_a_internal.xml [build]
-# runs the deck on 1 rank and copies its traces.csv to tests/regression/<deck name>.csv.
+#   sh tests/regression/regenerate.sh inputs/paper/s7_1_a_internal.xml [build [NAME [--set path=value ...]]]
+# runs the deck on 1 rank and copies its traces.csv to tests/regression/NAME.csv (NAME: the deck's
+# name); the --set options are those of the test (e.g. a shortened end time).
 # Review the difference (git diff) and say why in the commit message.
 set -e
 deck="$1"
 build="${2:-build}"
-[ -f "$deck" ] || { echo "usage: $0 DECK.xml [BUILD_DIR]" >&2; exit 2; }
-name=$(basename "$deck" .xml)
+[ -f "$deck" ] || { echo "usage: $0 DECK.xml [BUILD_DIR [NAME [--set path=value ...]]]" >&2; exit 2; }
+name="${3:-$(basename "$deck" .xml)}"
+[ $# -ge 3 ] && shift 3 || shift $#
 out=$(mktemp -d)
-"$build/glossa" run "$deck" --output "$out" --quiet
+"$build/glossa" run "$deck" --output "$out" --quiet --set Output/fields=false "$@"
 cp "$out/traces.csv" "$(dirname "$0")/$name.csv"
 echo "wrote $(dirname "$0")/$name.csv"

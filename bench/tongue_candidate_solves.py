@@ -1,0 +1,91 @@
+#!/usr/bin/python3
+"""What a controller's candidate solve costs on the tongue, one change at a time (issue 15), run
+on demand:
+
+  /usr/bin/python3 bench/tongue_candidate_solves.py [--glossa build/glossa] [--repeats 3]
+                                                    [--end-time 0.9375] [--medium]
+
+Every configuration runs the first control steps of inputs/paper/s8_5_ga_upright.xml (the GA:
+every candidate is a full step solve from the committed state, no sensitivity solves) and
+reads from summary.json the displacement solves (candidates), the wall time and its split into
+assembly, preconditioner set-up and Krylov iterations; per candidate solve they are divided by
+the number of candidates. The configurations: the default (MueLu, reuse RP within a Newton
+solve), MueLu's hierarchy kept for the whole run (reuse scope run), a sparse direct solve
+(Amesos2 KLU2), and the candidates shared out over 2 control groups on 2 ranks. --medium adds
+the medium tongue (refined once, 20,097 dofs, on the imaged geometry since the zero-strain
+coordinates are the coarse mesh's) for the default and the direct solve. Medians over
+--repeats runs; writes bench/results/tongue_candidate_solves.csv.
+"""
+import argparse
+import csv
+import json
+import os
+import statistics
+import subprocess
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DECK = os.path.join(ROOT, "inputs", "paper", "s8_5_ga_upright.xml")
+MEDIUM = ["Mesh/File/refine=1", "Mesh/reference coordinates file="]
+CONFIGURATIONS = [
+    ("coarse", "MueLu (default)", [], 1),
+    ("coarse", "MueLu, reuse scope run", ["Linear solver/MueLu reuse scope=run"], 1),
+    ("coarse", "direct (KLU2)", ["Linear solver/type=direct"], 1),
+    ("coarse", "MueLu, 2 control groups on 2 ranks", [], 2),
+    ("coarse", "direct (KLU2), 2 control groups on 2 ranks", ["Linear solver/type=direct"], 2),
+]
+MEDIUM_CONFIGURATIONS = [
+    ("medium", "MueLu (default)", MEDIUM, 1),
+    ("medium", "direct (KLU2)", MEDIUM + ["Linear solver/type=direct"], 1),
+]
+
+
+def run(glossa, sets, ranks, end_time):
+    out = tempfile.mkdtemp(prefix="glossa-candidates-")
+    cmd = [glossa, "run", DECK, "--output", out, "--quiet", "--set", "Output/fields=false",
+           "--set", f"Time/end time={end_time}"]
+    for s in sets:
+        cmd += ["--set", s]
+    if ranks > 1:
+        cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd + \
+              ["--control-groups", str(ranks)]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    solves = sum(step["control"]["candidates"] for step in s["steps"])
+    return {"solves": solves, "wall": s["wall_seconds"], "assembly": s["assembly_seconds"],
+            "setup": s["preconditioner_setup_seconds"], "krylov": s["linear_solve_seconds"],
+            "objective": [step["control"]["objective"] for step in s["steps"]]}
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
+    p.add_argument("--repeats", default=3, type=int)
+    p.add_argument("--end-time", default=0.9375, type=float, help="three control steps of 0.3125 s")
+    p.add_argument("--medium", action="store_true")
+    p.add_argument("--output", default=os.path.join(ROOT, "bench", "results", "tongue_candidate_solves.csv"))
+    args = p.parse_args()
+    rows = []
+    for mesh, name, sets, ranks in CONFIGURATIONS + (MEDIUM_CONFIGURATIONS if args.medium else []):
+        runs = [run(args.glossa, sets, ranks, args.end_time) for _ in range(args.repeats)]
+        per = lambda key: statistics.median(r[key] / r["solves"] for r in runs)
+        row = {"mesh": mesh, "configuration": name, "ranks": ranks, "repeats": args.repeats,
+               "solves": runs[0]["solves"], "wall_s_median": round(statistics.median(r["wall"] for r in runs), 2),
+               "ms_per_solve": round(1e3 * per("wall"), 1), "assembly_ms_per_solve": round(1e3 * per("assembly"), 1),
+               "setup_ms_per_solve": round(1e3 * per("setup"), 1), "krylov_ms_per_solve": round(1e3 * per("krylov"), 1),
+               "last_objective_mm": round(1e3 * runs[0]["objective"][-1], 4)}
+        print(row, flush=True)
+        rows.append(row)
+    base = {r["mesh"]: r["ms_per_solve"] for r in rows if r["configuration"] == "MueLu (default)"}
+    for r in rows:
+        r["speed_up_vs_default"] = round(base[r["mesh"]] / r["ms_per_solve"], 2)
+    with open(args.output, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    print("wrote", args.output)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,399 @@
+#!/usr/bin/python3
+"""The controlled tongue (paper §8.5, Figs. 11-13; issue 15), run on demand:
+
+  /usr/bin/python3 bench/tongue_control.py [--glossa build/glossa] [--runs DIR] [--only NAME,...]
+                                           [--ga-ranks 2] [--force] [--check] [--plot]
+
+Runs the s8_5 decks of inputs/paper/ on the coarse tongue (passive, GA and gradient controller,
+upright and supine; the GA with the paper's binary genes upright, for the record) and the
+pressure sweep of §8.5.1 (the supine gradient deck at p_max = 0,
+200, 350 and 500 Pa), each into RUNS/<name>/ (default bench/results/tongue_control/; traces,
+activation, controls and summary, no fields). A run whose summary says it finished is reused
+unless --force. The GA runs on --ga-ranks ranks with one control group per rank.
+
+Writes bench/results/tongue_control.csv: per run the steps, displacement solves (candidates) in
+all and per step (mean and largest), seconds per solve (wall time over solves), wall time and
+its split, the eq. 25 objective over the cycles (mean and largest), and for P_A and P_P the
+distance from the imaged position over the three cycles (steps at t >= 1.25 s): its mean over
+the steps, half its range (max - min)/2 and its largest. --plot draws doc/figures/s8_5_fig11.png,
+s8_5_fig12a.png, s8_5_fig12b.png and s8_5_fig13.png. --check asserts the issue's trends on the
+runs' own output and exits 1 if one fails (the ctest `full.tongue_control` runs it).
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PAPER = os.path.join(ROOT, "inputs", "paper")
+CYCLES_START, PERIOD, EXPONENT = 1.25, 2.5, 1.75  # eq. 27 as the decks give it
+END = 8.75
+SWEEP = (0, 200, 350, 500)  # p_max [Pa] of §8.5.1
+# The paper's figures (§8.5): mean +- half-range of the distance from the reference, mm.
+PAPER_TABLE = {("supine", "P_P"): (1.29, 0.16), ("supine", "P_A"): (2.20, 0.30),
+               ("upright", "P_A"): (1.42, 0.39), ("upright", "P_P"): (0.72, 0.23)}
+
+
+def runs():
+    """(name, deck, extra --set options, controller, posture, p_max) of every run."""
+    out = []
+    for posture in ("upright", "supine"):
+        out.append((f"passive_{posture}", f"s8_5_passive_{posture}.xml", [], "passive", posture, 350))
+        out.append((f"gradient_{posture}", f"s8_5_gradient_{posture}.xml", [], "gradient", posture, 350))
+        out.append((f"ga_{posture}", f"s8_5_ga_{posture}.xml", [], "GA", posture, 350))
+    # The paper's binary genes, for the record (upright): they keep every group off (doc/tongue.md).
+    out.append(("ga_binary_upright", "s8_5_ga_upright.xml",
+                ["Control/genes=binary", "Control/generations=20", "Control/stagnation generations=5"],
+                "GA", "upright", 350))
+    for p in SWEEP:
+        if p == 350:
+            continue  # gradient_supine itself
+        out.append((f"sweep_{p}", "s8_5_gradient_supine.xml", [f"Loads/airway pressure/pressure={-float(p)}"],
+                    "gradient", "supine", p))
+    return out
+
+
+def sweep_runs():
+    return {p: ("gradient_supine" if p == 350 else f"sweep_{p}") for p in SWEEP}
+
+
+def finished(directory):
+    try:
+        with open(os.path.join(directory, "summary.json")) as f:
+            s = json.load(f)
+        return not s.get("running", True) and s.get("converged", False)
+    except (OSError, ValueError):
+        return False
+
+
+def execute(glossa, name, deck, sets, controller, directory, ga_ranks):
+    cmd = [glossa, "run", os.path.join(PAPER, deck), "--output", directory, "--quiet",
+           "--set", "Output/fields=false"]
+    for s in sets:
+        cmd += ["--set", s]
+    if controller == "GA" and ga_ranks > 1:
+        cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ga_ranks)] + cmd + \
+              ["--control-groups", str(ga_ranks)]
+    print("running", name, ":", " ".join(cmd), flush=True)
+    subprocess.run(cmd, check=True)
+
+
+def pressure(t, p_max):
+    """Eq. 27's time factor times p_max (suction positive here)."""
+    s = math.sin(2.0 * math.pi * (t - CYCLES_START) / PERIOD) if t >= CYCLES_START else 0.0
+    return p_max * max(s, 0.0) ** EXPONENT
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def distances(directory, point):
+    """[(t, |x - X_img|)] of a traced point, mm."""
+    out = []
+    for r in read_csv(os.path.join(directory, "traces.csv")):
+        if r["point"] == point:
+            out.append((float(r["time"]), 1e3 * math.sqrt(sum(float(r[c]) ** 2 for c in ("dx", "dy", "dz")))))
+    return out
+
+
+def group_history(directory, group, column):
+    return [(float(r["time"]), float(r[column])) for r in read_csv(os.path.join(directory, "activation.csv"))
+            if r["group"] == group]
+
+
+def over_cycles(series):
+    return [(t, v) for t, v in series if t >= CYCLES_START - 1e-9]
+
+
+def summarise(name, controller, posture, p_max, directory, ga_ranks):
+    with open(os.path.join(directory, "summary.json")) as f:
+        s = json.load(f)
+    steps = s["steps"]
+    row = {"run": name, "controller": controller, "posture": posture, "p_max_Pa": p_max,
+           "ranks": s["ranks"], "control_groups": s.get("control_groups", 1), "steps": len(steps),
+           "wall_s": round(s["wall_seconds"], 1), "assembly_s": round(s["assembly_seconds"], 1),
+           "preconditioner_setup_s": round(s["preconditioner_setup_seconds"], 1),
+           "krylov_s": round(s["linear_solve_seconds"], 1)}
+    if controller != "passive":
+        solves = [st["control"]["candidates"] for st in steps]
+        row["solves"] = sum(solves)
+        row["solves_per_step_mean"] = round(statistics.mean(solves), 2)
+        row["solves_per_step_max"] = max(solves)
+        row["seconds_per_solve"] = round(s["wall_seconds"] / sum(solves), 3)
+        row["sensitivities"] = sum(st["control"].get("sensitivity_evaluations", 0) for st in steps)
+        objective = [st["control"]["objective"] for st in steps if st["time"] >= CYCLES_START - 1e-9]
+        row["eq25_mean_mm"] = round(1e3 * statistics.mean(objective), 3)
+        row["eq25_max_mm"] = round(1e3 * max(objective), 3)
+    else:
+        row["seconds_per_solve"] = round(s["wall_seconds"] / len(steps), 3)
+    for point in ("P_A", "P_P"):
+        d = [v for _, v in over_cycles(distances(directory, point))]
+        row[f"{point}_mean_mm"] = round(statistics.mean(d), 3)
+        row[f"{point}_half_range_mm"] = round((max(d) - min(d)) / 2.0, 3)
+        row[f"{point}_max_mm"] = round(max(d), 3)
+    return row
+
+
+def bspline_fit(t, y, coefficients=12, degree=3):
+    """Least-squares cubic B-spline with `coefficients` basis functions on uniform knots over
+    [t0, t1] (clamped), the paper's smoothing of Fig. 12a; returns the fitted curve on a grid."""
+    t = np.asarray(t, float)
+    y = np.asarray(y, float)
+    inner = coefficients - degree + 1
+    knots = np.concatenate([[t[0]] * degree, np.linspace(t[0], t[-1], inner), [t[-1]] * degree])
+
+    def basis(x):
+        # Cox-de Boor, degree 0 upwards; the last interval is closed.
+        B = np.zeros((len(x), len(knots) - 1))
+        for i in range(len(knots) - 1):
+            B[:, i] = (knots[i] <= x) & (x < knots[i + 1])
+        B[x == knots[-1], np.searchsorted(knots, knots[-1]) - 1] = 1.0
+        for k in range(1, degree + 1):
+            N = np.zeros((len(x), len(knots) - 1 - k))
+            for i in range(len(knots) - 1 - k):
+                a = knots[i + k] - knots[i]
+                b = knots[i + k + 1] - knots[i + 1]
+                if a > 0:
+                    N[:, i] += (x - knots[i]) / a * B[:, i]
+                if b > 0:
+                    N[:, i] += (knots[i + k + 1] - x) / b * B[:, i + 1]
+            B = N
+        return B
+
+    c, *_ = np.linalg.lstsq(basis(t), y, rcond=None)
+    grid = np.linspace(t[0], t[-1], 400)
+    return grid, basis(grid) @ c
+
+
+def force_length(glossa):
+    """f_cL of the default (physiological) curve set, tabulated by glossa curves."""
+    out = tempfile.mkdtemp(prefix="glossa-curves-")
+    subprocess.run([glossa, "curves", "--output", out], check=True, stdout=subprocess.DEVNULL)
+    rows = read_csv(os.path.join(out, "force_length.csv"))
+    return np.array([float(r["lambda_c"]) for r in rows]), np.array([float(r["f_cL_physiological"]) for r in rows])
+
+
+def ffmr_percent(directory, group="GGm"):
+    return [(t, 100.0 * v) for t, v in group_history(directory, group, "ffmr")]
+
+
+def correlation(a, b):
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    if a.std() == 0 or b.std() == 0:
+        return 0.0
+    return float(np.corrcoef(a, b)[0, 1])
+
+
+def check(directories, rows, results):
+    """The issue's trends, on the runs' own output; returns the failures."""
+    failures = []
+    by = {r["run"]: r for r in rows}
+
+    def expect(ok, what):
+        results.append(("ok   " if ok else "FAIL ") + what)
+        if not ok:
+            failures.append(what)
+
+    for posture in ("upright", "supine"):
+        passive = by[f"passive_{posture}"]
+        for controller in ("gradient", "ga"):
+            r = by.get(f"{controller}_{posture}")
+            if r is None:
+                continue
+            for point in ("P_A", "P_P"):
+                expect(r[f"{point}_max_mm"] <= 0.5 * passive[f"{point}_max_mm"],
+                       f"{controller} {posture}: largest {point} distance {r[f'{point}_max_mm']:.3f} mm <= half the "
+                       f"passive {passive[f'{point}_max_mm']:.3f} mm")
+        g, ga = by.get(f"gradient_{posture}"), by.get(f"ga_{posture}")
+        if g and ga:
+            expect(g["eq25_mean_mm"] <= ga["eq25_mean_mm"],
+                   f"{posture}: gradient eq. 25 mean {g['eq25_mean_mm']:.3f} mm <= GA's {ga['eq25_mean_mm']:.3f} mm")
+            expect(5 * g["solves"] <= ga["solves"],
+                   f"{posture}: gradient solves {g['solves']} at least 5x fewer than the GA's {ga['solves']}")
+    means = {}
+    for name in [r["run"] for r in rows if r["controller"] != "passive" and "binary" not in r["run"]]:
+        ffmr = over_cycles(ffmr_percent(directories[name]))
+        p_max = by[name]["p_max_Pa"]
+        means[name] = statistics.mean(v for _, v in ffmr)
+        if p_max > 0 and not name.startswith("sweep"):
+            c = correlation([v for _, v in ffmr], [pressure(t, p_max) for t, _ in ffmr])
+            expect(c >= 0.8, f"{name}: GGm FFMR correlates with the suction, r = {c:.3f} >= 0.8")
+            # Cycles 2 and 3 repeat: the same phase of each cycle, within 10 % of the range.
+            values = dict(ffmr)
+            span = max(values.values()) - min(values.values())
+            second = [values[t] for t in sorted(values) if CYCLES_START + PERIOD - 1e-9 <= t < CYCLES_START + 2 * PERIOD - 1e-9]
+            third = [values[t] for t in sorted(values) if CYCLES_START + 2 * PERIOD - 1e-9 <= t < CYCLES_START + 3 * PERIOD - 1e-9]
+            n = min(len(second), len(third))
+            gap = max(abs(a - b) for a, b in zip(second[:n], third[:n])) if n else float("inf")
+            expect(n > 0 and gap < 0.1 * span,
+                   f"{name}: cycles 2 and 3 of GGm FFMR differ by {gap:.4f} < 10 % of its range {span:.4f} (%)")
+    for controller in ("gradient", "ga"):
+        if f"{controller}_upright" in means and f"{controller}_supine" in means:
+            expect(means[f"{controller}_supine"] > means[f"{controller}_upright"],
+                   f"{controller}: mean GGm FFMR supine {means[f'{controller}_supine']:.3f} % > upright "
+                   f"{means[f'{controller}_upright']:.3f} %")
+    sweep = sweep_runs()
+    if all(n in directories for n in sweep.values()):
+        levels = [means[sweep[p]] for p in SWEEP]
+        expect(all(a < b for a, b in zip(levels, levels[1:])),
+               "sweep: mean GGm FFMR grows with p_max: " + ", ".join(f"{p} Pa {v:.3f} %" for p, v in zip(SWEEP, levels)))
+        # Where the suction is zero (between breaths, after the first), the gravity-holding level.
+        rests = []
+        for p in SWEEP:
+            ffmr = dict(ffmr_percent(directories[sweep[p]]))
+            zero = [v for t, v in ffmr.items() if t > CYCLES_START + PERIOD - 1e-9 and pressure(t, 1.0) == 0.0]
+            rests.append(statistics.mean(zero))
+        span = max(v for p in SWEEP for _, v in over_cycles(ffmr_percent(directories[sweep[p]]))) - min(rests)
+        spread = max(rests) - min(rests)
+        expect(spread <= 0.1 * span,
+               "sweep: at zero suction GGm FFMR returns to one level: " + ", ".join(f"{v:.3f}" for v in rests) +
+               f" % (spread {spread:.4f} <= 10 % of the swept range {span:.4f})")
+    return failures
+
+
+def plot(glossa, directories, rows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    figures = os.path.join(ROOT, "doc", "figures")
+    styles = {"passive": ("0.5", "--"), "gradient": ("tab:blue", "-"), "ga": ("tab:red", "-")}
+    # Fig. 11: distance from the imaged position of P_P and P_A.
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
+    for col, posture in enumerate(("upright", "supine")):
+        for row, point in enumerate(("P_P", "P_A")):
+            ax = axes[row][col]
+            for controller in ("passive", "gradient", "ga"):
+                name = f"{controller}_{posture}"
+                if name not in directories:
+                    continue
+                t, d = zip(*distances(directories[name], point))
+                colour, line = styles[controller]
+                ax.plot(t, d, line, color=colour, marker=".", label={"ga": "GA"}.get(controller, controller))
+            ax.axvline(CYCLES_START, color="0.85", lw=0.8)
+            ax.set_title(f"{posture}: {point}")
+            ax.set_ylabel("distance from imaged position [mm]")
+            ax.grid(alpha=0.3)
+        axes[1][col].set_xlabel("time [s]")
+    axes[0][0].legend()
+    fig.suptitle("Fig. 11: the tongue with and without neural control, three 350 Pa breaths")
+    fig.tight_layout()
+    fig.savefig(os.path.join(figures, "s8_5_fig11.png"), dpi=110)
+    plt.close(fig)
+    # Fig. 12a: GGm FFMR raw and B-spline.
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    colours = {"upright": "tab:green", "supine": "tab:purple"}
+    for posture in ("upright", "supine"):
+        for controller, marker in (("gradient", "."), ("ga", "x")):
+            name = f"{controller}_{posture}"
+            if name not in directories:
+                continue
+            t, f = zip(*ffmr_percent(directories[name]))
+            ax.plot(t, f, marker=marker, color=colours[posture], alpha=0.35, lw=0.8,
+                    label=f"{posture}, {'GA' if controller == 'ga' else controller}, raw")
+            grid, fit = bspline_fit(t, f)
+            ax.plot(grid, fit, color=colours[posture], lw=2 if controller == "gradient" else 1,
+                    ls="-" if controller == "gradient" else ":",
+                    label=f"{posture}, {'GA' if controller == 'ga' else controller}, 12-coefficient B-spline")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("GGm FFMR [% of max]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    ax.set_title("Fig. 12a: GGm response, upright and supine")
+    fig.tight_layout()
+    fig.savefig(os.path.join(figures, "s8_5_fig12a.png"), dpi=110)
+    plt.close(fig)
+    # Fig. 12b: GGm fibre stretch and f_cL at the mean contractile stretch.
+    lam, fcl = force_length(glossa)
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    for posture in ("upright", "supine"):
+        for controller, ls in (("gradient", "-"), ("ga", ":")):
+            name = f"{controller}_{posture}"
+            if name not in directories:
+                continue
+            label = f"{posture}, {'GA' if controller == 'ga' else controller}"
+            t, s = zip(*group_history(directories[name], "GGm", "mean_fibre_stretch"))
+            a1.plot(t, s, ls, color=colours[posture], label=label)
+            t, c = zip(*group_history(directories[name], "GGm", "mean_contractile_stretch"))
+            a2.plot(t, np.interp(c, lam, fcl), ls, color=colours[posture], label=label)
+    a1.axhline(1.0, color="0.6", lw=0.8)
+    a1.set_ylabel("GGm length-weighted mean fibre stretch")
+    a2.set_ylabel("f_cL at GGm's mean contractile stretch")
+    for a in (a1, a2):
+        a.set_xlabel("time [s]")
+        a.grid(alpha=0.3)
+        a.legend(fontsize=7)
+    fig.suptitle("Fig. 12b: GGm fibre stretch and force-length efficiency")
+    fig.tight_layout()
+    fig.savefig(os.path.join(figures, "s8_5_fig12b.png"), dpi=110)
+    plt.close(fig)
+    # Fig. 13: GGm FFMR per p_max.
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for p, name in sweep_runs().items():
+        if name not in directories:
+            continue
+        t, f = zip(*ffmr_percent(directories[name]))
+        ax.plot(t, f, marker=".", label=f"{p} Pa")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("GGm FFMR [% of max]")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    ax.set_title("Fig. 13: GGm FFMR against the airway pressure (supine, gradient controller)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(figures, "s8_5_fig13.png"), dpi=110)
+    plt.close(fig)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
+    p.add_argument("--runs", default=os.path.join(ROOT, "bench", "results", "tongue_control"))
+    p.add_argument("--table", default=os.path.join(ROOT, "bench", "results", "tongue_control.csv"))
+    p.add_argument("--only", default="", help="comma-separated run names (default: all)")
+    p.add_argument("--ga-ranks", default=2, type=int)
+    p.add_argument("--force", action="store_true")
+    p.add_argument("--no-run", action="store_true", help="only summarise, plot and check existing runs")
+    p.add_argument("--check", action="store_true")
+    p.add_argument("--plot", action="store_true")
+    args = p.parse_args()
+    only = set(filter(None, args.only.split(",")))
+    directories, rows = {}, []
+    for name, deck, sets, controller, posture, p_max in runs():
+        if only and name not in only:
+            continue
+        directory = os.path.join(args.runs, name)
+        if not args.no_run and (args.force or not finished(directory)):
+            execute(args.glossa, name, deck, sets, controller, directory, args.ga_ranks)
+        if finished(directory):
+            directories[name] = directory
+            rows.append(summarise(name, controller, posture, p_max, directory, args.ga_ranks))
+    columns = []
+    for r in rows:
+        columns += [c for c in r if c not in columns]
+    os.makedirs(os.path.dirname(os.path.abspath(args.table)), exist_ok=True)
+    with open(args.table, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns)
+        w.writeheader()
+        w.writerows(rows)
+    print("wrote", args.table)
+    if args.plot:
+        plot(args.glossa, directories, rows)
+    if args.check:
+        results = []
+        failures = check(directories, rows, results)
+        print("\n".join(results))
+        print(f"{len(results) - len(failures)} passed, {len(failures)} failed")
+        if failures:
+            sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
