@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <stdexcept>
-#include <type_traits>
 
 namespace glossa::solvers {
 
@@ -33,8 +32,8 @@ public:
   }
   template <class T> T whole() { return static_cast<T>(number()); }
   template <class Sequence> Sequence sequence() {
-    Sequence values(whole<std::size_t>());
-    for (auto &v : values) v = static_cast<std::decay_t<decltype(v)>>(number());
+    Sequence values(whole<std::size_t>(), typename Sequence::value_type{});
+    for (auto &v : values) v = static_cast<typename Sequence::value_type>(number());
     return values;
   }
 
