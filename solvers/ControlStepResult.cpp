@@ -2,129 +2,109 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 namespace glossa::solvers {
 
 bool ControlStepResult::found() const { return std::isfinite(objective); }
 
 namespace {
+// One list of fields per struct serves both directions, so that what is read is what was
+// written. `R` is the struct, const when writing.
+template <class Io, class R> void newtonFields(Io &io, R &n) {
+  io(n.converged);
+  io(n.elementInverted);
+  io(n.iterations);
+  io(n.linearIterations);
+  io(n.residualNorms);
+  io(n.linearIterationsPerStep);
+  io(n.failure);
+}
+
+template <class Io, class R> void uzawaFields(Io &io, R &r) {
+  io(r.converged);
+  io(r.elementInverted);
+  io(r.solves);
+  io(r.newtonIterations);
+  io(r.linearIterations);
+  io(r.dilatation.max);
+  io(r.dilatation.mean);
+  io(r.dilatation.maxVolumeChange);
+  io(r.newton);
+}
+
+template <class Io, class R> void resultFields(Io &io, R &r) {
+  io(r.inputs);
+  io(r.evaluated);
+  io(r.objective);
+  io(r.candidates);
+  io(r.generations);
+  io(r.iterations);
+  io(r.sensitivities);
+  io(r.sensitivityKrylov);
+  io(r.sensitivityCheck);
+  io(r.stop);
+  io(r.pointErrors);
+  io(r.solve);
+}
+
 // Counts, flags and characters are stored as doubles: exact below 2^53. A sequence is its
 // length, then its elements.
 class FlatWriter {
 public:
   explicit FlatWriter(std::vector<double> &buffer) : buffer_(buffer) {}
-  void number(double v) { buffer_.push_back(v); }
-  template <class Sequence> void sequence(const Sequence &values) {
-    number(static_cast<double>(values.size()));
-    for (const auto v : values) number(static_cast<double>(v));
+  template <class T> std::enable_if_t<std::is_arithmetic_v<T>> operator()(const T &v) {
+    buffer_.push_back(static_cast<double>(v));
   }
+  template <class T> void operator()(const std::vector<T> &values) { sequence(values); }
+  void operator()(const std::string &text) { sequence(text); }
+  void operator()(const Eigen::VectorXd &v) { sequence(v); }
+  void operator()(const NewtonResult &n) { newtonFields(*this, n); }
+  void operator()(const UzawaResult &r) { uzawaFields(*this, r); }
 
 private:
+  template <class Sequence> void sequence(const Sequence &values) {
+    (*this)(static_cast<std::size_t>(values.size()));
+    for (const auto &v : values) (*this)(v);
+  }
   std::vector<double> &buffer_;
 };
 
 class FlatReader {
 public:
   FlatReader(const std::vector<double> &buffer, std::size_t &position) : buffer_(buffer), k_(position) {}
-  double number() {
+  template <class T> std::enable_if_t<std::is_arithmetic_v<T>> operator()(T &v) { v = static_cast<T>(next()); }
+  template <class T> void operator()(std::vector<T> &values) { sequence(values); }
+  void operator()(std::string &text) { sequence(text); }
+  void operator()(Eigen::VectorXd &v) { sequence(v); }
+  void operator()(NewtonResult &n) { newtonFields(*this, n); }
+  void operator()(UzawaResult &r) { uzawaFields(*this, r); }
+
+private:
+  double next() {
     if (k_ >= buffer_.size()) throw std::runtime_error("control step result: the buffer ends early");
     return buffer_[k_++];
   }
-  template <class T> T whole() { return static_cast<T>(number()); }
-  template <class Sequence> Sequence sequence() {
-    Sequence values(whole<std::size_t>(), typename Sequence::value_type{});
-    for (auto &v : values) v = static_cast<typename Sequence::value_type>(number());
-    return values;
+  template <class Sequence> void sequence(Sequence &values) {
+    std::size_t size = 0;
+    (*this)(size);
+    values.resize(static_cast<decltype(values.size())>(size));
+    for (auto &v : values) (*this)(v);
   }
-
-private:
   const std::vector<double> &buffer_;
   std::size_t &k_;
 };
-
-void write(FlatWriter &out, const NewtonResult &n) {
-  out.number(n.converged);
-  out.number(n.elementInverted);
-  out.number(n.iterations);
-  out.number(n.linearIterations);
-  out.sequence(n.residualNorms);
-  out.sequence(n.linearIterationsPerStep);
-  out.sequence(n.failure);
-}
-
-NewtonResult readNewton(FlatReader &in) {
-  NewtonResult n;
-  n.converged = in.number() != 0.0;
-  n.elementInverted = in.number() != 0.0;
-  n.iterations = in.whole<int>();
-  n.linearIterations = in.whole<int>();
-  n.residualNorms = in.sequence<std::vector<double>>();
-  n.linearIterationsPerStep = in.sequence<std::vector<int>>();
-  n.failure = in.sequence<std::string>();
-  return n;
-}
-
-void write(FlatWriter &out, const UzawaResult &r) {
-  out.number(r.converged);
-  out.number(r.elementInverted);
-  out.number(r.solves);
-  out.number(r.newtonIterations);
-  out.number(r.linearIterations);
-  out.number(r.dilatation.max);
-  out.number(r.dilatation.mean);
-  out.number(r.dilatation.maxVolumeChange);
-  out.number(static_cast<double>(r.newton.size()));
-  for (const auto &n : r.newton) write(out, n);
-}
-
-UzawaResult readUzawa(FlatReader &in) {
-  UzawaResult r;
-  r.converged = in.number() != 0.0;
-  r.elementInverted = in.number() != 0.0;
-  r.solves = in.whole<int>();
-  r.newtonIterations = in.whole<int>();
-  r.linearIterations = in.whole<int>();
-  r.dilatation.max = in.number();
-  r.dilatation.mean = in.number();
-  r.dilatation.maxVolumeChange = in.number();
-  r.newton.resize(in.whole<std::size_t>());
-  for (auto &n : r.newton) n = readNewton(in);
-  return r;
-}
 } // namespace
 
 void appendControlStepResult(const ControlStepResult &result, std::vector<double> &buffer) {
   FlatWriter out(buffer);
-  out.sequence(result.inputs);
-  out.sequence(result.evaluated);
-  out.number(result.objective);
-  out.number(static_cast<double>(result.candidates));
-  out.number(result.generations);
-  out.number(result.iterations);
-  out.number(result.sensitivities);
-  out.number(result.sensitivityKrylov);
-  out.number(result.sensitivityCheck);
-  out.sequence(result.stop);
-  out.sequence(std::vector<double>(result.pointErrors.data(), result.pointErrors.data() + result.pointErrors.size()));
-  write(out, result.solve);
+  resultFields(out, result);
 }
 
 ControlStepResult readControlStepResult(const std::vector<double> &buffer, std::size_t &position) {
   FlatReader in(buffer, position);
   ControlStepResult result;
-  result.inputs = in.sequence<std::vector<double>>();
-  result.evaluated = in.sequence<std::vector<int>>();
-  result.objective = in.number();
-  result.candidates = in.whole<std::size_t>();
-  result.generations = in.whole<int>();
-  result.iterations = in.whole<int>();
-  result.sensitivities = in.whole<int>();
-  result.sensitivityKrylov = in.whole<int>();
-  result.sensitivityCheck = in.number();
-  result.stop = in.sequence<std::string>();
-  const auto errors = in.sequence<std::vector<double>>();
-  result.pointErrors = Eigen::Map<const Eigen::VectorXd>(errors.data(), static_cast<Eigen::Index>(errors.size()));
-  result.solve = readUzawa(in);
+  resultFields(in, result);
   return result;
 }
 
