@@ -10,22 +10,13 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "assembly/ModelEvaluator.hpp"
+#include "solvers/SolveStatistics.hpp"
 
 namespace NOX::Thyra {
 class Group;
 }
 
 namespace glossa::solvers {
-
-struct NewtonResult {
-  bool converged = false;
-  bool elementInverted = false;
-  int iterations = 0;
-  int linearIterations = 0;
-  std::vector<double> residualNorms; // ||f|| before each iteration and at the end
-  std::vector<int> linearIterationsPerStep;
-  std::string failure; // why, when not converged for a reason other than the iteration limit
-};
 
 Teuchos::ParameterList nonlinearSolverParameters();
 

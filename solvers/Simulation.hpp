@@ -1,20 +1,45 @@
 #pragma once
-// The Simulation facade (DESIGN.md §3): from a validated deck it builds the scene, the
-// distributed assembly, the linear and nonlinear solvers and the Uzawa loop, then steps through
-// time, committing each converged step (displacement and multipliers) and rolling back a failed
-// one, and writes results as it goes so a run stopped at any point leaves readable files.
+// The Simulation (DESIGN.md §3): from a validated deck it builds the scene, the distributed
+// assembly, the linear and nonlinear solvers and the Uzawa loop, then steps through time,
+// committing each converged step (displacement and multipliers) and rolling back a failed one,
+// and writes results as it goes so a run stopped at any point leaves readable files. A
+// controlled deck's steps are searched by a ControlDriver, to which the simulation is the plant.
 
+#include <chrono>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
 
 #include "io/deck/Deck.hpp"
 
+namespace glossa::assembly {
+class Assembler;
+class ModelEvaluator;
+} // namespace glossa::assembly
+namespace glossa::io {
+class KeyedCsvWriter;
+class SummaryWriter;
+} // namespace glossa::io
+namespace glossa::model {
+struct Scene;
+}
+
 namespace glossa::solvers {
+
+class CommControlGroups;
+class ControlDriver;
+class NewtonSolver;
+class StepRecorder;
+class StepSizeController;
+class UzawaLoop;
+struct ControlSetup;
 
 // Parameters of the sections the solver side owns ("Time", "Incompressibility",
 // "Nonlinear solver", "Linear solver", "Output"), to be merged into the deck schema.
@@ -29,6 +54,85 @@ struct RunOptions {
   // If set, receives the last converged displacement of every node (3 per node, by mesh node),
   // on every rank (glossa zero-strain).
   std::vector<double> *finalDisplacement = nullptr;
+};
+
+class Simulation {
+public:
+  // Builds everything and records the initial state (t = 0) and the summary so far. Collective.
+  // Throws io::DeckError for deck problems found while building the scene or the controller.
+  Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const RunOptions &options);
+  ~Simulation();
+  Simulation(const Simulation &) = delete;
+  Simulation &operator=(const Simulation &) = delete;
+
+  double time() const { return t_; } // of the committed state
+  bool finished() const;              // the committed state is at the end time
+
+  // Attempts the next step (of the step-size controller's size) from the committed state into
+  // the trial state; a controlled deck's step searches the inputs first. Nothing is committed,
+  // so the committed state stays intact if it fails. Returns whether it converged. Collective.
+  bool attemptStep();
+  // The trial state of a converged attempt becomes the committed one, is recorded (traces,
+  // fields, the summary's step), and the muscle history is committed. Collective.
+  void commitTrial();
+  // After a failed attempt: the step size is cut back for the next attempt; false if it would
+  // fall below the minimum (the run stops, with the reason in the summary).
+  bool rollBack();
+  // Steps to the end time (or the first failure below the minimum step size), then writes the
+  // final summary and returns it. Collective.
+  nlohmann::json run();
+
+private:
+  struct StepState; // a displacement and its element multipliers
+  struct Attempt;   // one step solve's outcome
+  struct Trial;     // the step being attempted
+  class CandidatePlant;
+
+  // One step solve from the committed state to `time` into `state` (the committed state on
+  // entry); the muscle history's trial values are this step's. `quiet`: no per-iteration output
+  // (a controller's candidates).
+  Attempt solveStep(double time, double dt, StepState &state, bool quiet);
+  void applyControlInputs(const std::vector<double> &inputs);
+  void controlledStep(Trial &trial);
+  // The control points' displacement (one column per point), gathered from every rank.
+  Eigen::Matrix3Xd controlPointDisplacement(const StepState &state) const;
+  void record(const Trial &trial);
+  nlohmann::json controlJson(const Trial &trial);
+  void writeSummary();
+  void finish();
+
+  std::chrono::steady_clock::time_point start_;
+  double setupAtStart_, solveAtStart_; // NOX's timers when the run began
+  std::string deckFile_;
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  RunOptions options_;
+  bool root_, talk_;
+
+  std::unique_ptr<StepSizeController> steps_;
+  std::unique_ptr<model::Scene> scene_;
+  std::unique_ptr<CommControlGroups> groups_;
+  Teuchos::RCP<assembly::Assembler> assembler_;
+  Teuchos::RCP<assembly::ModelEvaluator> model_;
+  std::unique_ptr<NewtonSolver> newton_;
+  std::unique_ptr<UzawaLoop> uzawa_;
+  std::filesystem::path dir_;
+  std::unique_ptr<StepRecorder> recorder_;
+  int every_ = 1;
+  std::unique_ptr<io::SummaryWriter> summary_;
+  nlohmann::json doc_;
+
+  std::unique_ptr<StepState> committed_;
+  std::vector<double> committedStretch_; // every group's mean fibre stretch (pruning)
+  double t_ = 0.0;
+  int stepNumber_ = 0;
+  bool converged_ = true;
+  std::string failure_;
+  std::unique_ptr<Trial> trial_;
+
+  std::unique_ptr<ControlSetup> control_;
+  std::unique_ptr<io::KeyedCsvWriter> controls_;
+  std::unique_ptr<CandidatePlant> plant_;
+  std::unique_ptr<ControlDriver> driver_;
 };
 
 // Runs the deck; returns the summary that was written to summary.json. Collective.

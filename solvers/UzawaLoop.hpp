@@ -14,28 +14,11 @@
 #include "materials/VolumetricEnergy.hpp"
 #include "solvers/AugmentedLagrangianRule.hpp"
 #include "solvers/NewtonSolver.hpp"
+#include "solvers/SolveStatistics.hpp"
 
 namespace glossa::solvers {
 
 Teuchos::ParameterList incompressibilityParameters();
-
-// In augmented-Lagrangian mode the error is |theta_e - theta_phys(p_e)| (the distance from the
-// physical law; |theta_e - 1| for nu = 0.5); with a penalty it is |theta_e - 1|.
-struct DilatationError {
-  double max = 0.0;             // max over elements
-  double mean = 0.0;            // reference-volume-weighted mean
-  double maxVolumeChange = 0.0; // max over elements of |theta_e - 1|
-};
-
-struct UzawaResult {
-  bool converged = false;     // Newton converged and (AL mode) the dilatation tolerance was met
-  bool elementInverted = false;
-  int solves = 0;             // Newton solves = Uzawa iterations
-  int newtonIterations = 0;
-  int linearIterations = 0;
-  DilatationError dilatation;
-  std::vector<NewtonResult> newton;
-};
 
 class UzawaLoop {
 public:

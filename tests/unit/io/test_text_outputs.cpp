@@ -79,8 +79,9 @@ TEST(TraceWriter, RowsRoundTripExactlyAndAreOnDiskAfterEachCall) {
 TEST(TraceWriter, RefusesPointNamesCsvCannotCarry) {
   ScratchDirectory dir;
   TraceWriter traces(dir / "traces.csv");
-  EXPECT_THROW(traces.append(0.0, {{"a,b", Eigen::Vector3d::Zero()}}), std::invalid_argument);
-  EXPECT_THROW(traces.append(0.0, {{"ok", Eigen::Vector3d::Zero()}, {"", Eigen::Vector3d::Zero()}}),
+  using Displacements = std::vector<std::pair<std::string, Eigen::Vector3d>>; // not TraceWriter::Point
+  EXPECT_THROW(traces.append(0.0, Displacements{{"a,b", Eigen::Vector3d::Zero()}}), std::invalid_argument);
+  EXPECT_THROW(traces.append(0.0, Displacements{{"ok", Eigen::Vector3d::Zero()}, {"", Eigen::Vector3d::Zero()}}),
                std::invalid_argument);
   EXPECT_EQ(lines(dir / "traces.csv").size(), 1u); // nothing of a refused call is written
 }

@@ -1,0 +1,236 @@
+#include "solvers/ControlDriver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+#include "control/ElitistGeneticAlgorithm.hpp"
+#include "control/GaussNewtonController.hpp"
+#include "control/MusclePruning.hpp"
+
+namespace glossa::solvers {
+
+// Every candidate is a full step solve from the committed state. The first candidate to beat
+// every earlier one by its rank (the GA: eq. 25; the gradient controller: the sum of squares it
+// minimises) has its state kept, so the winner's state is at hand when the search ends.
+struct ControlDriver::Search {
+  ControlStepResult result;
+  double rank = std::numeric_limits<double>::infinity();
+  long index = -1; // the winner's position in the order of evaluation (ties among control groups)
+};
+
+ControlDriver::ControlDriver(ControlDriverSetup setup, ControlPlant &plant, const ControlGroups &groups)
+    : setup_(std::move(setup)), plant_(plant), groups_(groups), objective_(setup_.goals, setup_.weights) {}
+
+Eigen::Matrix3Xd ControlDriver::positions(const Eigen::Matrix3Xd &pointDisplacement) const {
+  return setup_.referencePositions + pointDisplacement;
+}
+
+std::vector<int> ControlDriver::evaluatedGroups(const std::vector<double> &committedStretch) const {
+  const auto &p = setup_.parameters;
+  const auto &controlled = setup_.controlled;
+  // Pruning: the reference stretch is 1 (no pre-strain).
+  std::vector<double> stretch, reference;
+  std::vector<bool> always;
+  const auto alwaysMask = p.alwaysEvaluatedMask(setup_.groupNames);
+  for (std::size_t i = 0; i < controlled.size(); ++i) {
+    const int g = controlled[i];
+    stretch.push_back(committedStretch[g]);
+    reference.push_back(1.0);
+    const bool active = p.keepActiveGroups && i < previousBest_.size() && previousBest_[i] > 0.0;
+    always.push_back(alwaysMask[g] || active);
+  }
+  std::vector<int> local = p.pruning ? control::groupsInTension(stretch, reference, p.pruningTolerance, always)
+                                     : std::vector<int>();
+  if (!p.pruning)
+    for (std::size_t i = 0; i < controlled.size(); ++i) local.push_back(static_cast<int>(i));
+  std::vector<int> evaluated;
+  for (int i : local) evaluated.push_back(controlled[i]);
+  return evaluated;
+}
+
+std::vector<double> ControlDriver::allInputs(const std::vector<int> &evaluated, const Eigen::VectorXd &v) const {
+  std::vector<double> inputs(setup_.groupNames.size(), 0.0);
+  for (std::size_t i = 0; i < evaluated.size(); ++i) inputs[evaluated[i]] = v(static_cast<Eigen::Index>(i));
+  return inputs;
+}
+
+control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const std::vector<double> &inputs,
+                                                         bool rankByObjective, long index) {
+  const CandidateSolve solve = plant_.solve(inputs);
+  control::ControlEvaluation e;
+  e.objective = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd errors;
+  if (solve.ok) {
+    const Eigen::Matrix3Xd x = positions(solve.pointDisplacement);
+    const auto v = objective_.evaluate(x);
+    e.ok = true;
+    e.objective = v.total;
+    const Eigen::Matrix3Xd offset = x - setup_.goals;
+    e.residual = Eigen::Map<const Eigen::VectorXd>(offset.data(), offset.size());
+    for (Eigen::Index p = 0; p < x.cols(); ++p) e.residual.segment<3>(3 * p) *= setup_.weights(p);
+    errors = v.distance;
+  }
+  const double rank = !e.ok ? e.objective : rankByObjective ? e.objective : e.residual.squaredNorm();
+  if (rank < search.rank) {
+    search.rank = rank;
+    search.index = index;
+    search.result.objective = e.objective;
+    search.result.inputs = inputs;
+    search.result.pointErrors = errors;
+    search.result.solve = solve.statistics;
+    plant_.keepLast();
+  }
+  return e;
+}
+
+ControlStepResult ControlDriver::step(int committedSteps, const std::vector<double> &committedStretch) {
+  Search search;
+  search.result.objective = std::numeric_limits<double>::infinity();
+  search.result.evaluated = evaluatedGroups(committedStretch);
+  std::vector<double> previousInputs(setup_.groupNames.size(), 0.0);
+  for (std::size_t i = 0; i < setup_.controlled.size() && i < previousBest_.size(); ++i)
+    previousInputs[setup_.controlled[i]] = previousBest_[i];
+
+  if (setup_.parameters.type == control::ControllerType::geneticAlgorithm)
+    searchGenetic(search, committedSteps, previousInputs);
+  else
+    searchGradient(search, previousInputs);
+
+  ControlStepResult &result = search.result;
+  if (!result.found()) return result;
+  previousBest_.assign(setup_.controlled.size(), 0.0);
+  for (std::size_t i = 0; i < setup_.controlled.size(); ++i) previousBest_[i] = result.inputs[setup_.controlled[i]];
+  return result;
+}
+
+void ControlDriver::searchGenetic(Search &search, int committedSteps, const std::vector<double> &previousInputs) {
+  const std::vector<int> &evaluated = search.result.evaluated;
+  const auto groupCount = static_cast<std::size_t>(groups_.count());
+  const auto mine = static_cast<std::size_t>(groups_.mine());
+  long evaluatedSoFar = 0;
+  auto evaluate = [&](const std::vector<control::Genome> &genomes) {
+    // Candidate i of the batch is solved by control group i mod G; every rank then sees every
+    // objective, each taken from the group that solved it.
+    std::vector<double> values(genomes.size(), 0.0);
+    for (std::size_t i = 0; i < genomes.size(); ++i)
+      if (i % groupCount == mine)
+        values[i] = solveCandidate(search,
+                                   control::inputsFromGenome(evaluated, genomes[i], setup_.groupNames.size()), true,
+                                   evaluatedSoFar + static_cast<long>(i))
+                        .objective;
+    evaluatedSoFar += static_cast<long>(genomes.size());
+    return groupCount == 1 ? values : groups_.sumOfGroupRoots(values);
+  };
+  control::GeneticAlgorithmParameters gaParameters = setup_.parameters.ga;
+  gaParameters.seed += static_cast<std::uint64_t>(committedSteps);
+  const control::ElitistGeneticAlgorithm ga(gaParameters);
+  std::vector<control::Genome> seeds;
+  if (setup_.parameters.seedWithPreviousBest && !previousBest_.empty())
+    seeds.push_back(control::genomeFromInputs(evaluated, previousInputs));
+  const auto gaResult = ga.minimise(evaluated.size(), evaluate, seeds);
+  // The GA runs on every rank alike: its counts are the same in every group.
+  search.result.candidates = gaResult.evaluations;
+  search.result.generations = gaResult.generations;
+  search.result.stop = control::toString(gaResult.stopReason);
+  if (groupCount > 1) shareWinner(search);
+}
+
+void ControlDriver::shareWinner(Search &search) {
+  // The world's winner is the group best with the least rank, the earliest evaluated among
+  // equals (the one-group rule); its root broadcasts the result and its kept state.
+  const int count = groups_.count();
+  std::vector<double> ranks(static_cast<std::size_t>(count), 0.0), indices(ranks);
+  ranks[groups_.mine()] = search.rank;
+  indices[groups_.mine()] = static_cast<double>(search.index);
+  ranks = groups_.sumOfGroupRoots(ranks);
+  indices = groups_.sumOfGroupRoots(indices);
+  int winner = 0;
+  for (int c = 1; c < count; ++c)
+    if (ranks[c] < ranks[winner] || (ranks[c] == ranks[winner] && indices[c] < indices[winner])) winner = c;
+  if (!std::isfinite(ranks[winner])) { // no candidate converged anywhere
+    search.result.objective = search.rank = std::numeric_limits<double>::infinity();
+    return;
+  }
+  std::vector<double> buffer;
+  if (groups_.mine() == winner) {
+    appendControlStepResult(search.result, buffer);
+    const std::vector<double> state = plant_.packKept();
+    buffer.insert(buffer.end(), state.begin(), state.end());
+  }
+  groups_.broadcastFromGroup(winner, buffer);
+  std::size_t position = 0;
+  search.result = readControlStepResult(buffer, position);
+  search.rank = ranks[winner];
+  search.index = static_cast<long>(indices[winner]);
+  plant_.unpackKept(std::vector<double>(buffer.begin() + static_cast<long>(position), buffer.end()));
+}
+
+void ControlDriver::searchGradient(Search &search, const std::vector<double> &previousInputs) {
+  // Projected Gauss-Newton from the previous step's inputs, on the evaluated groups.
+  const std::vector<int> &evaluated = search.result.evaluated;
+  long evaluatedSoFar = 0;
+  auto evaluate = [&](const Eigen::VectorXd &v) {
+    return solveCandidate(search, allInputs(evaluated, v), false, evaluatedSoFar++);
+  };
+  auto sensitivity = [&](const Eigen::VectorXd &v) {
+    if (allInputs(evaluated, v) != search.result.inputs)
+      throw std::logic_error("gradient controller: sensitivity asked away from the accepted state");
+    return weightedSensitivity(search);
+  };
+  Eigen::VectorXd start(static_cast<Eigen::Index>(evaluated.size()));
+  for (std::size_t i = 0; i < evaluated.size(); ++i) start(static_cast<Eigen::Index>(i)) = previousInputs[evaluated[i]];
+  const control::GaussNewtonController controller(setup_.parameters.gradient);
+  const auto gn = controller.minimise(start, evaluate, sensitivity);
+  search.result.candidates = static_cast<std::size_t>(gn.evaluations);
+  search.result.iterations = gn.iterations;
+  search.result.sensitivities = gn.sensitivities;
+  search.result.stop = control::toString(gn.stop);
+}
+
+Eigen::MatrixXd ControlDriver::weightedSensitivity(Search &search) {
+  ControlStepResult &result = search.result;
+  const InputSensitivity s = plant_.sensitivity(result.inputs, result.evaluated);
+  result.sensitivityKrylov += s.krylovIterations;
+  if (setup_.parameters.verifySensitivities) {
+    result.sensitivityCheck = std::max(result.sensitivityCheck, differenceCheck(s.dxdu, search));
+    if (setup_.talk) std::printf("  sensitivity check: max |S - S_fd| / max |S_fd| = %.3e\n", result.sensitivityCheck);
+  }
+  Eigen::MatrixXd S = s.dxdu;
+  for (Eigen::Index p = 0; p < setup_.weights.size(); ++p) S.middleRows<3>(3 * p) *= setup_.weights(p);
+  return S;
+}
+
+double ControlDriver::differenceCheck(const Eigen::MatrixXd &dxdu, const Search &search) {
+  // Central differences of full step solves (second-order one-sided at the bounds of [0, 1]).
+  constexpr double h = 1e-3;
+  const std::vector<double> &accepted = search.result.inputs;
+  auto pointsAt = [&](const std::vector<double> &inputs) {
+    const CandidateSolve solve = plant_.solve(inputs);
+    if (!solve.ok) throw std::runtime_error("verify sensitivities: a differenced solve failed: " + solve.why);
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(solve.pointDisplacement.data(), solve.pointDisplacement.size()));
+  };
+  Eigen::MatrixXd fd(dxdu.rows(), dxdu.cols());
+  for (std::size_t j = 0; j < search.result.evaluated.size(); ++j) {
+    const int g = search.result.evaluated[j];
+    auto at = [&](double du) {
+      std::vector<double> inputs = accepted;
+      inputs[g] += du;
+      return pointsAt(inputs);
+    };
+    const double ug = accepted[g];
+    const auto col = static_cast<Eigen::Index>(j);
+    if (ug - h >= 0.0 && ug + h <= 1.0) fd.col(col) = (at(h) - at(-h)) / (2.0 * h);
+    else {
+      const double s = ug - h < 0.0 ? h : -h; // second-order one-sided, inside [0, 1]
+      fd.col(col) = (-3.0 * at(0.0) + 4.0 * at(s) - at(2.0 * s)) / (2.0 * s);
+    }
+  }
+  const double scale = fd.cwiseAbs().maxCoeff();
+  return scale > 0.0 ? (dxdu - fd).cwiseAbs().maxCoeff() / scale : -1.0;
+}
+
+} // namespace glossa::solvers

@@ -1,0 +1,74 @@
+#pragma once
+// One control step (issue 5, paper §6.1): prune the muscle groups by their mean fibre stretch at
+// the committed state, search the inputs of the others (the elitist GA or the projected
+// Gauss-Newton controller of control/), each candidate a full step solve by the plant from the
+// committed state, and, with control groups, share the winner among them. The state of the
+// winner is the plant's kept state when step() returns. Knows nothing of decks or Trilinos: the
+// solver is behind ControlPlant, the communication behind ControlGroups (doc/control.md).
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "control/ControlObjective.hpp"
+#include "control/ControllerParameters.hpp"
+#include "control/GeneticAlgorithmParameters.hpp"
+#include "solvers/ControlGroups.hpp"
+#include "solvers/ControlPlant.hpp"
+#include "solvers/ControlStepResult.hpp"
+
+namespace glossa::solvers {
+
+struct ControlDriverSetup {
+  control::ControllerParameters parameters; // validated
+  std::vector<std::string> groupNames;      // every muscle group of the scene
+  std::vector<int> controlled;              // the groups the controller drives (scene indices), ascending
+  Eigen::Matrix3Xd referencePositions;      // the control points where the displacement is 0
+  Eigen::Matrix3Xd goals;                   // xbar_p of eq. 25
+  Eigen::VectorXd weights;                  // w_p of eq. 25
+  bool talk = false;                        // print the sensitivity check
+};
+
+class ControlDriver {
+public:
+  // `plant` and `groups` must outlive the driver. Throws std::invalid_argument for goals and
+  // weights that do not match (ControlObjective).
+  ControlDriver(ControlDriverSetup setup, ControlPlant &plant, const ControlGroups &groups);
+
+  // The step after `committedSteps` committed ones; `committedStretch`: every group's mean fibre
+  // stretch at the committed state. The GA's seed is offset by `committedSteps` (fresh draws per
+  // step); both controllers start from the inputs of the last step whose result was found.
+  // Collective over all control groups.
+  ControlStepResult step(int committedSteps, const std::vector<double> &committedStretch);
+
+  // The groups a step searches (scene indices, ascending): the controlled ones in tension, those
+  // always evaluated and (keep active groups) those the last found step switched on.
+  std::vector<int> evaluatedGroups(const std::vector<double> &committedStretch) const;
+
+  // x_p = X_p + d_p: where the control points are, from their displacement.
+  Eigen::Matrix3Xd positions(const Eigen::Matrix3Xd &pointDisplacement) const;
+
+private:
+  struct Search; // the step's result so far, with the rank of its best candidate
+
+  // Every muscle group's input from inputs over the evaluated groups (the others 0).
+  std::vector<double> allInputs(const std::vector<int> &evaluated, const Eigen::VectorXd &v) const;
+  control::ControlEvaluation solveCandidate(Search &search, const std::vector<double> &inputs, bool rankByObjective,
+                                            long index);
+  void searchGenetic(Search &search, int committedSteps, const std::vector<double> &previousInputs);
+  void searchGradient(Search &search, const std::vector<double> &previousInputs);
+  // S = dr/du at the kept state, rows weighted as the residual; checked against differences of
+  // full solves when the parameters ask.
+  Eigen::MatrixXd weightedSensitivity(Search &search);
+  double differenceCheck(const Eigen::MatrixXd &dxdu, const Search &search);
+  void shareWinner(Search &search);
+
+  ControlDriverSetup setup_;
+  ControlPlant &plant_;
+  const ControlGroups &groups_;
+  control::ControlObjective objective_;
+  control::Genome previousBest_; // per controlled group: the inputs of the last found step
+};
+
+} // namespace glossa::solvers

@@ -1,0 +1,39 @@
+#pragma once
+// What a step's solve reports: each Newton solve's iterations and residual history, and the
+// Uzawa loop around them. Plain structs without Trilinos, so that the control driver can carry a
+// winning candidate's statistics and share them among control groups (ControlStepResult).
+
+#include <string>
+#include <vector>
+
+namespace glossa::solvers {
+
+struct NewtonResult {
+  bool converged = false;
+  bool elementInverted = false;
+  int iterations = 0;
+  int linearIterations = 0;
+  std::vector<double> residualNorms; // ||f|| before each iteration and at the end
+  std::vector<int> linearIterationsPerStep;
+  std::string failure; // why, when not converged for a reason other than the iteration limit
+};
+
+// In augmented-Lagrangian mode the error is |theta_e - theta_phys(p_e)| (the distance from the
+// physical law; |theta_e - 1| for nu = 0.5); with a penalty it is |theta_e - 1|.
+struct DilatationError {
+  double max = 0.0;             // max over elements
+  double mean = 0.0;            // reference-volume-weighted mean
+  double maxVolumeChange = 0.0; // max over elements of |theta_e - 1|
+};
+
+struct UzawaResult {
+  bool converged = false;     // Newton converged and (AL mode) the dilatation tolerance was met
+  bool elementInverted = false;
+  int solves = 0;             // Newton solves = Uzawa iterations
+  int newtonIterations = 0;
+  int linearIterations = 0;
+  DilatationError dilatation;
+  std::vector<NewtonResult> newton;
+};
+
+} // namespace glossa::solvers
