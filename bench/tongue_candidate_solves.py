@@ -10,8 +10,10 @@ every candidate is a full step solve from the committed state, no sensitivity so
 reads from summary.json the displacement solves (candidates), the wall time and its split into
 assembly, preconditioner set-up and Krylov iterations; per candidate solve they are divided by
 the number of candidates. The configurations: the default (MueLu, reuse RP within a Newton
-solve), MueLu's hierarchy kept for the whole run (reuse scope run), a sparse direct solve
-(Amesos2 KLU2), and the candidates shared out over 2 control groups on 2 ranks. --medium adds
+solve), MueLu's hierarchy kept for the whole run (reuse scope run, so one preconditioner set-up
+serves many candidates), a sparse direct solve (Amesos2 KLU2), every candidate started from the
+linear extrapolation of the last two committed states (Time/predictor), and the candidates
+shared out over 2 control groups on 2 ranks (there the split is rank 0's, i.e. its group's). --medium adds
 the medium tongue (refined once, 20,097 dofs, on the imaged geometry since the zero-strain
 coordinates are the coarse mesh's) for the default and the direct solve. Medians over
 --repeats runs; writes bench/results/tongue_candidate_solves.csv.
@@ -31,6 +33,7 @@ CONFIGURATIONS = [
     ("coarse", "MueLu (default)", [], 1),
     ("coarse", "MueLu, reuse scope run", ["Linear solver/MueLu reuse scope=run"], 1),
     ("coarse", "direct (KLU2)", ["Linear solver/type=direct"], 1),
+    ("coarse", "MueLu, predictor linear extrapolation", ["Time/predictor=linear extrapolation"], 1),
     ("coarse", "MueLu, 2 control groups on 2 ranks", [], 2),
     ("coarse", "direct (KLU2), 2 control groups on 2 ranks", ["Linear solver/type=direct"], 2),
 ]

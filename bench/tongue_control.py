@@ -352,6 +352,34 @@ def plot(glossa, directories, rows):
     plt.close(fig)
 
 
+def tables(rows):
+    """The markdown tables of doc/tongue.md (s8_5) from the rows."""
+    by = {r["run"]: r for r in rows}
+    out = ["| posture | run | P_A mm: mean ± half-range, largest | P_P mm: mean ± half-range, largest | paper P_A | paper P_P "
+           "| eq. 25 mean / largest mm | solves (per step: mean, largest) | s per solve | wall s |",
+           "|---|---|---|---|---|---|---|---|---|---|"]
+    names = {"passive": "passive", "gradient": "gradient", "ga": "GA (continuous)", "ga_binary": "GA (binary genes)"}
+    for posture in ("upright", "supine"):
+        for key in ("passive", "gradient", "ga", "ga_binary"):
+            r = by.get(f"{key}_{posture}")
+            if r is None:
+                continue
+            cells = [posture, names[key]]
+            for point in ("P_A", "P_P"):
+                cells.append(f"{r[point + '_mean_mm']:.2f} ± {r[point + '_half_range_mm']:.2f}, {r[point + '_max_mm']:.2f}")
+            for point in ("P_A", "P_P"):
+                m, h = PAPER_TABLE[(posture, point)]
+                cells.append(f"{m:.2f} ± {h:.2f}" if key != "passive" else "")
+            if key == "passive":
+                cells += ["", "", f"{r['seconds_per_solve']:.2f} (per step)", f"{r['wall_s']:.0f}"]
+            else:
+                cells += [f"{r['eq25_mean_mm']:.2f} / {r['eq25_max_mm']:.2f}",
+                          f"{r['solves']:,} ({r['solves_per_step_mean']:.1f}, {r['solves_per_step_max']})",
+                          f"{r['seconds_per_solve']:.2f}", f"{r['wall_s']:.0f} ({r['ranks']} rank{'s' if r['ranks'] > 1 else ''})"]
+            out.append("| " + " | ".join(cells) + " |")
+    return "\n".join(out)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
@@ -363,6 +391,7 @@ def main():
     p.add_argument("--no-run", action="store_true", help="only summarise, plot and check existing runs")
     p.add_argument("--check", action="store_true")
     p.add_argument("--plot", action="store_true")
+    p.add_argument("--tables", action="store_true", help="print the markdown table of doc/tongue.md")
     args = p.parse_args()
     only = set(filter(None, args.only.split(",")))
     directories, rows = {}, []
@@ -384,6 +413,8 @@ def main():
         w.writeheader()
         w.writerows(rows)
     print("wrote", args.table)
+    if args.tables:
+        print(tables(rows))
     if args.plot:
         plot(args.glossa, directories, rows)
     if args.check:

@@ -120,7 +120,7 @@ public:
 
   CandidateSolve solve(const std::vector<double> &inputs) override {
     sim_.applyControlInputs(inputs);
-    last_.assign(*sim_.committed_);
+    last_.assign(*sim_.stepStart_);
     const Trial &trial = *sim_.trial_;
     Attempt a = sim_.solveStep(trial.time, trial.dt, last_, true);
     CandidateSolve out;
@@ -260,6 +260,9 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                 comm->getSize(), incompressibility.get<std::string>("method").c_str(), scene.volumetric.kappa() / mu);
 
   committed_ = std::make_unique<StepState>(assembler_->ownedMap(), assembler_->numLocalElements());
+  stepStart_ = std::make_unique<StepState>(*committed_);
+  previous_ = std::make_unique<StepState>(*committed_);
+  extrapolate_ = D.sublist("Time").get<std::string>("predictor") == "linear extrapolation";
   const assembly::MuscleFields initialMuscle = assembler_->updateMuscleHistory(committed_->u);
   std::vector<double> initialInputs;
   for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g)
@@ -370,7 +373,16 @@ Eigen::Matrix3Xd Simulation::controlPointDisplacement(const StepState &state) co
 
 bool Simulation::attemptStep() {
   const double dt = steps_->nextStep(t_);
-  trial_ = std::make_unique<Trial>(t_ + dt, dt, model_->assemblySeconds(), *committed_);
+  // The start of this step's solves: the committed state, or its linear extrapolation from the
+  // step before (the multipliers too, so the Uzawa loop starts nearer its fixed point).
+  stepStart_->assign(*committed_);
+  if (extrapolate_ && previousDt_ > 0.0) {
+    const double ratio = dt / previousDt_;
+    stepStart_->u.update(-ratio, previous_->u, 1.0 + ratio);
+    for (std::size_t e = 0; e < stepStart_->lambda.size(); ++e)
+      stepStart_->lambda[e] += ratio * (committed_->lambda[e] - previous_->lambda[e]);
+  }
+  trial_ = std::make_unique<Trial>(t_ + dt, dt, model_->assemblySeconds(), *stepStart_);
   if (talk_) std::printf("step %d  t = %.6g  dt = %.3g\n", stepNumber_ + 1, trial_->time, dt);
   if (driver_) controlledStep(*trial_);
   else trial_->attempt = solveStep(trial_->time, dt, trial_->state, false);
@@ -397,6 +409,10 @@ bool Simulation::rollBack() {
 
 void Simulation::commitTrial() {
   const Trial &trial = *trial_;
+  if (extrapolate_) {
+    previous_->assign(*committed_);
+    previousDt_ = trial.dt;
+  }
   committed_->assign(trial.state);
   t_ = trial.time;
   ++stepNumber_;

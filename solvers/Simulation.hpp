@@ -122,6 +122,11 @@ private:
   nlohmann::json doc_;
 
   std::unique_ptr<StepState> committed_;
+  // Time/predictor = linear extrapolation: the committed state before the last one and the step
+  // between them, and the state every solve of the step being attempted starts from.
+  bool extrapolate_ = false;
+  std::unique_ptr<StepState> previous_, stepStart_;
+  double previousDt_ = 0.0;
   std::vector<double> committedStretch_; // every group's mean fibre stretch (pruning)
   double t_ = 0.0;
   int stepNumber_ = 0;

@@ -40,6 +40,7 @@ struct TraceRow {
   double time;
   std::string point;
   double u[3];
+  double d[3]; // from the imaged position (u where the file has no dx, dy, dz)
 };
 
 inline std::vector<TraceRow> readTraces(const std::filesystem::path &file) {
@@ -58,6 +59,7 @@ inline std::vector<TraceRow> readTraces(const std::filesystem::path &file) {
       std::getline(s, cell, ',');
       v = std::stod(cell);
     }
+    for (int c = 0; c < 3; ++c) r.d[c] = std::getline(s, cell, ',') ? std::stod(cell) : r.u[c];
     rows.push_back(r);
   }
   return rows;

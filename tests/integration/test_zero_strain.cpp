@@ -16,6 +16,8 @@
 #include "RunDeck.hpp"
 #include "app/ZeroStrainCommand.hpp"
 #include "mesh/MeshFile.hpp"
+#include "model/SceneFactory.hpp"
+#include "solvers/ControlSection.hpp"
 
 namespace glossa::test {
 namespace {
@@ -100,6 +102,51 @@ TEST(ZeroStrain, InverseReturnsTheImagedGeometryTenTimesCloserThanTheApproximati
   EXPECT_GT(da.max, 1e-4);
   RecordProperty("approximate_max_um", std::to_string(da.max * 1e6));
   RecordProperty("inverse_max_um", std::to_string(db.max * 1e6));
+}
+
+// On the zero-strain configuration the traces measure each point twice: u from X0 and
+// d = X0 + u - X_img from where it was imaged, and the control goals are the imaged positions.
+// Gravity on the stored inverse X0 (s8_1_inverse.xml) returns the imaged geometry to 3.6 um
+// (the test above checks the same file independently), so d must vanish at the end while u is
+// millimetres; at t = 0, d is X0 - X_img, millimetres too.
+TEST(ZeroStrain, TracesAndControlGoalsMeasureFromTheImagedGeometry) {
+  const auto dir = scratchDirectory("zero_strain_traces");
+  std::filesystem::remove_all(dir);
+  const auto summary = runDeck(inputPath("paper/s8_1_inverse.xml"), {"Time/step size=1", "Output/fields=false"}, dir);
+  ASSERT_TRUE(summary.value("converged", false));
+  const auto rows = readTraces(dir / "traces.csv");
+  const double mesh = 5.70e-3; // the mean element edge of the imaged tongue (the test above)
+  int points = 0;
+  for (const auto &r : rows) {
+    const Eigen::Vector3d u(r.u[0], r.u[1], r.u[2]), d(r.d[0], r.d[1], r.d[2]);
+    if (r.time == 0.0) {
+      EXPECT_EQ(u.norm(), 0.0) << r.point;
+      if (r.point == "P_A") {
+        EXPECT_GT(d.norm(), 1e-3) << "X0 - X_img at the tip";
+      }
+    } else {
+      ++points;
+      EXPECT_LE(d.norm(), 1e-3 * mesh) << r.point << " at t = " << r.time;
+      if (r.point == "P_A") {
+        EXPECT_GT(u.norm(), 4e-3) << "gravity moves the tip from X0 by millimetres";
+      }
+    }
+  }
+  EXPECT_EQ(points, 12); // P_A, P_P and C01-C10 at t = 1
+
+  // The controlled deck on the same X0: its goals are the imaged nodes of tongue.node.
+  const auto schema = app::deckSchema();
+  auto deck = io::Deck::fromFile(inputPath("paper/s8_5_gradient_upright.xml"));
+  deck.validate(schema);
+  const model::Scene scene = model::buildScene(deck, 8.75);
+  const solvers::ControlSetup control = solvers::buildControl(deck, scene);
+  const auto imaged = mesh::readMeshFile(inputPath("tongue/tongue.node")).mesh.nodes;
+  ASSERT_EQ(control.pointNodes.size(), 10u);
+  for (std::size_t p = 0; p < control.pointNodes.size(); ++p) {
+    const auto n = static_cast<std::size_t>(control.pointNodes[p]);
+    EXPECT_EQ((control.goals.col(static_cast<Eigen::Index>(p)) - imaged[n]).norm(), 0.0) << control.pointNames[p];
+    EXPECT_GT((scene.mesh.nodes[n] - imaged[n]).norm(), 1e-5) << control.pointNames[p] << " (X0 is not X_img)";
+  }
 }
 
 }  // namespace
