@@ -32,7 +32,8 @@ Eigen::Matrix3Xd ControlDriver::positions(const Eigen::Matrix3Xd &pointDisplacem
 std::vector<int> ControlDriver::evaluatedGroups(const std::vector<double> &committedStretch) const {
   const auto &p = setup_.parameters;
   const auto &controlled = setup_.controlled;
-  // Pruning: the reference stretch is 1 (no pre-strain).
+  // Pruning against the stretch in the reference configuration, 1 (F = I there; with a
+  // zero-strain configuration as the reference this is §6.1's value on X0).
   std::vector<double> stretch, reference;
   std::vector<bool> always;
   const auto alwaysMask = p.alwaysEvaluatedMask(setup_.groupNames);
