@@ -1,6 +1,6 @@
 # Wraps Debian 12's Trilinos 13.2 into one INTERFACE target, glossa::trilinos.
 # Its exported targets carry link dependencies but neither include directories nor MPI
-# (../shared/TRILINOS-NOTES.md), so the include paths go in here as SYSTEM to keep
+# (doc/developing.md), so the include paths go in here as SYSTEM to keep
 # Trilinos' own warnings out of ours.
 find_package(MPI REQUIRED COMPONENTS CXX)
 find_package(Trilinos 13.2 REQUIRED COMPONENTS

@@ -1,5 +1,5 @@
 #pragma once
-// The control objective of eq. 25 (paper §6.1, DESIGN.md §1):
+// The control objective of eq. 25 (paper §6.1, doc/control.md):
 //
 //   J = sum_p || w_p (x_p - xbar_p) ||_2  =  sum_p w_p ||x_p - xbar_p||_2   (w_p >= 0)
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Muscle pruning (paper §6.1, DESIGN.md §1): only muscle groups in overall tension are searched
+// Muscle pruning (paper §6.1, doc/control.md): only muscle groups in overall tension are searched
 // by the GA; contracting a slack group cannot pull the tissue back, so the others keep u = 0.
 // A group's state is its length-weighted average fibre stretch
 //

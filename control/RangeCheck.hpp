@@ -1,6 +1,6 @@
 #pragma once
 // Validation of plain parameter structs: an out-of-range value is an error that names the field
-// and its allowed range (STYLE.md: decks validate, never guess). Internal to control/.
+// and its allowed range (doc/developing.md: decks validate, never guess). Internal to control/.
 
 #include <cmath>
 #include <limits>
