@@ -14,6 +14,14 @@ namespace glossa::control {
 // on the tangent's sensitivities (GaussNewtonController.hpp).
 enum class ControllerType { geneticAlgorithm, gradient };
 
+// The GA's prediction seed (paper §6.1: generation 0 holds "a prediction for the solution based on
+// previous steps"). extrapolation: 2 u_{k-1} - u_{k-2} of the last two found steps (InputPrediction.hpp),
+// so a search on a rising or falling load starts where it is heading. gaussNewtonStep: one
+// bounded, linearised step from the previous best (the gradient controller's first iteration:
+// one full solve and one sensitivity), which also sees a load that starts to change, e.g. at the
+// onset of a breath, where extrapolating from rest predicts rest.
+enum class PredictionSeed { none, extrapolation, gaussNewtonStep };
+
 struct ControllerParameters {
   ControllerType type = ControllerType::geneticAlgorithm;
   GeneticAlgorithmParameters ga;
@@ -22,8 +30,15 @@ struct ControllerParameters {
   double pruningTolerance = 0.0;             // lambdabar_M must exceed lambdabar_M^0 by more, [0, inf)
   std::vector<std::string> alwaysEvaluated;  // group names never pruned (the genioglossus parts)
   bool keepActiveGroups = true;              // a group with u > 0 at the previous step is never pruned
-  bool seedWithPreviousBest = true;
-  bool verifySensitivities = false;          // gradient: check S against differences of full solves          // the previous step's best joins generation 0
+  bool seedWithPreviousBest = true;          // the previous step's best joins generation 0
+  // GA: a prediction joins generation 0 after the previous best (PredictionSeed).
+  PredictionSeed predictionSeed = PredictionSeed::none;
+  // epsilon [m]: the price of activation, so that among inputs that hold the points equally well
+  // the one with the least activation wins (redundant muscles make eq. 25's minimiser a valley).
+  // The GA ranks by eq. 25 + epsilon sum_M u_M^2; the gradient controller minimises
+  // sum_p |r_p|^2 + epsilon^2 sum_M u_M^2 (the residual stacked with epsilon u). 0: eq. 25 alone.
+  double effortWeight = 0.0;
+  bool verifySensitivities = false;          // gradient: check S against differences of full solves
 
   // Throws std::invalid_argument naming the bad field ("ga.populationSize", "pruningTolerance",
   // "alwaysEvaluated[2]") and its allowed range.

@@ -9,6 +9,8 @@
 
 #include "control/ElitistGeneticAlgorithm.hpp"
 #include "control/GaussNewtonController.hpp"
+#include "control/BoundedLeastSquares.hpp"
+#include "control/InputPrediction.hpp"
 #include "control/MusclePruning.hpp"
 
 namespace glossa::solvers {
@@ -20,6 +22,7 @@ struct ControlDriver::Search {
   ControlStepResult result;
   double rank = std::numeric_limits<double>::infinity();
   long index = -1; // the winner's position in the order of evaluation (ties among control groups)
+  std::size_t predictionSolves = 0; // full solves made for the GA's seeds, outside the GA
 };
 
 ControlDriver::ControlDriver(ControlDriverSetup setup, ControlPlant &plant, const ControlGroups &groups)
@@ -71,11 +74,21 @@ control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const s
     e.ok = true;
     e.objective = v.total;
     const Eigen::Matrix3Xd offset = x - setup_.goals;
-    e.residual = Eigen::Map<const Eigen::VectorXd>(offset.data(), offset.size());
+    const auto &evaluated = search.result.evaluated;
+    const double epsilon = rankByObjective ? 0.0 : setup_.parameters.effortWeight;
+    const auto points = static_cast<Eigen::Index>(offset.size());
+    // The gradient controller's residual: the weighted offsets, then epsilon u per evaluated group.
+    e.residual.resize(points + (epsilon > 0.0 ? static_cast<Eigen::Index>(evaluated.size()) : 0));
+    e.residual.head(points) = Eigen::Map<const Eigen::VectorXd>(offset.data(), points);
     for (Eigen::Index p = 0; p < x.cols(); ++p) e.residual.segment<3>(3 * p) *= setup_.weights(p);
+    if (epsilon > 0.0)
+      for (std::size_t i = 0; i < evaluated.size(); ++i)
+        e.residual(points + static_cast<Eigen::Index>(i)) = epsilon * inputs[evaluated[i]];
     errors = v.distance;
   }
-  const double rank = !e.ok ? e.objective : rankByObjective ? e.objective : e.residual.squaredNorm();
+  const double rank = !e.ok              ? e.objective
+                      : rankByObjective ? e.objective + effort(inputs)
+                                        : e.residual.squaredNorm();
   if (rank < search.rank) {
     search.rank = rank;
     search.index = index;
@@ -103,6 +116,7 @@ ControlStepResult ControlDriver::step(int committedSteps, const std::vector<doub
 
   ControlStepResult &result = search.result;
   if (!result.found()) return result;
+  olderBest_ = previousBest_;
   previousBest_.assign(setup_.controlled.size(), 0.0);
   for (std::size_t i = 0; i < setup_.controlled.size(); ++i) previousBest_[i] = result.inputs[setup_.controlled[i]];
   return result;
@@ -118,26 +132,75 @@ void ControlDriver::searchGenetic(Search &search, int committedSteps, const std:
     // objective, each taken from the group that solved it.
     std::vector<double> values(genomes.size(), 0.0);
     for (std::size_t i = 0; i < genomes.size(); ++i)
-      if (i % groupCount == mine)
-        values[i] = solveCandidate(search,
-                                   control::inputsFromGenome(evaluated, genomes[i], setup_.groupNames.size()), true,
-                                   evaluatedSoFar + static_cast<long>(i))
-                        .objective;
+      if (i % groupCount == mine) {
+        const auto inputs = control::inputsFromGenome(evaluated, genomes[i], setup_.groupNames.size());
+        values[i] = solveCandidate(search, inputs, true, evaluatedSoFar + static_cast<long>(i)).objective +
+                    effort(inputs); // +inf stays +inf for a failed solve
+      }
     evaluatedSoFar += static_cast<long>(genomes.size());
     return groupCount == 1 ? values : groups_.sumOfGroupRoots(values);
   };
   control::GeneticAlgorithmParameters gaParameters = setup_.parameters.ga;
   gaParameters.seed += static_cast<std::uint64_t>(committedSteps);
   const control::ElitistGeneticAlgorithm ga(gaParameters);
-  std::vector<control::Genome> seeds;
-  if (setup_.parameters.seedWithPreviousBest && !previousBest_.empty())
-    seeds.push_back(control::genomeFromInputs(evaluated, previousInputs));
-  const auto gaResult = ga.minimise(evaluated.size(), evaluate, seeds);
+  const auto gaResult = ga.minimise(evaluated.size(), evaluate, geneticSeeds(search, previousInputs));
   // The GA runs on every rank alike: its counts are the same in every group.
-  search.result.candidates = gaResult.evaluations;
+  search.result.candidates = gaResult.evaluations + search.predictionSolves;
   search.result.generations = gaResult.generations;
   search.result.stop = control::toString(gaResult.stopReason);
   if (groupCount > 1) shareWinner(search);
+}
+
+double ControlDriver::effort(const std::vector<double> &inputs) const {
+  double sum = 0.0;
+  for (double u : inputs) sum += u * u;
+  return setup_.parameters.effortWeight * sum;
+}
+
+std::vector<control::Genome> ControlDriver::geneticSeeds(Search &search, const std::vector<double> &previousInputs) {
+  const auto &p = setup_.parameters;
+  const std::vector<int> &evaluated = search.result.evaluated;
+  std::vector<control::Genome> seeds;
+  if (p.seedWithPreviousBest && !previousBest_.empty()) seeds.push_back(control::genomeFromInputs(evaluated, previousInputs));
+  if (p.predictionSeed == control::PredictionSeed::extrapolation && !olderBest_.empty()) {
+    const auto prediction = control::linearPrediction(previousBest_, olderBest_, p.ga.geneType);
+    std::vector<double> predicted(setup_.groupNames.size(), 0.0);
+    for (std::size_t i = 0; i < setup_.controlled.size(); ++i) predicted[setup_.controlled[i]] = prediction[i];
+    seeds.push_back(control::genomeFromInputs(evaluated, predicted));
+  }
+  if (p.predictionSeed == control::PredictionSeed::gaussNewtonStep && !evaluated.empty()) {
+    control::Genome g = control::genomeFromInputs(evaluated, gaussNewtonPrediction(search, previousInputs));
+    if (p.ga.geneType == control::GeneType::binary)
+      for (double &u : g) u = u < 0.5 ? 0.0 : 1.0;
+    seeds.push_back(std::move(g));
+  }
+  return seeds;
+}
+
+std::vector<double> ControlDriver::gaussNewtonPrediction(Search &search, const std::vector<double> &from) {
+  // Ranked like the GA's candidates and solved ahead of them (index -1): every control group
+  // solves it alike, so it is also the group-0 winner among equals.
+  const control::ControlEvaluation e = solveCandidate(search, from, true, -1);
+  ++search.predictionSolves;
+  if (!e.ok || search.result.inputs != from) return from; // no state to linearise about
+  const std::vector<int> &evaluated = search.result.evaluated;
+  const auto n = static_cast<Eigen::Index>(evaluated.size());
+  const double epsilon = setup_.parameters.effortWeight;
+  Eigen::VectorXd u(n);
+  for (Eigen::Index i = 0; i < n; ++i) u(i) = from[evaluated[static_cast<std::size_t>(i)]];
+  // The gradient controller's residual and its sensitivity (effort rows epsilon u included).
+  Eigen::VectorXd r(e.residual.size() + (epsilon > 0.0 ? n : 0));
+  r.head(e.residual.size()) = e.residual;
+  if (epsilon > 0.0) r.tail(n) = epsilon * u;
+  const Eigen::MatrixXd S = weightedSensitivity(search);
+  ++search.result.sensitivities;
+  const double rho = setup_.parameters.gradient.damping * (S.transpose() * S).diagonal().maxCoeff() +
+                     std::numeric_limits<double>::min();
+  const Eigen::VectorXd du = control::solveBoundedLeastSquares(S, -r, -u, Eigen::VectorXd::Ones(n) - u, rho).x;
+  std::vector<double> predicted = from;
+  for (Eigen::Index i = 0; i < n; ++i)
+    predicted[evaluated[static_cast<std::size_t>(i)]] = std::clamp(u(i) + du(i), 0.0, 1.0);
+  return predicted;
 }
 
 void ControlDriver::shareWinner(Search &search) {
@@ -200,8 +263,13 @@ Eigen::MatrixXd ControlDriver::weightedSensitivity(Search &search) {
     result.sensitivityCheck = std::max(result.sensitivityCheck, differenceCheck(s.dxdu, search));
     if (setup_.talk) std::printf("  sensitivity check: max |S - S_fd| / max |S_fd| = %.3e\n", result.sensitivityCheck);
   }
-  Eigen::MatrixXd S = s.dxdu;
+  const double epsilon = setup_.parameters.effortWeight;
+  const auto n = static_cast<Eigen::Index>(result.evaluated.size());
+  Eigen::MatrixXd S(s.dxdu.rows() + (epsilon > 0.0 ? n : 0), s.dxdu.cols());
+  S.topRows(s.dxdu.rows()) = s.dxdu;
   for (Eigen::Index p = 0; p < setup_.weights.size(); ++p) S.middleRows<3>(3 * p) *= setup_.weights(p);
+  // d(epsilon u)/du of the effort rows of the residual (solveCandidate).
+  if (epsilon > 0.0) S.bottomRows(n) = epsilon * Eigen::MatrixXd::Identity(n, n);
   return S;
 }
 

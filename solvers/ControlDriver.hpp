@@ -63,12 +63,20 @@ private:
   Eigen::MatrixXd weightedSensitivity(Search &search);
   double differenceCheck(const Eigen::MatrixXd &dxdu, const Search &search);
   void shareWinner(Search &search);
+  // epsilon sum_M u_M^2 (ControllerParameters::effortWeight).
+  double effort(const std::vector<double> &inputs) const;
+  // The GA's seeds: the previous step's best and the prediction the parameters ask for.
+  std::vector<control::Genome> geneticSeeds(Search &search, const std::vector<double> &previousInputs);
+  // The inputs one bounded Gauss-Newton step from `from`, linearised there (its solve is a
+  // candidate like any other).
+  std::vector<double> gaussNewtonPrediction(Search &search, const std::vector<double> &from);
 
   ControlDriverSetup setup_;
   ControlPlant &plant_;
   const ControlGroups &groups_;
   control::ControlObjective objective_;
   control::Genome previousBest_; // per controlled group: the inputs of the last found step
+  control::Genome olderBest_;    // the same for the found step before it (the prediction's second point)
 };
 
 } // namespace glossa::solvers

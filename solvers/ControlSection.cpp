@@ -52,6 +52,17 @@ ParameterList controlParameters() {
   io::declareDouble(p, "mutation sigma", 0.1, "", "continuous genes: Gaussian mutation width", io::Range::positive());
   io::declareInt(p, "stagnation generations", 5, "stop after this many generations without improvement",
                  io::Range::closed(1, 100000));
+  io::declareString(p, "prediction seed", "none",
+                    "genetic algorithm: a prediction that joins generation 0 after the previous best: none; "
+                    "linear extrapolation, 2 u(k-1) - u(k-2) of the last two steps' inputs clipped to [0, 1]; "
+                    "Gauss-Newton step, one bounded linearised step from the previous best (one solve and one "
+                    "sensitivity more per step)",
+                    {"none", "linear extrapolation", "Gauss-Newton step"});
+  io::declareDouble(p, "effort weight", 0.0, "m",
+                    "the price of activation: the GA ranks candidates by eq. 25 + w sum u^2, the gradient "
+                    "controller minimises sum |r_p|^2 + w^2 sum u^2; among inputs that hold the points "
+                    "equally well the least activation wins (0: eq. 25 alone)",
+                    io::Range::nonNegative());
   io::declareDouble(p, "objective tolerance", 0.0, "m", "stop once the objective (eq. 25) is below this",
                     io::Range::nonNegative());
   io::declareInt(p, "gradient iterations", 4, "gradient: Gauss-Newton iterations (sensitivity solves) per step",
@@ -112,6 +123,11 @@ ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
   p.type = c.get<std::string>("type") == "gradient" ? control::ControllerType::gradient
                                                     : control::ControllerType::geneticAlgorithm;
   p.verifySensitivities = c.get<bool>("verify sensitivities");
+  const std::string prediction = c.get<std::string>("prediction seed");
+  p.predictionSeed = prediction == "linear extrapolation" ? control::PredictionSeed::extrapolation
+                     : prediction == "Gauss-Newton step"  ? control::PredictionSeed::gaussNewtonStep
+                                                          : control::PredictionSeed::none;
+  p.effortWeight = c.get<double>("effort weight");
   p.gradient.maxIterations = c.get<int>("gradient iterations");
   p.gradient.maxBacktracks = c.get<int>("gradient backtracks");
   p.gradient.stepTolerance = c.get<double>("gradient step tolerance");

@@ -23,6 +23,7 @@ public:
   // The sensitivity reported is this times the true one (1: exact).
   double sensitivityScale = 1.0;
   int solves = 0;
+  std::vector<std::vector<double>> solved; // the inputs of every solve, in order
 
   Eigen::Matrix3Xd displacement(const std::vector<double> &inputs) const {
     const Eigen::VectorXd d = A_ * Eigen::Map<const Eigen::VectorXd>(inputs.data(), static_cast<Eigen::Index>(inputs.size()));
@@ -31,6 +32,7 @@ public:
 
   solvers::CandidateSolve solve(const std::vector<double> &inputs) override {
     ++solves;
+    solved.push_back(inputs);
     last_ = inputs;
     solvers::CandidateSolve out;
     out.ok = !fails(inputs);

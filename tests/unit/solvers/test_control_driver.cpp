@@ -4,8 +4,11 @@
 // and the finite-difference check of the sensitivities.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include <Eigen/Cholesky>
 
 #include "LinearPlant.hpp"
 #include "solvers/ControlDriver.hpp"
@@ -175,4 +178,127 @@ TEST(ControlDriver, SensitivityCheckAgainstDifferencesOfSolves) {
   wrong.sensitivityScale = 1.5; // S = 1.5 S_fd: max |S - S_fd| / max |S_fd| = 0.5
   ControlDriver driver(s, wrong, one);
   EXPECT_NEAR(driver.step(0, kStretched).sensitivityCheck, 0.5, 1e-9);
+}
+
+// Effort (ControllerParameters::effortWeight): with two muscles that move the points alike, eq. 25
+// has a valley of minimisers (u_a + u_b = const); the price of activation picks the one with the
+// least sum of squares. The gradient controller's minimiser of |A u - g|^2 + eps^2 |u|^2 on a
+// linear plant is the ridge solution (A^T A + eps^2 I)^-1 A^T g, reached in one Gauss-Newton step.
+TEST(ControlDriver, EffortWeightPicksTheLeastActivationAmongRedundantMuscles) {
+  Eigen::MatrixXd A = plantMatrix();
+  A.col(1) = A.col(0); // a and b redundant
+  const std::vector<double> pull{0.5, 0.3, 0.45, 0.15};
+  auto s = setup(glossa::control::ControllerType::gradient, pull);
+  s.goals = s.referencePositions + LinearPlant(A).displacement(pull);
+  s.parameters.gradient.damping = 0.0;
+  s.parameters.effortWeight = 1e-6; // 1 um per unit input, against offsets of about 0.1 mm
+  const Eigen::Matrix3Xd g = s.goals - s.referencePositions;
+  Eigen::VectorXd b = Eigen::Map<const Eigen::VectorXd>(g.data(), g.size());
+  Eigen::MatrixXd WA = A; // the residual is weighted per point: W (A u - g)
+  for (Eigen::Index p = 0; p < 2; ++p) {
+    WA.middleRows<3>(3 * p) *= s.weights(p);
+    b.segment<3>(3 * p) *= s.weights(p);
+  }
+  const double e2 = s.parameters.effortWeight * s.parameters.effortWeight;
+  const Eigen::VectorXd ridge =
+      (WA.transpose() * WA + e2 * Eigen::MatrixXd::Identity(kGroups, kGroups)).ldlt().solve(WA.transpose() * b);
+  ASSERT_NEAR(ridge(0), ridge(1), 1e-9); // the split is even: a and b share the pull of 0.8
+  ASSERT_NEAR(ridge(0), 0.4, 1e-3);
+  LinearPlant plant(A);
+  SingleControlGroup one;
+  ControlDriver driver(s, plant, one);
+  const ControlStepResult r = driver.step(0, kStretched);
+  ASSERT_TRUE(r.found());
+  for (Eigen::Index m = 0; m < kGroups; ++m) EXPECT_NEAR(r.inputs[m], ridge(m), 1e-9) << m;
+  // eq. 25 is reported without the effort.
+  const Eigen::Matrix3Xd x = s.referencePositions + plant.displacement(r.inputs);
+  double eq25 = 0.0;
+  for (Eigen::Index p = 0; p < x.cols(); ++p) eq25 += s.weights(p) * (x.col(p) - s.goals.col(p)).norm();
+  EXPECT_NEAR(r.objective, eq25, 1e-15);
+}
+
+// The GA ranks by eq. 25 + eps sum u^2: its winner is the brute-force best of that sum over the
+// binary inputs, here not the best of eq. 25 alone.
+TEST(ControlDriver, GeneticAlgorithmRanksByObjectivePlusEffort) {
+  auto s = setup(glossa::control::ControllerType::geneticAlgorithm, {0.9, 0.1, 0.8, 0.2});
+  s.parameters.effortWeight = 1e-4;
+  const auto byObjective = binaryInputsByObjective(s);
+  auto fitness = [&](const std::vector<double> &u) {
+    double sum = 0.0;
+    for (double v : u) sum += v * v;
+    return objectiveOf(s, u) + s.parameters.effortWeight * sum;
+  };
+  auto byFitness = byObjective;
+  std::stable_sort(byFitness.begin(), byFitness.end(),
+                   [&](const auto &a, const auto &b) { return fitness(a) < fitness(b); });
+  ASSERT_NE(byFitness[0], byObjective[0]); // the effort changes the winner
+  LinearPlant plant(plantMatrix());
+  SingleControlGroup one;
+  ControlDriver driver(s, plant, one);
+  const ControlStepResult r = driver.step(0, kStretched);
+  ASSERT_TRUE(r.found());
+  EXPECT_EQ(r.inputs, byFitness[0]);
+  EXPECT_EQ(plant.kept(), byFitness[0]);
+  EXPECT_NEAR(r.objective, objectiveOf(s, byFitness[0]), 1e-15); // reported: eq. 25 alone
+}
+
+// Seed with prediction: from the third step on, generation 0 holds 2 u_{k-1} - u_{k-2} (clipped).
+TEST(ControlDriver, GeneticAlgorithmSeedsTheLinearPrediction) {
+  auto s = setup(glossa::control::ControllerType::geneticAlgorithm, {0.9, 0.1, 0.8, 0.2});
+  s.parameters.ga.geneType = glossa::control::GeneType::continuous;
+  s.parameters.ga.generations = 3;
+  s.parameters.ga.populationSize = 10;
+  s.parameters.predictionSeed = glossa::control::PredictionSeed::extrapolation;
+  LinearPlant plant(plantMatrix());
+  SingleControlGroup one;
+  ControlDriver driver(s, plant, one);
+  const auto first = driver.step(0, kStretched).inputs;
+  const auto second = driver.step(1, kStretched).inputs;
+  std::vector<double> prediction(kGroups);
+  for (int m = 0; m < kGroups; ++m) prediction[m] = std::clamp(2.0 * second[m] - first[m], 0.0, 1.0);
+  ASSERT_NE(prediction, second); // the two steps differ, so the prediction is a genome of its own
+  const std::size_t before = plant.solved.size();
+  driver.step(2, kStretched);
+  // Generation 0 is solved first: the previous best, then the prediction.
+  ASSERT_GE(plant.solved.size(), before + 2);
+  EXPECT_EQ(plant.solved[before], second);
+  for (int m = 0; m < kGroups; ++m) EXPECT_NEAR(plant.solved[before + 1][m], prediction[m], 1e-15) << m;
+
+  // Without it, the second genome solved is a corner (all off).
+  s.parameters.predictionSeed = glossa::control::PredictionSeed::none;
+  LinearPlant plain(plantMatrix());
+  ControlDriver without(s, plain, one);
+  without.step(0, kStretched);
+  without.step(1, kStretched);
+  const std::size_t at = plain.solved.size();
+  without.step(2, kStretched);
+  EXPECT_EQ(plain.solved[at + 1], std::vector<double>(kGroups, 0.0));
+}
+
+// Gauss-Newton step seed: on a linear plant one bounded linearised step from the previous best is
+// exact, so generation 0 alone (generations = 1) already holds the inputs that put the points on
+// their goals; without the seed it does not. One solve and one sensitivity more per step.
+TEST(ControlDriver, GeneticAlgorithmSeedsAGaussNewtonStep) {
+  const std::vector<double> uStar{0.3, 0.6, 0.45, 0.15};
+  auto s = setup(glossa::control::ControllerType::geneticAlgorithm, uStar);
+  s.parameters.ga.geneType = glossa::control::GeneType::continuous;
+  s.parameters.ga.generations = 1;
+  s.parameters.ga.populationSize = 8;
+  s.parameters.gradient.damping = 0.0;
+  s.parameters.predictionSeed = glossa::control::PredictionSeed::gaussNewtonStep;
+  SingleControlGroup one;
+  LinearPlant plant(plantMatrix());
+  ControlDriver driver(s, plant, one);
+  const ControlStepResult r = driver.step(0, kStretched);
+  ASSERT_TRUE(r.found());
+  for (int m = 0; m < kGroups; ++m) EXPECT_NEAR(r.inputs[m], uStar[m], 1e-9) << m;
+  EXPECT_LT(r.objective, 1e-12);
+  EXPECT_EQ(r.sensitivities, 1);
+  EXPECT_EQ(r.candidates, static_cast<std::size_t>(plant.solves)); // the prediction's solve counted
+  EXPECT_EQ(plant.kept(), r.inputs);
+
+  s.parameters.predictionSeed = glossa::control::PredictionSeed::none;
+  LinearPlant plain(plantMatrix());
+  ControlDriver without(s, plain, one);
+  EXPECT_GT(without.step(0, kStretched).objective, 1e-6);
 }
