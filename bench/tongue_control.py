@@ -219,6 +219,12 @@ def check(directories, rows, results):
                    f"{posture}: gradient eq. 25 mean {g['eq25_mean_mm']:.3f} mm <= GA's {ga['eq25_mean_mm']:.3f} mm")
             expect(5 * g["solves"] <= ga["solves"],
                    f"{posture}: gradient solves {g['solves']} at least 5x fewer than the GA's {ga['solves']}")
+    # The run-time targets, reported (times on a shared machine are not asserted).
+    for r in rows:
+        limit = {"GA": 30, "gradient": 10}.get(r["controller"])
+        if limit and not r["run"].startswith("sweep") and "binary" not in r["run"]:
+            results.append(f"info {r['run']}: {r['wall_s'] / 60:.1f} min on {r['ranks']} rank(s) "
+                           f"(target {limit} min, {'met' if r['wall_s'] <= 60 * limit else 'not met'})")
     means = {}
     for name in [r["run"] for r in rows if r["controller"] != "passive" and "binary" not in r["run"]]:
         ffmr = over_cycles(ffmr_percent(directories[name]))

@@ -8,4 +8,5 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$(nproc)"
 cd build
 # -LE full: the full-length runs (label full) are benchmarks, run on demand with ctest -L full.
-ctest --output-on-failure --timeout 1200 -j 1 -LE full
+# -j: as many tests at once as there are cores; the MPI tests take 2 (PROCESSORS).
+ctest --output-on-failure --timeout 1200 -j "$(nproc)" -LE full

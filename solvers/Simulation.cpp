@@ -471,6 +471,8 @@ nlohmann::json Simulation::controlJson(const Trial &trial) {
   c["candidates"] = outcome.candidates;
   if (ga) {
     c["generations"] = outcome.generations;
+    // The Gauss-Newton step of the prediction seed (Control/prediction seed).
+    if (outcome.sensitivities > 0) c["sensitivity_evaluations"] = outcome.sensitivities;
   } else {
     c["iterations"] = outcome.iterations;
     c["sensitivity_evaluations"] = outcome.sensitivities;

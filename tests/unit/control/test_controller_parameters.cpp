@@ -54,6 +54,7 @@ TEST(ControllerParameters, EachBadFieldIsNamedWithItsRange) {
   expectError([nan](auto &c) { c.ga.minImprovement = nan; }, "ga.minImprovement", "[0, inf)");
   expectError([](auto &c) { c.ga.objectiveTolerance = -1e-3; }, "ga.objectiveTolerance", "[0, inf)");
   expectError([](auto &c) { c.pruningTolerance = -0.01; }, "pruningTolerance = -0.01", "[0, inf)");
+  expectError([](auto &c) { c.effortWeight = -1e-4; }, "effortWeight = -0.0001", "[0, inf)");
   expectError([](auto &c) { c.alwaysEvaluated = {"GGa", ""}; }, "alwaysEvaluated[1]", "group name");
   expectError([](auto &c) { c.alwaysEvaluated = {"GGa", "GGa"}; }, "alwaysEvaluated[1]", "twice");
   // The GA's constructor validates too (without the "ga." prefix).
