@@ -8,6 +8,7 @@ packages=(
   libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
   libeigen3-dev libgtest-dev nlohmann-json3-dev hdf5-tools
   python3-numpy python3-matplotlib                 # plots and reference-table scripts (/usr/bin/python3)
+  paraview xvfb                                    # the ParaView reader test (pvpython under xvfb-run)
 )
 missing=()
 for p in "${packages[@]}"; do

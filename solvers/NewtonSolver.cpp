@@ -10,6 +10,7 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include "io/deck/ParameterSpec.hpp"
+#include "solvers/LinearSolveFailure.hpp"
 
 namespace glossa::solvers {
 
@@ -167,7 +168,7 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, 
   } catch (const std::exception &e) {
     // A Krylov breakdown (e.g. CG meeting an indefinite tangent far from equilibrium) fails
     // this solve, not the run: the time stepper cuts back.
-    result.failure = std::string("linear solve failed: ") + e.what();
+    result.failure = "linear solve failed: " + linearSolveFailure(e.what());
     result.iterations = solver->getNumIterations();
     result.elementInverted = !model_->lastStatus().valid;
     return result;

@@ -23,6 +23,7 @@
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/NewtonSolver.hpp"
 #include "solvers/StepRecorder.hpp"
+#include "solvers/StopSignals.hpp"
 #include "solvers/TimeStepping.hpp"
 #include "solvers/MixedBlockSolver.hpp"
 #include "solvers/UzawaLoop.hpp"
@@ -52,6 +53,17 @@ double peakMemoryMegabytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// A summary (as last written) marked as ended by `signal` after its last step.
+void markInterrupted(nlohmann::json &summary, int signal) {
+  const std::size_t steps = summary.contains("steps") ? summary["steps"].size() : 0;
+  const double time = steps > 0 ? summary["steps"].back().value("time", 0.0) : 0.0;
+  summary["running"] = false;
+  summary["converged"] = false;
+  summary["interrupted"] = signalName(signal);
+  summary["failure"] = std::string("interrupted by ") + signalName(signal) + " after step " + std::to_string(steps) +
+                       " (t = " + std::to_string(time) + "); the files hold the steps up to there";
 }
 
 } // namespace
@@ -225,7 +237,14 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
 
   dir_ = options.outputDirectory.empty() ? std::filesystem::path(D.sublist("Output").get<std::string>("directory"))
                                          : options.outputDirectory;
-  if (root_) std::filesystem::create_directories(dir_);
+  if (root_) {
+    std::filesystem::create_directories(dir_);
+    // A rerun into the same directory: an earlier run's files (e.g. activation.csv of a
+    // controlled run, when this one has no muscles) must not stand beside this run's.
+    for (const char *file : {"results.xdmf", "results.h5", "traces.csv", "reactions.csv", "activation.csv",
+                             "controls.csv", "summary.json"})
+      std::filesystem::remove(dir_ / file);
+  }
   comm->barrier();
   recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_);
   every_ = D.sublist("Output").get<int>("every");
@@ -269,6 +288,8 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
     initialInputs.push_back(assembler_->muscleHistory().input(static_cast<int>(g), 0.0));
   recorder_->record(0.0, committed_->u, committed_->lambda, true, initialMuscle, initialInputs);
   writeSummary();
+  installStopSignalHandlers();
+  if (root_) onStopSignal([this](int signal) { writeInterruptedSummary(signal); });
 
   // Neural control (issue 5): per step, the controller picks the inputs of the controlled
   // groups that keep the control points at their goals (eq. 25), each candidate a full step
@@ -297,7 +318,9 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   driver_ = std::make_unique<ControlDriver>(std::move(setup), *plant_, *groups_);
 }
 
-Simulation::~Simulation() = default;
+Simulation::~Simulation() {
+  if (root_) onStopSignal({});
+}
 
 bool Simulation::finished() const { return !(t_ < steps_->endTime() * (1.0 - 1e-12)); }
 
@@ -311,9 +334,24 @@ void Simulation::writeSummary() {
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, peak, Teuchos::outArg(peakMax));
   doc_["peak_memory_mb_per_rank"] = peakMax;
   if (!root_) return;
+  std::lock_guard<std::recursive_mutex> lock(summaryMutex_);
   if (!summary_) summary_ = std::make_unique<io::SummaryWriter>(dir_ / "summary.json");
   summary_->root() = doc_;
+  // The watcher wrote "interrupted" already; a step committed since keeps saying so.
+  if (interruptedBy_ != 0 && !doc_.contains("interrupted")) markInterrupted(summary_->root(), interruptedBy_);
   summary_->write();
+}
+
+void Simulation::writeInterruptedSummary(int signal) {
+  std::lock_guard<std::recursive_mutex> lock(summaryMutex_);
+  interruptedBy_ = signal;
+  if (!summary_) return;
+  markInterrupted(summary_->root(), signal);
+  try {
+    summary_->write();
+  } catch (const std::exception &) {
+    // Nothing more can be done on this thread; the main thread reports output errors.
+  }
 }
 
 Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &state, bool quiet) {
@@ -419,6 +457,7 @@ void Simulation::commitTrial() {
   steps_->accept();
   // The muscle history is committed after the output, whose stresses are those of the converged
   // state: this step's activation with the committed lambda_c it was solved with.
+  std::unique_lock<std::recursive_mutex> output(summaryMutex_);
   record(trial);
   committedStretch_ = trial.attempt.muscle.groupMeanStretch;
   assembler_->muscleHistory().commit();
@@ -427,6 +466,7 @@ void Simulation::commitTrial() {
     std::printf("step %d done  t = %.6g  newton %d  krylov %d  uzawa %d  dilatation error %.2e  [%.2f s]\n", stepNumber_,
                 t_, r.newtonIterations, r.linearIterations, r.solves, r.dilatation.max, since(start_));
   writeSummary();
+  output.unlock();
 }
 
 void Simulation::record(const Trial &trial) {
@@ -508,16 +548,26 @@ void Simulation::finish() {
   doc_["final_time"] = t_;
   doc_["converged"] = converged_;
   doc_["running"] = false;
+  if (stoppedBy_ != 0) doc_["interrupted"] = signalName(stoppedBy_);
   if (!failure_.empty()) doc_["failure"] = failure_;
   writeSummary();
-  if (talk_) {
-    if (converged_) std::printf("glossa: done in %.2f s; results in %s\n", since(start_), dir_.c_str());
-    else std::printf("glossa: stopped: %s; results so far in %s\n", failure_.c_str(), dir_.c_str());
-  }
+  if (converged_ && talk_) std::printf("glossa: done in %.2f s; results in %s\n", since(start_), dir_.c_str());
+  // Why a run stopped goes to stderr, also with --quiet: a script must see it.
+  if (!converged_ && root_) std::fprintf(stderr, "glossa: stopped: %s; results so far in %s\n", failure_.c_str(), dir_.c_str());
 }
 
 nlohmann::json Simulation::run() {
   while (!finished()) {
+    // Every rank agrees to stop at the same step boundary (a signal may reach them apart).
+    int signal = stopSignal(), anySignal = 0;
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, signal, Teuchos::outArg(anySignal));
+    if (anySignal != 0) {
+      stoppedBy_ = anySignal;
+      converged_ = false;
+      failure_ = std::string("interrupted by ") + signalName(anySignal) + " after step " + std::to_string(stepNumber_) +
+                 " (t = " + std::to_string(t_) + ")";
+      break;
+    }
     if (attemptStep()) commitTrial();
     else if (!rollBack()) break;
   }

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -100,6 +101,8 @@ private:
   nlohmann::json controlJson(const Trial &trial);
   void writeSummary();
   void finish();
+  // On the stop-signal watcher thread (rank 0): summary.json says at once why the run ends.
+  void writeInterruptedSummary(int signal);
 
   std::chrono::steady_clock::time_point start_;
   double setupAtStart_, solveAtStart_; // NOX's timers when the run began
@@ -120,6 +123,11 @@ private:
   int every_ = 1;
   std::unique_ptr<io::SummaryWriter> summary_;
   nlohmann::json doc_;
+  // summary_ and interruptedBy_, shared with the signal watcher; held over a commit's whole
+  // output so that an interrupted summary.json never lags a step behind traces.csv.
+  std::recursive_mutex summaryMutex_;
+  int interruptedBy_ = 0;   // the stop signal, once received
+  int stoppedBy_ = 0;       // the signal the run loop stopped for (every rank)
 
   std::unique_ptr<StepState> committed_;
   // Time/predictor = linear extrapolation: the committed state before the last one and the step

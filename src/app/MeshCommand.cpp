@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "io/output/ResultWriter.hpp"
+#include "mesh/MeshChecks.hpp"
 #include "mesh/MeshFile.hpp"
 #include "mesh/MeshQuality.hpp"
 #include "mesh/MeshRefinement.hpp"
@@ -20,6 +21,13 @@ nlohmann::json describeMesh(const std::string &file, const MeshCommandOptions &o
   r["volume"] = mesh::meshVolume(m);
   const auto [sjMin, sjMax] = mesh::scaledJacobianRange(m);
   r["scaled_jacobian"] = {{"min", sjMin}, {"max", sjMax}};
+  // What a run would refuse (doc/meshes.md, "Before a run").
+  const mesh::MeshCheckReport checks = mesh::checkMesh(m);
+  r["checks"] = {{"unused_nodes", checks.unusedNodes.size()},
+                 {"coincident_node_pairs", checks.coincidentNodes.size()},
+                 {"duplicate_elements", checks.duplicateElements.size()},
+                 {"inverted_corner_elements", checks.invertedCorners.size()},
+                 {"parts", mesh::meshParts(m).second}};
   nlohmann::json sets = nlohmann::json::object();
   for (const auto &[name, elements] : m.elementSets) {
     double v = 0.0;
@@ -55,6 +63,10 @@ std::string meshReportText(const nlohmann::json &r) {
   s << "\n  nodes " << r.at("nodes") << "  elements " << r.at("elements") << "  volume " << r.at("volume").get<double>()
     << " m^3\n  scaled Jacobian " << r.at("scaled_jacobian").at("min").get<double>() << " .. "
     << r.at("scaled_jacobian").at("max").get<double>() << "\n";
+  const auto &c = r.at("checks");
+  s << "  parts " << c.at("parts") << "  unused nodes " << c.at("unused_nodes") << "  coincident node pairs "
+    << c.at("coincident_node_pairs") << "  duplicate elements " << c.at("duplicate_elements")
+    << "  elements with an inverted corner " << c.at("inverted_corner_elements") << "\n";
   const auto &sets = r.at("sets");
   for (const char *kind : {"element", "face", "node"}) {
     if (!sets.contains(kind)) continue;

@@ -1,10 +1,14 @@
 // glossa: the command-line front end. `glossa --help` lists the commands.
+#include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include <mpi.h>
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Core.hpp>
 
@@ -16,6 +20,8 @@
 #include "io/deck/Deck.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/DeckReference.hpp"
+#include "io/output/OutputError.hpp"
+#include "mesh/MeshError.hpp"
 #include "model/SceneFactory.hpp"
 #include "solvers/Simulation.hpp"
 
@@ -57,7 +63,10 @@ usage:
   glossa --help | --version
 
 --set overrides any deck parameter, e.g. --set Mesh/Box/cells=16,16,16 (for sweeps).
-Exit status: 0 success, 1 run did not converge or failed, 2 bad deck or command line.
+Exit status: 0 success; 1 the run stopped without converging (a step failed below the minimum
+step size, or a check failed); 2 a bad deck, mesh file or command line; 3 the run was
+interrupted (SIGTERM or SIGINT; summary.json says where); 4 an output file could not be
+written; 5 an internal error. Errors go to stderr, with --quiet too.
 )";
 
 struct Arguments {
@@ -127,6 +136,30 @@ glossa::io::Deck loadDeck(const Arguments &a, const Teuchos::ParameterList &sche
   return deck;
 }
 
+// Exit statuses (kUsage and README list them).
+constexpr int kNotConverged = 1, kBadInput = 2, kInterrupted = 3, kOutputFailed = 4, kInternalError = 5;
+
+// Where main is: before `Collective`, every rank reads and checks the same deck and fails the same
+// way, so each may return; in `Running`, one rank may fail alone while the others wait in a
+// collective operation (MPI_Finalize would wait for them forever), so the error ends the job.
+enum class Stage { Collective, Running };
+
+int fail(const Teuchos::Comm<int> &comm, const std::string &message, int status, Stage stage) {
+  const int rank = comm.getRank();
+  if (stage == Stage::Collective || comm.getSize() == 1) {
+    if (rank == 0) std::fprintf(stderr, "glossa: error: %s\n", message.c_str());
+    return status;
+  }
+  // Rank 0's message comes first: if rank 0 failed too (the same error everywhere), it aborts
+  // the job while the others wait, and the message is printed once.
+  if (rank != 0) std::this_thread::sleep_for(std::chrono::seconds(2));
+  if (rank == 0) std::fprintf(stderr, "glossa: error: %s\n", message.c_str());
+  else std::fprintf(stderr, "glossa: error on rank %d: %s\n", rank, message.c_str());
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, status);
+  return status;
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -139,6 +172,7 @@ int main(int argc, char **argv) {
   Tpetra::ScopeGuard mpi(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
+  Stage stage = Stage::Collective;
   try {
     if (argc >= 2 && !std::strcmp(argv[1], "--version")) {
       if (root) std::puts("glossa " GLOSSA_VERSION);
@@ -188,24 +222,31 @@ int main(int argc, char **argv) {
     if (a.command == "zero-strain") {
       if (a.output.empty()) throw glossa::io::DeckError("glossa zero-strain needs --output FILE (the coordinates file)");
       const auto deck = loadDeck(a, schema);
+      stage = Stage::Running;
       const auto result = glossa::app::computeZeroStrain(deck, comm, a.output, a.quiet);
       if (!result.converged && root)
         std::fprintf(stderr, "glossa: zero-strain: max distance %.3e m after %d iterations is above the tolerance %.3e m\n",
                      result.maxDistance, result.iterations, result.tolerance);
-      return result.converged ? 0 : 1;
+      return result.converged ? 0 : kNotConverged;
     }
     if (a.command == "run") {
       const auto deck = loadDeck(a, schema);
+      stage = Stage::Running;
       const auto summary = glossa::solvers::runSimulation(deck, comm, {a.output, a.quiet, a.controlGroups});
       if (a.timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
-      return summary.value("converged", false) ? 0 : 1;
+      if (summary.contains("interrupted")) return kInterrupted;
+      return summary.value("converged", false) ? 0 : kNotConverged;
     }
     throw glossa::io::DeckError("unknown command '" + a.command + "'; see glossa --help");
   } catch (const glossa::io::DeckError &e) {
-    if (root) std::fprintf(stderr, "glossa: error: %s\n", e.what());
-    return 2;
+    return fail(*comm, e.what(), kBadInput, stage);
+  } catch (const glossa::mesh::MeshError &e) {
+    return fail(*comm, e.what(), kBadInput, stage);
+  } catch (const std::filesystem::filesystem_error &e) {
+    return fail(*comm, std::string("cannot write the output: ") + e.what(), kOutputFailed, stage);
+  } catch (const glossa::io::OutputError &e) {
+    return fail(*comm, e.what(), kOutputFailed, stage);
   } catch (const std::exception &e) {
-    if (root) std::fprintf(stderr, "glossa: error: %s\n", e.what());
-    return 1;
+    return fail(*comm, e.what(), kInternalError, stage);
   }
 }

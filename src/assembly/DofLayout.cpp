@@ -19,6 +19,10 @@ DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks, std::ve
   L.nodeOwner.assign(mesh.numNodes(), std::numeric_limits<int>::max());
   for (std::size_t e = 0; e < mesh.numElements(); ++e)
     for (mesh::NodeId n : mesh.elements[e]) L.nodeOwner[n] = std::min(L.nodeOwner[n], L.elementOwner[e]);
+  // A node no element uses (allowed by Mesh/Checks/unused nodes = fix, which holds it) belongs
+  // to rank 0, so that every node has its dofs on some rank.
+  for (int &owner : L.nodeOwner)
+    if (owner == std::numeric_limits<int>::max()) owner = 0;
 
   // Renumber nodes rank by rank (stable in mesh id within a rank).
   L.nodeNumber.assign(mesh.numNodes(), -1);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "mesh/ImportedMesh.hpp"
+#include "mesh/MeshError.hpp"
 #include "mesh/MeshQuality.hpp"
 
 namespace glossa::mesh {
@@ -15,7 +16,7 @@ namespace glossa::mesh {
 NodeId ImportedMesh::nodeOfFileId(std::int64_t fileId) const {
   const auto it = nodeIndex_.find(fileId);
   if (it == nodeIndex_.end()) {
-    throw std::runtime_error(source + ": no node with id " + std::to_string(fileId));
+    throw MeshError(source + ": no node with id " + std::to_string(fileId));
   }
   return it->second;
 }
@@ -23,7 +24,7 @@ NodeId ImportedMesh::nodeOfFileId(std::int64_t fileId) const {
 ElementId ImportedMesh::elementOfFileId(std::int64_t fileId) const {
   const auto it = elementIndex_.find(fileId);
   if (it == elementIndex_.end()) {
-    throw std::runtime_error(source + ": no element with id " + std::to_string(fileId));
+    throw MeshError(source + ": no element with id " + std::to_string(fileId));
   }
   return it->second;
 }
@@ -42,8 +43,8 @@ void ImportedMesh::indexFileIds() {
 namespace importing {
 
 void fail(const std::string &file, std::size_t line, const std::string &reason) {
-  if (line == 0) throw std::runtime_error(file + ": " + reason);
-  throw std::runtime_error(file + ":" + std::to_string(line) + ": " + reason);
+  if (line == 0) throw MeshError(file + ": " + reason);
+  throw MeshError(file + ":" + std::to_string(line) + ": " + reason);
 }
 
 LineReader::LineReader(std::string path) : path_(std::move(path)) {

@@ -8,6 +8,7 @@
 #include "mesh/AbaqusReader.hpp"
 #include "mesh/AnsysReader.hpp"
 #include "mesh/GmshReader.hpp"
+#include "mesh/MeshError.hpp"
 
 namespace glossa::mesh {
 
@@ -30,7 +31,7 @@ ImportedMesh readAnsysPair(const std::string &path) {
   const std::string e = extension(path);
   if (e == ".node") return readAnsysMesh(path, withExtension(path, ".elem"));
   if (e == ".elem") return readAnsysMesh(withExtension(path, ".node"), path);
-  throw std::runtime_error(path + ": an ANSYS mesh is named by its .node or .elem file");
+  throw MeshError(path + ": an ANSYS mesh is named by its .node or .elem file");
 }
 
 // The explicit factory map (STYLE.md): format name -> reader.
@@ -52,7 +53,7 @@ std::string meshFormatOfPath(const std::string &path) {
   if (e == ".msh") return "gmsh";
   if (e == ".inp") return "abaqus";
   if (e == ".node" || e == ".elem") return "ansys";
-  throw std::runtime_error(path + ": cannot tell the mesh format from the extension '" + e +
+  throw MeshError(path + ": cannot tell the mesh format from the extension '" + e +
                            "' (known: .msh gmsh, .inp abaqus, .node/.elem ansys); give the format");
 }
 
@@ -60,7 +61,7 @@ ImportedMesh readMeshFile(const std::string &path, const std::string &format) {
   const std::string name = format == "auto" ? meshFormatOfPath(path) : format;
   const auto it = readers().find(name);
   if (it == readers().end()) {
-    throw std::runtime_error("unknown mesh format '" + name + "' (known: abaqus, ansys, gmsh, auto)");
+    throw MeshError("unknown mesh format '" + name + "' (known: abaqus, ansys, gmsh, auto)");
   }
   return it->second(path);
 }

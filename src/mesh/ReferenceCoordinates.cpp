@@ -6,11 +6,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/output/OutputError.hpp"
+#include "mesh/MeshError.hpp"
+
 namespace glossa::mesh {
 
 std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, std::size_t numNodes) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open the reference coordinates file");
+  if (!in) throw MeshError(path + ": cannot open the reference coordinates file");
   std::vector<Eigen::Vector3d> nodes(numNodes);
   std::vector<int> seenOnLine(numNodes, 0);
   std::string line;
@@ -27,22 +30,22 @@ std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, s
     std::string fields[4], extra;
     for (auto &f : fields)
       if (!(s >> f))
-        throw std::runtime_error(where + "expected 'node x y z', got '" + line.substr(first) + "'");
+        throw MeshError(where + "expected 'node x y z', got '" + line.substr(first) + "'");
     if (s >> extra)
-      throw std::runtime_error(where + "expected 'node x y z', got a fifth field '" + extra + "'");
+      throw MeshError(where + "expected 'node x y z', got a fifth field '" + extra + "'");
     long long node = -1;
     try {
       std::size_t used = 0;
       node = std::stoll(fields[0], &used);
       if (used != fields[0].size()) throw std::invalid_argument(fields[0]);
     } catch (const std::exception &) {
-      throw std::runtime_error(where + "the node index '" + fields[0] + "' is not an integer");
+      throw MeshError(where + "the node index '" + fields[0] + "' is not an integer");
     }
     if (node < 0 || static_cast<std::size_t>(node) >= numNodes)
-      throw std::runtime_error(where + "node " + fields[0] + " is outside the mesh (0 to " +
+      throw MeshError(where + "node " + fields[0] + " is outside the mesh (0 to " +
                                std::to_string(numNodes - 1) + ")");
     if (seenOnLine[node])
-      throw std::runtime_error(where + "node " + fields[0] + " is given twice (first on line " +
+      throw MeshError(where + "node " + fields[0] + " is given twice (first on line " +
                                std::to_string(seenOnLine[node]) + ")");
     Eigen::Vector3d x;
     for (int c = 0; c < 3; ++c) {
@@ -51,7 +54,7 @@ std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, s
         x(c) = std::stod(fields[c + 1], &used);
         if (used != fields[c + 1].size() || !std::isfinite(x(c))) throw std::invalid_argument(fields[c + 1]);
       } catch (const std::exception &) {
-        throw std::runtime_error(where + "coordinate '" + fields[c + 1] + "' is not a finite number");
+        throw MeshError(where + "coordinate '" + fields[c + 1] + "' is not a finite number");
       }
     }
     nodes[node] = x;
@@ -59,7 +62,7 @@ std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, s
     ++count;
   }
   if (count != numNodes)
-    throw std::runtime_error(path + ": " + std::to_string(count) + " nodes, but the mesh has " +
+    throw MeshError(path + ": " + std::to_string(count) + " nodes, but the mesh has " +
                              std::to_string(numNodes) + " (every node exactly once)");
   return nodes;
 }
@@ -67,12 +70,12 @@ std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, s
 void writeReferenceCoordinates(const std::string &path, const std::vector<Eigen::Vector3d> &nodes,
                                const std::vector<std::string> &header) {
   std::FILE *f = std::fopen(path.c_str(), "w");
-  if (!f) throw std::runtime_error(path + ": cannot write the reference coordinates file");
+  if (!f) throw io::OutputError(path + ": cannot write the reference coordinates file");
   for (const auto &h : header) std::fprintf(f, "# %s\n", h.c_str());
   std::fprintf(f, "# node x y z (node: 0-based index in the mesh as the deck builds it; metres)\n");
   for (std::size_t n = 0; n < nodes.size(); ++n)
     std::fprintf(f, "%zu %.17g %.17g %.17g\n", n, nodes[n].x(), nodes[n].y(), nodes[n].z());
-  if (std::fclose(f) != 0) throw std::runtime_error(path + ": error writing the reference coordinates file");
+  if (std::fclose(f) != 0) throw io::OutputError(path + ": error writing the reference coordinates file");
 }
 
 }  // namespace glossa::mesh

@@ -17,6 +17,7 @@
 #include "mesh/ThickCylinderGenerator.hpp"
 #include "model/DeckSets.hpp"
 #include "model/MaterialFactory.hpp"
+#include "model/SceneChecks.hpp"
 
 namespace glossa::model {
 
@@ -55,6 +56,7 @@ ParameterList meshParameters() {
   ParameterList &list = nodeLists.sublist(io::kAnySublist);
   io::declareString(list, "file", "", "a list of node ids of the file (one per line): a node set of this name");
   file.set("Node lists", nodeLists, "ansys: node sets from lists of node ids, one sublist each");
+  declareMeshCheckParameters(p);
   ParameterList &box = p.sublist("Box", false, "a structured box of hexahedra (type = box); face "
                                               "and node sets xmin, xmax, ymin, ymax, zmin, zmax");
   io::declareDoubleArray(box, "origin", Array<double>(3, 0.0), "m", "corner with the smallest coordinates", 3);
@@ -422,6 +424,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
   // External muscles keep their bony origins; their insertions are the nodes' reference positions.
   for (auto &muscle : scene.muscles.external)
     for (std::size_t i = 0; i < muscle.nodes.size(); ++i) muscle.fibres[i].insertion = m.nodes[muscle.nodes[i]];
+  checkScene(deck, scene);
   return scene;
 }
 

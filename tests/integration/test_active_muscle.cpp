@@ -38,16 +38,17 @@ std::map<double, StepStress> stresses(const std::filesystem::path &dir) {
         path.substr(path.size() - suffix.size()) != suffix)
       continue;
     const auto group = path.substr(0, path.size() - suffix.size());
-    const auto s = file.doubles(path).values; // xx yy zz xy yz xz per element
+    const auto s = file.doubles(path).values; // the full row-major 3x3 tensor per element
     StepStress st;
     st.sigma11 = -1e300;
     st.sigma11Min = 1e300;
-    for (std::size_t e = 0; e < s.size() / 6; ++e) {
-      st.sigma11 = std::max(st.sigma11, s[6 * e]);
-      st.sigma11Min = std::min(st.sigma11Min, s[6 * e]);
-      st.sigma22 = std::max(st.sigma22, std::abs(s[6 * e + 1]));
-      st.sigma33 = std::max(st.sigma33, std::abs(s[6 * e + 2]));
-      for (int c = 3; c < 6; ++c) st.shear = std::max(st.shear, std::abs(s[6 * e + c]));
+    for (std::size_t e = 0; e < s.size() / 9; ++e) {
+      const double *t = &s[9 * e];
+      st.sigma11 = std::max(st.sigma11, t[0]);
+      st.sigma11Min = std::min(st.sigma11Min, t[0]);
+      st.sigma22 = std::max(st.sigma22, std::abs(t[4]));
+      st.sigma33 = std::max(st.sigma33, std::abs(t[8]));
+      for (int c : {1, 2, 5}) st.shear = std::max(st.shear, std::abs(t[c]));
     }
     out[file.timeOf(group)] = st;
   }

@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
-#include <Teuchos_XMLParameterListWriter.hpp>
 
 #include "io/deck/DeckError.hpp"
+#include "io/deck/DeckXml.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "io/deck/SpecValidator.hpp"
+#include "io/deck/StrictNumber.hpp"
 
 namespace glossa::io {
 
@@ -36,6 +38,81 @@ std::string joinPath(const std::vector<std::string> &path) {
   return out;
 }
 
+namespace {
+bool allowedAttribute(const std::string &tag, const std::string &key) {
+  // Teuchos' writer adds id, docString, isDefault, isUsed and validatorId: a deck written by
+  // Glossa or Teuchos reads back.
+  static const std::vector<std::string> list{"name", "id"};
+  static const std::vector<std::string> parameter{"name", "type", "value", "docString", "isDefault", "isUsed",
+                                                  "id", "validatorId"};
+  const auto &known = tag == "ParameterList" ? list : parameter;
+  return std::find(known.begin(), known.end(), key) != known.end();
+}
+
+// A parameter's value from its text, by the type its XML declares; std::invalid_argument if the
+// text is not exactly one value of that type.
+Teuchos::ParameterEntry entryOf(const std::string &type, const std::string &text) {
+  Teuchos::ParameterEntry entry;
+  if (type == "double") entry.setValue(parseStrictDouble(text));
+  else if (type == "int") entry.setValue(parseStrictInt(text));
+  else if (type == "bool") entry.setValue(parseStrictBool(text));
+  else if (type == "string") entry.setValue(text);
+  else if (type == "Array(double)") {
+    const auto v = parseStrictDoubleArray(text, true);
+    entry.setValue(Teuchos::Array<double>(v.begin(), v.end()));
+  } else if (type == "Array(int)") {
+    const auto v = parseStrictIntArray(text, true);
+    entry.setValue(Teuchos::Array<int>(v.begin(), v.end()));
+  }
+  return entry;
+}
+} // namespace
+
+void Deck::read(const DeckXmlElement &element, Teuchos::ParameterList &list, std::vector<std::string> &path) {
+  auto at = [&](const DeckXmlElement &e) { return "deck " + file_ + ":" + std::to_string(e.line) + ": "; };
+  for (const DeckXmlElement &child : element.children) {
+    if ((child.tag == "Validators" || child.tag == "Dependencies") && child.children.empty() &&
+        child.attributes.empty())
+      continue; // what Teuchos' writer adds when there are none
+    if (child.tag != "ParameterList" && child.tag != "Parameter")
+      throw DeckError(at(child) + "<" + child.tag + "> is not part of a deck (it holds <ParameterList name=...> and "
+                      "<Parameter name=... type=... value=.../>)");
+    for (const auto &[key, value] : child.attributes)
+      if (!allowedAttribute(child.tag, key))
+        throw DeckError(at(child) + "<" + child.tag + "> has no attribute '" + key + "'");
+    const std::string *name = child.attribute("name");
+    if (name == nullptr || name->empty())
+      throw DeckError(at(child) + "<" + child.tag + "> needs a name=\"...\" attribute");
+    path.push_back(*name);
+    const std::string joined = joinPath(path);
+    if (list.isParameter(*name))
+      throw DeckError(at(child) + "'" + joined + "' is given twice (first on line " +
+                      std::to_string(lines_[joined]) + "); give each parameter once");
+    lines_[joined] = child.line;
+    if (child.tag == "ParameterList") {
+      read(child, list.sublist(*name), path);
+    } else {
+      if (!child.children.empty())
+        throw DeckError(at(child) + "<Parameter name=\"" + *name + "\"> holds elements; a parameter is one empty element");
+      const std::string *type = child.attribute("type");
+      const std::string *value = child.attribute("value");
+      if (type == nullptr || value == nullptr)
+        throw DeckError(at(child) + "parameter '" + joined + "' needs both type=\"...\" and value=\"...\"");
+      static const std::vector<std::string> types{"double", "int", "bool", "string", "Array(double)", "Array(int)"};
+      if (std::find(types.begin(), types.end(), *type) == types.end())
+        throw DeckError(at(child) + "parameter '" + joined + "' has type \"" + *type +
+                        "\"; a deck's types are double, int, bool, string, Array(double) and Array(int)");
+      try {
+        list.setEntry(*name, entryOf(*type, *value));
+      } catch (const std::invalid_argument &e) {
+        invalid_[joined] = e.what();
+        list.set(*name, *value); // kept as text; validate() refuses it
+      }
+    }
+    path.pop_back();
+  }
+}
+
 Deck Deck::fromFile(const std::string &path) {
   Deck deck;
   deck.file_ = path;
@@ -44,18 +121,12 @@ Deck Deck::fromFile(const std::string &path) {
   if (!in) throw DeckError("deck " + path + ": cannot be opened (does the file exist?)");
   std::stringstream text;
   text << in.rdbuf();
-  std::string line;
-  std::istringstream lines(text.str());
-  while (std::getline(lines, line)) deck.lines_.push_back(line);
-  try {
-    Teuchos::updateParametersFromXmlString(text.str(), Teuchos::ptrFromRef(deck.list_));
-  } catch (const std::exception &e) {
-    // Teuchos prefixes its reason with source locations; the last line is the reason.
-    std::string reason = e.what();
-    while (!reason.empty() && reason.back() == '\n') reason.pop_back();
-    reason = reason.substr(reason.find_last_of('\n') + 1);
-    throw DeckError("deck " + path + ": not a valid Teuchos ParameterList XML file: " + reason);
-  }
+  const DeckXmlElement root = parseDeckXml(text.str(), path);
+  if (root.tag != "ParameterList")
+    throw DeckError("deck " + path + ":" + std::to_string(root.line) + ": the root element is <" + root.tag +
+                    ">; a deck is one <ParameterList name=\"Glossa\">");
+  std::vector<std::string> names;
+  deck.read(root, deck.list_, names);
   return deck;
 }
 
@@ -67,13 +138,8 @@ Deck Deck::fromList(const Teuchos::ParameterList &list, const std::string &label
 }
 
 int Deck::lineOf(const std::vector<std::string> &path) const {
-  std::size_t line = 0;
-  for (const auto &name : path) {
-    const std::string needle = "name=\"" + name + "\"";
-    while (line < lines_.size() && lines_[line].find(needle) == std::string::npos) ++line;
-    if (line == lines_.size()) return 0;
-  }
-  return static_cast<int>(line) + 1;
+  const auto it = lines_.find(joinPath(path));
+  return it == lines_.end() ? 0 : it->second;
 }
 
 std::string Deck::where(const std::vector<std::string> &path) const {
@@ -116,6 +182,7 @@ void Deck::applyOverride(const std::string &assignment, const Teuchos::Parameter
   try {
     Teuchos::ParameterEntry entry = spec ? spec->parse(valueText) : Teuchos::ParameterEntry(valueText);
     user->setEntry(name, entry);
+    invalid_.erase(joinPath(path));
   } catch (const std::exception &e) {
     throw DeckError("--set " + assignment + ": " + e.what() + "; allowed: " +
                     (spec ? spec->allowed() : std::string("text")));
@@ -140,6 +207,9 @@ void Deck::check(Teuchos::ParameterList &user, const Teuchos::ParameterList &val
     if (entry.isList()) {
       check(Teuchos::getValue<Teuchos::ParameterList>(entry),
             Teuchos::getValue<Teuchos::ParameterList>(*declared), path);
+    } else if (const auto bad = invalid_.find(joinPath(path)); bad != invalid_.end()) {
+      const SpecValidator *spec = specOf(*declared);
+      throw DeckError(where(path) + ": " + bad->second + (spec ? "; allowed: " + spec->allowed() : std::string()));
     } else if (const SpecValidator *spec = specOf(*declared)) {
       const std::string why = spec->check(entry);
       if (!why.empty())

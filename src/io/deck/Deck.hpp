@@ -4,6 +4,7 @@
 // Validation happens before anything runs; every error names file, line, parameter path and
 // what is allowed (DeckError).
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -11,9 +12,14 @@
 
 namespace glossa::io {
 
+struct DeckXmlElement;
+
 class Deck {
 public:
-  // Reads and parses the XML file; throws DeckError if the file is missing or not valid XML.
+  // Reads and parses the XML file (io/deck/DeckXml.hpp); throws DeckError if the file is
+  // missing, is not valid XML, holds an element or type a deck does not have, or gives a
+  // parameter twice. A value that is not exactly one value of its type ("0,4999", "3.5abc",
+  // "{0, abc, 0}") is kept aside and refused by validate(), which knows what is allowed.
   static Deck fromFile(const std::string &path);
   // A deck built in code (tests, benchmarks); `label` stands for the file name in errors.
   static Deck fromList(const Teuchos::ParameterList &list, const std::string &label);
@@ -37,13 +43,17 @@ public:
   std::string toXml() const;
 
 private:
+  // Builds `list` from the children of `element` (a <ParameterList>), recording lines and texts
+  // that are not values.
+  void read(const DeckXmlElement &element, Teuchos::ParameterList &list, std::vector<std::string> &path);
   void check(Teuchos::ParameterList &user, const Teuchos::ParameterList &valid,
              std::vector<std::string> &path) const;
   static void fillDefaults(Teuchos::ParameterList &user, const Teuchos::ParameterList &valid);
   int lineOf(const std::vector<std::string> &path) const;
 
   std::string file_;
-  std::vector<std::string> lines_;
+  std::map<std::string, int> lines_;          // joined path -> line of its element in the file
+  std::map<std::string, std::string> invalid_; // joined path -> why its text is not a value
   std::vector<std::string> overridden_; // paths set on the command line
   Teuchos::ParameterList list_;
 };

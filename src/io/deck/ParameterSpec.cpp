@@ -23,7 +23,7 @@ Teuchos::RCP<SpecValidator> spec(SpecValidator::Kind kind, const std::string &un
 } // namespace
 
 bool Range::contains(double v) const {
-  if (std::isnan(v)) return false;
+  if (!std::isfinite(v)) return false; // no parameter means infinity or NaN
   const bool aboveLo = loOpen ? v > lo : v >= lo;
   const bool belowHi = hiOpen ? v < hi : v <= hi;
   return aboveLo && belowHi;

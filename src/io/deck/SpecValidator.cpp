@@ -1,12 +1,15 @@
 #include "io/deck/SpecValidator.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include <Teuchos_Array.hpp>
 #include <Teuchos_StrUtils.hpp>
+
+#include "io/deck/StrictNumber.hpp"
 
 namespace glossa::io {
 
@@ -17,31 +20,11 @@ std::string joined(const std::vector<std::string> &words) {
   return out;
 }
 
-std::vector<std::string> splitCommas(const std::string &text) {
-  std::string inner = text;
-  // Accept both "1,2,3" and Teuchos' own "{1, 2, 3}".
-  inner.erase(std::remove_if(inner.begin(), inner.end(),
-                             [](char c) { return c == '{' || c == '}' || std::isspace(c); }),
-              inner.end());
-  std::vector<std::string> parts;
-  std::stringstream s(inner);
-  std::string item;
-  while (std::getline(s, item, ',')) parts.push_back(item);
-  return parts;
-}
-
-double parseDouble(const std::string &text) {
-  std::size_t used = 0;
-  const double v = std::stod(text, &used);
-  if (used != text.size()) throw std::invalid_argument("'" + text + "' is not a number");
-  return v;
-}
-
-int parseInt(const std::string &text) {
-  std::size_t used = 0;
-  const int v = std::stoi(text, &used);
-  if (used != text.size()) throw std::invalid_argument("'" + text + "' is not an integer");
-  return v;
+// The shortest text that reads back as `v` (0.49999999999999 is not shown as 0.5).
+std::string exact(double v) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return std::string(buffer, result.ptr);
 }
 } // namespace
 
@@ -74,17 +57,12 @@ std::string SpecValidator::check(const Teuchos::ParameterEntry &entry) const {
   case Kind::Double: {
     if (value.type() != typeid(double)) return typeError("double (type=\"double\")");
     const double v = Teuchos::any_cast<double>(value);
-    if (!range_.contains(v)) {
-      std::ostringstream text;
-      text << "= " << v << " is out of range";
-      return text.str();
-    }
-    return "";
+    return range_.contains(v) ? "" : "= " + exact(v) + " is out of range";
   }
   case Kind::Int: {
     if (value.type() != typeid(int)) return typeError("int (type=\"int\")");
-    if (!range_.contains(Teuchos::any_cast<int>(value))) return "is out of range";
-    return "";
+    const int v = Teuchos::any_cast<int>(value);
+    return range_.contains(v) ? "" : "= " + std::to_string(v) + " is out of range";
   }
   case Kind::Bool:
     return value.type() == typeid(bool) ? "" : typeError("bool (type=\"bool\")");
@@ -102,8 +80,8 @@ std::string SpecValidator::check(const Teuchos::ParameterEntry &entry) const {
     const auto &a = Teuchos::any_cast<Teuchos::Array<double>>(value);
     if (arraySize_ > 0 && a.size() != arraySize_)
       return "has " + std::to_string(a.size()) + " entries";
-    for (double v : a)
-      if (!range_.contains(v)) return "has an entry out of range";
+    for (int i = 0; i < a.size(); ++i)
+      if (!range_.contains(a[i])) return "has entry " + std::to_string(i + 1) + " = " + exact(a[i]) + " out of range";
     return "";
   }
   case Kind::IntArray: {
@@ -112,8 +90,8 @@ std::string SpecValidator::check(const Teuchos::ParameterEntry &entry) const {
     const auto &a = Teuchos::any_cast<Teuchos::Array<int>>(value);
     if (arraySize_ > 0 && a.size() != arraySize_)
       return "has " + std::to_string(a.size()) + " entries";
-    for (int v : a)
-      if (!range_.contains(v)) return "has an entry out of range";
+    for (int i = 0; i < a.size(); ++i)
+      if (!range_.contains(a[i])) return "has entry " + std::to_string(i + 1) + " = " + std::to_string(a[i]) + " out of range";
     return "";
   }
   }
@@ -123,24 +101,18 @@ std::string SpecValidator::check(const Teuchos::ParameterEntry &entry) const {
 Teuchos::ParameterEntry SpecValidator::parse(const std::string &text) const {
   Teuchos::ParameterEntry entry;
   switch (kind_) {
-  case Kind::Double: entry.setValue(parseDouble(text)); break;
-  case Kind::Int: entry.setValue(parseInt(text)); break;
-  case Kind::Bool:
-    if (text == "true" || text == "1") entry.setValue(true);
-    else if (text == "false" || text == "0") entry.setValue(false);
-    else throw std::invalid_argument("'" + text + "' is not true or false");
-    break;
+  case Kind::Double: entry.setValue(parseStrictDouble(text)); break;
+  case Kind::Int: entry.setValue(parseStrictInt(text)); break;
+  case Kind::Bool: entry.setValue(parseStrictBool(text)); break;
   case Kind::String: entry.setValue(text); break;
   case Kind::DoubleArray: {
-    Teuchos::Array<double> a;
-    for (const auto &p : splitCommas(text)) a.push_back(parseDouble(p));
-    entry.setValue(a);
+    const auto v = parseStrictDoubleArray(text, false);
+    entry.setValue(Teuchos::Array<double>(v.begin(), v.end()));
     break;
   }
   case Kind::IntArray: {
-    Teuchos::Array<int> a;
-    for (const auto &p : splitCommas(text)) a.push_back(parseInt(p));
-    entry.setValue(a);
+    const auto v = parseStrictIntArray(text, false);
+    entry.setValue(Teuchos::Array<int>(v.begin(), v.end()));
     break;
   }
   }

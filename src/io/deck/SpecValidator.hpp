@@ -24,8 +24,8 @@ public:
   std::string check(const Teuchos::ParameterEntry &entry) const;
   // What is allowed, in words: "real number, 0 < value [Pa]", "one of: cg, gmres".
   std::string allowed() const;
-  // Parses a command-line string into a value of this kind (for --set); throws
-  // std::invalid_argument with the reason.
+  // Parses a command-line string into a value of this kind (for --set), as strictly as the XML
+  // deck's values (io/deck/StrictNumber.hpp); throws std::invalid_argument with the reason.
   Teuchos::ParameterEntry parse(const std::string &text) const;
 
   const std::string getXMLTypeName() const override { return "GlossaSpecValidator"; }

@@ -1,4 +1,5 @@
 #include "io/output/AtomicFile.hpp"
+#include "io/output/OutputError.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -12,7 +13,7 @@ namespace glossa::io {
 
 namespace {
 [[noreturn]] void fail(const std::string &what, const std::filesystem::path &file, int error) {
-  throw std::runtime_error("cannot " + what + " " + file.string() + ": " + std::strerror(error));
+  throw OutputError("cannot " + what + " " + file.string() + ": " + std::strerror(error));
 }
 
 // write(2) may write less than asked or be interrupted by a signal; loop until all is written.

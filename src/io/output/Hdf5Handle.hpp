@@ -9,6 +9,8 @@
 
 #include <hdf5.h>
 
+#include "io/output/OutputError.hpp"
+
 namespace glossa::io {
 
 class Hdf5Handle {
@@ -17,7 +19,7 @@ public:
 
   // Throws std::runtime_error mentioning `what` when the HDF5 call that produced `id` failed.
   Hdf5Handle(hid_t id, Closer close, const std::string &what) : id_(id), close_(close) {
-    if (id_ < 0) throw std::runtime_error("HDF5: " + what + " failed");
+    if (id_ < 0) throw OutputError("HDF5: " + what + " failed");
   }
   ~Hdf5Handle() {
     if (id_ >= 0) close_(id_);
@@ -38,7 +40,7 @@ private:
 
 // For HDF5 calls that return a status instead of an identifier.
 inline void checkHdf5(herr_t status, const std::string &what) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
+  if (status < 0) throw OutputError("HDF5: " + what + " failed");
 }
 
 } // namespace glossa::io

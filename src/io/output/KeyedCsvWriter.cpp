@@ -1,4 +1,5 @@
 #include "io/output/KeyedCsvWriter.hpp"
+#include "io/output/OutputError.hpp"
 
 #include <stdexcept>
 
@@ -14,7 +15,7 @@ KeyedCsvWriter::KeyedCsvWriter(const std::filesystem::path &file, const std::str
   std::string header = "time," + keyColumn;
   for (const auto &c : valueColumns) header += ',' + c;
   out_ << header << '\n' << std::flush;
-  if (!out_) throw std::runtime_error("cannot write " + file_.string());
+  if (!out_) throw OutputError("cannot write " + file_.string());
 }
 
 void KeyedCsvWriter::append(double time, const std::vector<std::pair<std::string, std::vector<double>>> &rows) {
@@ -35,7 +36,7 @@ void KeyedCsvWriter::append(double time, const std::vector<std::pair<std::string
   }
   out_.write(text.data(), static_cast<std::streamsize>(text.size()));
   out_.flush();
-  if (!out_) throw std::runtime_error("cannot write " + file_.string());
+  if (!out_) throw OutputError("cannot write " + file_.string());
 }
 
 } // namespace glossa::io

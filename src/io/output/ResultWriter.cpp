@@ -59,6 +59,24 @@ void checkTopology(const std::vector<std::array<std::int64_t, 8>> &hexes, std::s
                                     std::to_string(node) + " but the mesh has " + std::to_string(numNodes) +
                                     " nodes");
 }
+// File access without HDF5's file locks: the writer holds the file only while it writes a step,
+// and ParaView 5.11 (HDF5 1.10) aborted on the lock of a running job's file unless the user set
+// HDF5_USE_FILE_LOCKING=FALSE. Readers still take their own locks; the writer ignores them.
+Hdf5Handle unlockedAccess() {
+  Hdf5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "creating a file access property list");
+  checkHdf5(H5Pset_file_locking(fapl.get(), false, true), "turning off HDF5 file locking");
+  return fapl;
+}
+// Tuples of (xx, yy, zz, xy, yz, xz) as row-major 3x3 tensors.
+std::vector<double> fullSymmetricTensors(const std::vector<double> &six) {
+  std::vector<double> full;
+  full.reserve(six.size() / 6 * 9);
+  for (std::size_t t = 0; t + 6 <= six.size(); t += 6) {
+    const double xx = six[t], yy = six[t + 1], zz = six[t + 2], xy = six[t + 3], yz = six[t + 4], xz = six[t + 5];
+    full.insert(full.end(), {xx, xy, xz, xy, yy, yz, xz, yz, zz});
+  }
+  return full;
+}
 } // namespace
 
 ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::string &baseName,
@@ -68,6 +86,7 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
       mesh_{baseName + ".h5", nodes.size(), hexes.size(), "/mesh/coordinates", "/mesh/topology"} {
   checkBaseName(baseName_);
   checkTopology(hexes, nodes.size());
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // failures are reported as OutputError, not HDF5's dump
   std::filesystem::create_directories(directory_);
 
   // An XDMF file from an earlier run would point into the .h5 we are about to replace; remove it
@@ -76,8 +95,8 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
   std::filesystem::remove(xdmfPath());
   std::filesystem::remove(hdf5Path());
 
-  Hdf5Handle file(H5Fcreate(hdf5Path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
-                  "creating " + hdf5Path().string());
+  const Hdf5Handle file(H5Fcreate(hdf5Path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, unlockedAccess().get()), H5Fclose,
+                        "creating " + hdf5Path().string());
   {
     const Hdf5Handle mesh(H5Gcreate2(file.get(), "mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                           "creating group /mesh");
@@ -90,18 +109,10 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
     writeDataset(mesh.get(), "topology", H5T_NATIVE_INT64, hexes.data(), hexes.size(), 8);
   }
   checkHdf5(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing " + hdf5Path().string());
-  file_ = file.release();
-  try {
-    writeXdmf();
-  } catch (...) {
-    H5Fclose(file_);
-    throw;
-  }
+  writeXdmf();
 }
 
-ResultWriter::~ResultWriter() {
-  if (file_ >= 0) H5Fclose(file_);
-}
+ResultWriter::~ResultWriter() = default;
 
 void ResultWriter::checkStep(double time, const std::vector<Field> &nodeFields,
                              const std::vector<Field> &cellFields) const {
@@ -134,11 +145,21 @@ void ResultWriter::writeStep(double time, const std::vector<Field> &nodeFields,
   checkStep(time, nodeFields, cellFields);
   const std::string group = stepGroupName(steps_.size());
   XdmfStep step{time, {}};
+  // Open for this step only: between steps the file is closed and complete, so a reader (ParaView
+  // on a running job) opens it as a finished one.
+  const Hdf5Handle file(H5Fopen(hdf5Path().c_str(), H5F_ACC_RDWR, unlockedAccess().get()), H5Fclose,
+                        "opening " + hdf5Path().string());
   try {
-    const Hdf5Handle g(H5Gcreate2(file_, group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+    const Hdf5Handle g(H5Gcreate2(file.get(), group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                        "creating group /" + group);
     writeTimeAttribute(g.get(), time);
     auto write = [&](const Field &f, std::size_t tuples, Centering center) {
+      if (f.components == 6) { // a symmetric tensor is written whole: see ResultWriter.hpp
+        const std::vector<double> full = fullSymmetricTensors(f.values);
+        writeDataset(g.get(), f.name, H5T_NATIVE_DOUBLE, full.data(), tuples, 9);
+        step.attributes.push_back({f.name, 9, center, "/" + group + "/" + f.name});
+        return;
+      }
       writeDataset(g.get(), f.name, H5T_NATIVE_DOUBLE, f.values.data(), tuples, f.components);
       step.attributes.push_back({f.name, f.components, center, "/" + group + "/" + f.name});
     };
@@ -147,10 +168,10 @@ void ResultWriter::writeStep(double time, const std::vector<Field> &nodeFields,
   } catch (...) {
     // Drop the half-written group so the file holds only complete steps and a retry can reuse
     // the name; the XDMF file still describes the previous steps only.
-    H5Ldelete(file_, group.c_str(), H5P_DEFAULT);
+    H5Ldelete(file.get(), group.c_str(), H5P_DEFAULT);
     throw;
   }
-  checkHdf5(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flushing " + hdf5Path().string());
+  checkHdf5(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing " + hdf5Path().string());
   steps_.push_back(std::move(step));
   writeXdmf();
 }

@@ -5,9 +5,17 @@
 // per field); <base>.xdmf (XDMF 3, a temporal collection, XdmfTimeSeries.hpp) points into it.
 //
 // Rank 0 writes (the caller gathers global arrays first). A run killed between calls leaves both
-// files readable with every step written so far: after a step the HDF5 file is flushed, and only
-// then is the XDMF file replaced atomically (AtomicFile.hpp), so it never names data that is not
-// on disk yet. HDF5 itself has no journal: a kill *during* the flush of a step can still damage
+// files readable with every step written so far: after a step the HDF5 file is flushed and
+// closed, and only then is the XDMF file replaced atomically (AtomicFile.hpp), so it never names
+// data that is not on disk yet.
+//
+// A symmetric tensor field (6 components, xx, yy, zz, xy, yz, xz) is written as the full 3x3
+// tensor (9 components, row-major, AttributeType "Tensor"): ParaView 5.11's two XDMF readers
+// disagree on "Tensor6" (Xdmf3ReaderS passes the six values through in VTK's order xx, yy, zz,
+// xy, yz, xz; the legacy XDMFReader reads them in the XDMF standard's xx, xy, xz, yy, yz, zz), so
+// either order shows sigma_yy as sigma_xy in one of them; nine components read alike in both
+// (tests/integration/paraview_readers.py). The .h5 is open only while a step is written, and without HDF5's
+// file locks, so ParaView opens a running job's files as they are. HDF5 itself has no journal: a kill *during* the flush of a step can still damage
 // the .h5 file; that window is milliseconds per step.
 
 #include <array>
@@ -52,7 +60,6 @@ private:
   std::filesystem::path directory_;
   std::string baseName_;
   XdmfMesh mesh_;
-  std::int64_t file_ = -1; // the open HDF5 file (an hid_t; <hdf5.h> stays out of this header)
   std::vector<XdmfStep> steps_;
 };
 

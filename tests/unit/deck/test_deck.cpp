@@ -130,6 +130,125 @@ TEST(Deck, CommandLineOverridesAreTypedAndChecked) {
   EXPECT_NE(msg.find("--set on the command line"), std::string::npos) << msg;
 }
 
+TEST(Deck, ValuesAreReadStrictlyWithFileLinePathTextAndWhatIsAllowed) {
+  // Each of these was read as a different number without a word before (strtod).
+  for (const char *nu : {"0,4999", "3.5abc", "2 3", "0x10", "", "eighty", "{}", "1e999", "inf", "nan"}) {
+    const auto path = writeDeck("strict.xml", std::string(R"X(  <ParameterList name="Material">
+    <Parameter name="Poisson's ratio" type="double" value=")X") + nu + R"X("/>
+  </ParameterList>
+)X");
+    const std::string msg = errorOf(Deck::fromFile(path));
+    EXPECT_NE(msg.find(path + ":3: parameter 'Material/Poisson's ratio': "), std::string::npos) << msg;
+    if (*nu) EXPECT_NE(msg.find(std::string("'") + nu + "'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("allowed: real number, -1 < value < 0.5"), std::string::npos) << msg;
+  }
+  // One bad entry refuses the array instead of zeroing it.
+  for (const char *value : {"{0, abc, 0}", "{nan,0,0}", "{0,-inf,0}", "{-1,-1, }"}) {
+    const std::string msg = errorOf(Deck::fromFile(writeDeck("array.xml", std::string(R"X(  <ParameterList name="Boundary conditions">
+    <ParameterList name="left"><Parameter name="value" type="Array(double)" value=")X") + value + R"X("/></ParameterList>
+  </ParameterList>
+)X")));
+    EXPECT_NE(msg.find("'Boundary conditions/left/value': "), std::string::npos) << msg;
+    EXPECT_NE(msg.find("entry"), std::string::npos) << msg;
+  }
+  for (const char *cells : {"{4.5,4,4}", "{1e308,2,2}"})
+    EXPECT_NE(errorOf(Deck::fromFile(writeDeck("cells.xml", std::string(R"X(  <ParameterList name="Box">
+    <Parameter name="cells" type="Array(int)" value=")X") + cells + R"X("/>
+  </ParameterList>
+)X"))).find("is not an integer"),
+              std::string::npos)
+        << cells;
+}
+
+TEST(Deck, OutOfRangeValuesAreShownAsWritten) {
+  // 0.49999999999999999 is 0.5 as a double; 0.4999999999999999 is not, and shows all its digits.
+  std::string msg = errorOf(Deck::fromFile(writeDeck("range2.xml", R"X(  <ParameterList name="Material">
+    <Parameter name="Poisson's ratio" type="double" value="0.50000000000001"/>
+  </ParameterList>
+)X")));
+  EXPECT_NE(msg.find("= 0.50000000000001 is out of range"), std::string::npos) << msg;
+  msg = errorOf(Deck::fromFile(writeDeck("range3.xml", R"X(  <ParameterList name="Box">
+    <Parameter name="cells" type="Array(int)" value="{4, 0, 4}"/>
+  </ParameterList>
+)X")));
+  EXPECT_NE(msg.find("has entry 2 = 0 out of range"), std::string::npos) << msg;
+}
+
+TEST(Deck, ParameterGivenTwiceIsRefusedWithBothLines) {
+  try {
+    Deck::fromFile(writeDeck("twice.xml", R"X(  <ParameterList name="Material">
+    <Parameter name="shear modulus" type="double" value="1000"/>
+    <Parameter name="shear modulus" type="double" value="2000"/>
+  </ParameterList>
+)X"));
+    ADD_FAILURE() << "accepted";
+  } catch (const DeckError &e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("twice.xml:4: 'Material/shear modulus' is given twice (first on line 3)"), std::string::npos) << msg;
+  }
+  // A section given twice as well (Teuchos merged the two).
+  EXPECT_THROW(Deck::fromFile(writeDeck("twice2.xml", R"X(  <ParameterList name="Material"/>
+  <ParameterList name="Material"/>
+)X")),
+               DeckError);
+}
+
+TEST(Deck, RefusesElementsTypesAndAttributesADeckDoesNotHave) {
+  const std::pair<const char *, const char *> cases[] = {
+      {R"(<Parameter name="x" type="float" value="1"/>)", "has type \"float\"; a deck's types are"},
+      {R"(<Parameter name="x" type="double"/>)", "needs both type"},
+      {R"(<Parameter type="double" value="1"/>)", "needs a name"},
+      {R"(<Parameter name="x" type="double" value="1" unit="Pa"/>)", "has no attribute 'unit'"},
+      {R"(<Param name="x"/>)", "<Param> is not part of a deck"},
+  };
+  for (const auto &[body, expected] : cases) {
+    try {
+      Deck::fromFile(writeDeck("elements.xml", std::string("  ") + body + "\n"));
+      ADD_FAILURE() << body;
+    } catch (const DeckError &e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("elements.xml:2: ")), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(Deck, WrittenDeckReadsBack) {
+  auto deck = Deck::fromFile(writeDeck("written.xml", R"X(  <ParameterList name="Material">
+    <Parameter name="Poisson's ratio" type="double" value="0.45"/>
+  </ParameterList>
+)X"));
+  deck.validate(schema());
+  const std::string path = ::testing::TempDir() + "written_back.xml";
+  std::ofstream(path) << deck.toXml();
+  auto again = Deck::fromFile(path);
+  again.validate(schema());
+  EXPECT_EQ(again.root().sublist("Material").get<double>("Poisson's ratio"), 0.45);
+  EXPECT_EQ(again.root().sublist("Box").get<Teuchos::Array<int>>("cells"), Teuchos::Array<int>(3, 4));
+}
+
+TEST(Deck, CommandLineValuesAreAsStrictAsTheFile) {
+  auto deck = Deck::fromFile(writeDeck("override3.xml", ""));
+  for (const char *assignment : {"Material/shear modulus=1e999", "Material/shear modulus=inf", "Material/shear modulus=3.5abc",
+                                 "Box/cells=4,,4", "Box/cells=4 4,4"}) {
+    try {
+      deck.applyOverride(assignment, schema());
+      ADD_FAILURE() << assignment;
+    } catch (const DeckError &e) {
+      const std::string msg = e.what();
+      EXPECT_EQ(msg.find("stod"), std::string::npos) << msg;
+      EXPECT_NE(msg.find("allowed: "), std::string::npos) << msg;
+    }
+  }
+  // A bad value in the file is replaced by a good one on the command line.
+  auto fixed = Deck::fromFile(writeDeck("override4.xml", R"X(  <ParameterList name="Material">
+    <Parameter name="Poisson's ratio" type="double" value="0,45"/>
+  </ParameterList>
+)X"));
+  fixed.applyOverride("Material/Poisson's ratio=0.45", schema());
+  fixed.validate(schema());
+  EXPECT_EQ(fixed.root().sublist("Material").get<double>("Poisson's ratio"), 0.45);
+}
+
 TEST(DeckReference, ListsEveryDeclaredParameterWithItsRange) {
   std::ostringstream out;
   glossa::io::writeDeckReference(schema(), out);

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# stop_signal.sh SIGNAL OUTDIR COMMAND...: starts COMMAND (a glossa run into OUTDIR, perhaps under
+# mpiexec), sends SIGNAL once summary.json records two steps, and passes when, within 30 s, the
+# run has ended and summary.json says it was interrupted by that signal (running false, the
+# reason in words) and describes the same last step as traces.csv. Without mpiexec the exit
+# status must be 3 and the reason must be on stderr.
+signal=$1 out=$2
+shift 2
+rm -rf "$out"
+"$@" >"$out.stdout" 2>"$out.stderr" &
+pid=$!
+steps() { /usr/bin/python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['steps']))" "$out/summary.json" 2>/dev/null || echo 0; }
+for _ in $(seq 1 600); do
+  [ "$(steps)" -ge 2 ] && break
+  kill -0 $pid 2>/dev/null || { echo "the run ended before two steps"; cat "$out.stderr"; exit 1; }
+  sleep 0.1
+done
+kill -s "$signal" $pid
+for _ in $(seq 1 300); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+if kill -0 $pid 2>/dev/null; then echo "still running 30 s after $signal"; kill -9 $pid; exit 1; fi
+wait $pid
+status=$?
+cat "$out.stderr"
+/usr/bin/python3 - "$out" "$signal" "$1" "$status" <<'PY' || exit 1
+import csv, json, sys
+out, signal, command, status = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
+s = json.load(open(out + "/summary.json"))
+assert s["running"] is False, "summary.json still says running"
+assert s["interrupted"] == signal, s.get("interrupted")
+assert s["converged"] is False
+assert ("interrupted by " + signal) in s["failure"], s["failure"]
+times = sorted({float(r["time"]) for r in csv.DictReader(open(out + "/traces.csv"))})
+last = s["steps"][-1]["time"]
+assert abs(times[-1] - last) <= 1e-12 * max(1.0, abs(last)), f"traces.csv ends at {times[-1]}, summary.json at {last}"
+if not command.endswith("mpiexec"):
+    assert status == 3, f"exit status {status}, expected 3"
+    assert ("stopped: interrupted by " + signal) in open(out + ".stderr").read()
+print(f"interrupted by {signal} after {len(s['steps'])} steps (t = {last}), exit status {status}")
+PY
