@@ -366,6 +366,10 @@ tongue needs, so binary genes keep every group off and the tongue moves as the p
 GRADIENT = """
 Gradient controller: projected Gauss-Newton on continuous inputs in [0, 1] from the previous
 step's, sensitivities from the converged tangent, at most 4 iterations per step."""
+SUPINE_GA = """
+Supine, the GA stops after 2 generations without improvement (not 3): the supine solves cost
+more, and so the run stays within 30 min on 2 ranks (measured: 27 min, eq. 25 mean 5.2 mm,
+against 40 min and 6.0 mm with 3)."""
 CONTROL_COMMON = {"control points": ("string", CONTROL_POINTS), "always evaluated": ("string", "GGa, GGm, GGp")}
 CONTROLLERS = {
     "ga": (GA, dict(CONTROL_COMMON, **{"type": ("string", "genetic algorithm"), "genes": ("string", "continuous"),
@@ -384,6 +388,12 @@ for posture, g in POSTURES:
          {}, gravity=g, pressure=-350.0, end_time=8.75, step=0.3125, breathing_start=1.25,
          reference="s8_1/reference_inverse.txt")
     for controller, (text, control) in CONTROLLERS.items():
+        if controller == "ga" and posture == "supine":
+            # Supine solves cost more (72 s per GA step against 56 upright): stopping after 2
+            # generations without improvement keeps the run within 30 min on 2 ranks, and was
+            # measured better too (doc/tongue.md, s8_5).
+            control = dict(control, **{"stagnation generations": ("int", 2)})
+            text += SUPINE_GA
         deck(f"s8_5_{controller}_{posture}",
              f"Paper §8.5 (Figs. 11 and 12): {posture} posture, three 350 Pa breathing cycles, position\n"
              "maintenance by neural control.\n" + COMMON + BREATHING + CONTROLLED + text + gravity,
