@@ -196,6 +196,13 @@ class AbaqusParser {
         const std::int64_t a = integer(f[0], "id"), b = integer(f[1], "id");
         const std::int64_t step = f.size() == 3 ? integer(f[2], "step") : 1;
         if (step < 1 || b < a) in_.fail("GENERATE needs first <= last and a positive step");
+        // The range may only name ids defined above: '1, 2147483648' would otherwise fill memory
+        // with ids no node has (found by the fuzz test) before the unknown id is reported.
+        const std::int64_t largest = elset ? (elements_.empty() ? 0 : elements_.rbegin()->first)
+                                           : (nodeIds_.empty() ? 0 : *nodeIds_.rbegin());
+        if (b > largest)
+          in_.fail("GENERATE range " + f[0] + " to " + f[1] + " reaches past the largest " +
+                   (elset ? "element" : "node") + " id defined above it (" + std::to_string(largest) + ")");
         for (std::int64_t id = a; id <= b; id += step) s.ids.push_back(id);
         return;
       }

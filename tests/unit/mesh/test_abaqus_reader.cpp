@@ -142,6 +142,11 @@ TEST(AbaqusReader, RefusesMalformedFiles) {
               {f + ":39:", "duplicate node id 3"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*NODE\n30, 0, 0\n")),
               {f + ":39:", "expected 'id, x, y, z'"});
+  // A GENERATE range past the ids defined (the fuzz test's '1, 2147483648' filled memory).
+  expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*NSET, NSET=huge, GENERATE\n1, 2147483648\n")),
+              {f + ":39:", "GENERATE range 1 to 2147483648 reaches past the largest node id defined above it (12)"});
+  expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELSET, ELSET=huge, GENERATE\n1, 99\n")),
+              {f + ":39:", "reaches past the largest element id defined above it (20)"});
   expectError(read("1, 2, 3\n"), {f + ":1:", "data line before any keyword"});
   expectError(read(kCubeNodes), {f + ":", "no hexahedral elements"});
 }
