@@ -55,6 +55,12 @@ double peakMemoryMegabytes() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
+// "interrupted by SIGTERM after step 12 (t = 3.75)": the reason the summary and the log give.
+std::string interruption(int signal, std::size_t steps, double time) {
+  return std::string("interrupted by ") + signalName(signal) + " after step " + std::to_string(steps) + " (t = " +
+         std::to_string(time) + ")";
+}
+
 // A summary (as last written) marked as ended by `signal` after its last step.
 void markInterrupted(nlohmann::json &summary, int signal) {
   const std::size_t steps = summary.contains("steps") ? summary["steps"].size() : 0;
@@ -62,8 +68,16 @@ void markInterrupted(nlohmann::json &summary, int signal) {
   summary["running"] = false;
   summary["converged"] = false;
   summary["interrupted"] = signalName(signal);
-  summary["failure"] = std::string("interrupted by ") + signalName(signal) + " after step " + std::to_string(steps) +
-                       " (t = " + std::to_string(time) + "); the files hold the steps up to there";
+  summary["failure"] = interruption(signal, steps, time) + "; the files hold the steps up to there";
+}
+
+// Creates the output directory and removes an earlier run's files from it (a controlled run's
+// activation.csv must not stand beside a later passive run's traces). Rank 0 only.
+void prepareOutputDirectory(const std::filesystem::path &dir) {
+  std::filesystem::create_directories(dir);
+  for (const char *file : {"results.xdmf", "results.h5", "traces.csv", "reactions.csv", "activation.csv",
+                           "controls.csv", "summary.json"})
+    std::filesystem::remove(dir / file);
 }
 
 } // namespace
@@ -237,14 +251,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
 
   dir_ = options.outputDirectory.empty() ? std::filesystem::path(D.sublist("Output").get<std::string>("directory"))
                                          : options.outputDirectory;
-  if (root_) {
-    std::filesystem::create_directories(dir_);
-    // A rerun into the same directory: an earlier run's files (e.g. activation.csv of a
-    // controlled run, when this one has no muscles) must not stand beside this run's.
-    for (const char *file : {"results.xdmf", "results.h5", "traces.csv", "reactions.csv", "activation.csv",
-                             "controls.csv", "summary.json"})
-      std::filesystem::remove(dir_ / file);
-  }
+  if (root_) prepareOutputDirectory(dir_);
   comm->barrier();
   recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_);
   every_ = D.sublist("Output").get<int>("every");
@@ -564,8 +571,7 @@ nlohmann::json Simulation::run() {
     if (anySignal != 0) {
       stoppedBy_ = anySignal;
       converged_ = false;
-      failure_ = std::string("interrupted by ") + signalName(anySignal) + " after step " + std::to_string(stepNumber_) +
-                 " (t = " + std::to_string(t_) + ")";
+      failure_ = interruption(anySignal, static_cast<std::size_t>(stepNumber_), t_);
       break;
     }
     if (attemptStep()) commitTrial();
