@@ -34,4 +34,41 @@ IsochoricInvariant isochoricInvariant(const Eigen::Matrix3d &F, const Eigen::Mat
   return r;
 }
 
+// K = tr(C-bar^2) = J^{-4/3} T, T = tr(C^2) = C : C.
+// dT/dF_iJ = 4 (F C)_iJ;  d2T/dF_iJ dF_kL = 4 (d_ik C_LJ + F_iL F_kJ + B_ik d_JL), B = F F^T.
+// dK/dF_iJ = J^{-4/3} (dT_iJ - 4/3 T Finv_Ji)
+// d2K = J^{-4/3} [ d2T - 4/3 (dT_iJ Finv_Lk + Finv_Ji dT_kL) + 16/9 T Finv_Ji Finv_Lk
+//                  + 4/3 T Finv_Li Finv_Jk ]
+// and I2-bar = 1/2 (I1-bar^2 - K): dI2 = I1 dI1 - dK/2, d2I2 = dI1 (x) dI1 + I1 d2I1 - d2K/2.
+IsochoricInvariant isochoricI2(const Eigen::Matrix3d &F) {
+  const double J = F.determinant();
+  const Eigen::Matrix3d Finv = F.inverse();
+  const Eigen::Matrix3d C = F.transpose() * F;
+  const Eigen::Matrix3d B = F * F.transpose();
+  const Eigen::Matrix3d dT = 4.0 * F * C;
+  const double T = (C.array() * C.array()).sum();
+  const double Jm43 = std::pow(J, -4.0 / 3.0);
+
+  const IsochoricInvariant I1 = isochoricI1(F);
+  const Vector9 g1 = flatten(I1.dF);
+  IsochoricInvariant r;
+  const double K = Jm43 * T;
+  r.value = 0.5 * (I1.value * I1.value - K);
+  const Eigen::Matrix3d dK = Jm43 * (dT - (4.0 / 3.0) * T * Finv.transpose());
+  r.dF = I1.value * I1.dF - 0.5 * dK;
+  Tangent9 d2K;
+  for (int i = 0; i < 3; ++i)
+    for (int J_ = 0; J_ < 3; ++J_)
+      for (int k = 0; k < 3; ++k)
+        for (int L = 0; L < 3; ++L) {
+          double v = 4.0 * ((i == k ? C(L, J_) : 0.0) + F(i, L) * F(k, J_) + (J_ == L ? B(i, k) : 0.0));
+          v -= 4.0 / 3.0 * (dT(i, J_) * Finv(L, k) + Finv(J_, i) * dT(k, L));
+          v += 16.0 / 9.0 * T * Finv(J_, i) * Finv(L, k);
+          v += 4.0 / 3.0 * T * Finv(L, i) * Finv(J_, k);
+          d2K(i * 3 + J_, k * 3 + L) = Jm43 * v;
+        }
+  r.d2F = g1 * g1.transpose() + I1.value * I1.d2F - 0.5 * d2K;
+  return r;
+}
+
 }  // namespace glossa::materials

@@ -1,7 +1,8 @@
 #pragma once
 // Isochoric invariants of C-bar = J^{-2/3} F^T F and their first and second derivatives with
 // respect to F (DESIGN.md §1): I1-bar = tr C-bar (the Fung laws, eq. 9-10) and
-// I4-bar = N . C-bar N = lambda-bar_f^2 (the fibre families, eq. 2-6). Both are
+// I4-bar = N . C-bar N = lambda-bar_f^2 (the fibre families, eq. 2-6); and I2-bar, the second
+// invariant of C-bar (the Mooney-Rivlin laws), from I1-bar and tr(C-bar^2). I1-bar and I4-bar are
 // I_M-bar = J^{-2/3} C : M for a symmetric structural tensor M (M = 1 or M = N (x) N), so one
 // routine serves both. Any energy psi(I_M-bar) then has P = psi' dI/dF and
 // dP/dF = psi'' dI/dF (x) dI/dF + psi' d2I/dF2, insensitive to pure dilatation by construction.
@@ -40,5 +41,9 @@ inline IsochoricInvariant isochoricI1(const Eigen::Matrix3d &F) {
 inline IsochoricInvariant isochoricI4(const Eigen::Matrix3d &F, const Eigen::Vector3d &N) {
   return isochoricInvariant(F, N * N.transpose());
 }
+
+// I2-bar = 1/2 (I1-bar^2 - tr(C-bar^2)), the second invariant of C-bar (the Mooney-Rivlin laws).
+// Requires det F > 0.
+IsochoricInvariant isochoricI2(const Eigen::Matrix3d &F);
 
 }  // namespace glossa::materials

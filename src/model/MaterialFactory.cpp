@@ -11,9 +11,11 @@
 #include "materials/ContractileCurveSets.hpp"
 #include "materials/FungIsotropic.hpp"
 #include "materials/HillMuscleFibre.hpp"
+#include "materials/MooneyRivlin.hpp"
 #include "materials/NeoHookean.hpp"
 #include "materials/ParallelElement.hpp"
 #include "materials/SeriesElement.hpp"
+#include "materials/Yeoh.hpp"
 #include "loads/ExternalMuscle.hpp"
 #include "model/DeckSets.hpp"
 #include "model/FibreDirectionField.hpp"
@@ -267,15 +269,27 @@ ExternalMuscleGroup readExternalMuscle(const io::Deck &deck, const mesh::HexMesh
 ParameterList materialParameters() {
   ParameterList p;
   io::declareString(p, "type", "neo-Hookean",
-                    "isochoric matrix law: neo-Hookean (eq. 8, 'shear modulus') or Fung "
-                    "A (exp(B (I1bar - 3)) - 1) (eq. 9 adipose, eq. 10 muscle matrix)",
-                    {"neo-Hookean", "Fung"});
+                    "isochoric matrix law: neo-Hookean (eq. 8, 'shear modulus'); Fung "
+                    "A (exp(B (I1bar - 3)) - 1) (eq. 9 adipose, eq. 10 muscle matrix); Mooney-Rivlin "
+                    "C10 (I1bar-3) + C01 (I2bar-3) + C11 (I1bar-3)(I2bar-3) + C20 (I1bar-3)^2 + C02 (I2bar-3)^2 "
+                    "(C10 and C01 alone: the two-parameter law; C10 = 1037, C20 = 486 Pa: the ArtiSynth "
+                    "tongue's); Yeoh C10 (I1bar-3) + C20 (I1bar-3)^2 + C30 (I1bar-3)^3",
+                    {"neo-Hookean", "Fung", "Mooney-Rivlin", "Yeoh"});
   io::declareDouble(p, "shear modulus", 80.194e6, "Pa", "mu of the neo-Hookean law", io::Range::positive());
   io::declareDouble(p, "Fung A", 1652.0, "Pa",
                     "Fung prefactor (muscle matrix c = 1.652 kPa, Table I; adipose A1 = 2500 Pa); see "
                     "doc/materials.md for the convention", io::Range::positive());
   io::declareDouble(p, "Fung B", 0.6265, "", "Fung exponent (muscle matrix b = 0.6265; adipose B1 = 2.75)",
                     io::Range::positive());
+  io::declareDouble(p, "C10", 1037.0, "Pa",
+                    "Mooney-Rivlin and Yeoh: coefficient of (I1bar - 3) (the ArtiSynth tongue: 1037 Pa)");
+  for (const auto &[name, doc] :
+       {std::pair{"C01", "Mooney-Rivlin: coefficient of (I2bar - 3)"},
+        {"C11", "Mooney-Rivlin: coefficient of (I1bar - 3)(I2bar - 3)"},
+        {"C20", "Mooney-Rivlin and Yeoh: coefficient of (I1bar - 3)^2 (the ArtiSynth tongue: 486 Pa)"},
+        {"C02", "Mooney-Rivlin: coefficient of (I2bar - 3)^2"},
+        {"C30", "Yeoh: coefficient of (I1bar - 3)^3"}})
+    io::declareDouble(p, name, 0.0, "Pa", doc);
   io::declareDouble(p, "Poisson's ratio", 0.4999, "",
                     "nu, gives the bulk modulus kappa = 2 mu (1+nu) / (3 (1-2nu)) from the law's "
                     "small-strain shear modulus unless 'bulk modulus' is set; 0.5: exactly "
@@ -330,10 +344,26 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
   const ParameterList &mat = deck.root().sublist("Material");
   BuiltMaterial built;
   std::shared_ptr<const materials::IsochoricMaterial> matrix;
-  if (mat.get<std::string>("type") == "Fung")
-    matrix = std::make_shared<materials::FungIsotropic>(mat.get<double>("Fung A"), mat.get<double>("Fung B"));
-  else
-    matrix = std::make_shared<materials::NeoHookean>(mat.get<double>("shear modulus"));
+  const auto type = mat.get<std::string>("type");
+  try {
+    if (type == "Fung") {
+      matrix = std::make_shared<materials::FungIsotropic>(mat.get<double>("Fung A"), mat.get<double>("Fung B"));
+    } else if (type == "Mooney-Rivlin") {
+      materials::MooneyRivlinParameters c;
+      c.C10 = mat.get<double>("C10");
+      c.C01 = mat.get<double>("C01");
+      c.C11 = mat.get<double>("C11");
+      c.C20 = mat.get<double>("C20");
+      c.C02 = mat.get<double>("C02");
+      matrix = std::make_shared<materials::MooneyRivlin>(c);
+    } else if (type == "Yeoh") {
+      matrix = std::make_shared<materials::Yeoh>(mat.get<double>("C10"), mat.get<double>("C20"), mat.get<double>("C30"));
+    } else {
+      matrix = std::make_shared<materials::NeoHookean>(mat.get<double>("shear modulus"));
+    }
+  } catch (const std::invalid_argument &e) {
+    throw io::DeckError(deck.where({"Material", "type"}) + " = " + type + ": " + e.what());
+  }
   built.isochoric = matrix;
   built.density = mat.get<double>("density");
 
