@@ -11,11 +11,13 @@
 namespace glossa::app {
 
 nlohmann::json describeMesh(const std::string &file, const MeshCommandOptions &options) {
-  mesh::HexMesh m = mesh::readMeshFile(file, options.format).mesh;
+  mesh::ImportedMesh imported = mesh::readMeshFile(file, options.format);
+  mesh::HexMesh m = std::move(imported.mesh);
   if (options.refine > 0) m = mesh::refineUniformly(m, options.refine);
   nlohmann::json r;
   r["file"] = file;
   r["refine"] = options.refine;
+  r["notes"] = imported.notes;
   r["nodes"] = m.nodes.size();
   r["elements"] = m.numElements();
   r["volume"] = mesh::meshVolume(m);
@@ -67,6 +69,8 @@ std::string meshReportText(const nlohmann::json &r) {
   s << "  parts " << c.at("parts") << "  unused nodes " << c.at("unused_nodes") << "  coincident node pairs "
     << c.at("coincident_node_pairs") << "  duplicate elements " << c.at("duplicate_elements")
     << "  elements with an inverted corner " << c.at("inverted_corner_elements") << "\n";
+  if (r.contains("notes"))
+    for (const auto &note : r.at("notes")) s << "  note: " << note.get<std::string>() << "\n";
   const auto &sets = r.at("sets");
   for (const char *kind : {"element", "face", "node"}) {
     if (!sets.contains(kind)) continue;

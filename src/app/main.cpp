@@ -213,7 +213,9 @@ int main(int argc, char **argv) {
     if (a.command == "validate") {
       const auto deck = loadDeck(a, schema);
       // Building the scene checks what needs the mesh too (set names, named points).
-      glossa::model::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
+      const auto scene = glossa::model::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
+      if (root)
+        for (const std::string &note : scene.meshNotes) std::fprintf(stderr, "glossa: note: %s\n", note.c_str());
       if (root) std::cout << deck.toXml();
       return 0;
     }

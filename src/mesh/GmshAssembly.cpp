@@ -82,7 +82,7 @@ void Assembly::elementTag(std::int64_t tag, Place place) {
 }
 
 bool Assembly::accepts(int dim, std::int64_t type, bool grouped, const std::function<std::string()> &entity,
-                       Place place) const {
+                       Place place) {
   if (isRead(dim, type)) return dim == 3 || grouped;
   if (dim != 3 && !grouped) return false;  // an unused element of an ungrouped entity
   const std::string where = entity();
@@ -104,9 +104,14 @@ bool Assembly::accepts(int dim, std::int64_t type, bool grouped, const std::func
                     "volume transfinite and recombined, or " + kSubdivide);
   }
   if (dim == 2 && oneOf(type, {2, 9, 20, 21})) {
-    fail(place, where + " contains triangles (" + gmshType +
-                    "): a face set is made of hexahedron faces, quadrangles; 'Recombine Surface' or " +
-                    kSubdivide);
+    // Refused at the end: Gmsh writes surfaces before volumes, and when the volume holds
+    // tetrahedra, saying so is the more useful message.
+    if (!pendingRefusal_) {
+      pendingRefusal_ = std::make_pair(place, where + " contains triangles (" + gmshType +
+                                                  "): a face set is made of hexahedron faces, quadrangles; "
+                                                  "'Recombine Surface' or " + kSubdivide);
+    }
+    return false;
   }
   fail(place, "element " + typeName(type) + " in " + where +
                   ": Glossa reads hexahedra (Gmsh types 5, 17, 12) in volumes and quadrangles (3, 16, 10), "
@@ -231,7 +236,11 @@ void Assembly::dropMidsideNodes() {
 
 ImportedMesh Assembly::finish(Place end) {
   HexMesh &mesh = result_.mesh;
-  if (mesh.elements.empty()) fail(end, "no hexahedra (Gmsh types 5, 17, 12) in the file");
+  if (pendingRefusal_) fail(pendingRefusal_->first, pendingRefusal_->second);
+  if (mesh.elements.empty()) {
+    fail(end, "no hexahedra (Gmsh types 5, 17, 12) in the file: mesh the volume (gmsh -3) and give it a "
+              "physical group (Gmsh saves only the elements of physical groups)");
+  }
   dropMidsideNodes();
   result_.indexFileIds();
   importing::checkElements(mesh, result_.elementFileIds, [&](std::size_t e, const std::string &reason) {

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -61,12 +62,13 @@ class Assembly {
   // second order) in volumes always, quadrangles, lines and points only in physical groups
   // (`grouped`); other elements of ungrouped lower-dimensional entities are skipped. Anything
   // else is refused naming the type, with advice for tetrahedra, prisms, pyramids and
-  // triangles. `where` names the entity for the message ("volume entity 2").
+  // triangles (triangles only at finish(), so that tetrahedra met later are named first).
+  // `where` names the entity for the message ("volume entity 2"), built only when needed.
   bool accepts(int dim, std::int64_t type, bool grouped, const std::function<std::string()> &where,
-               Place place) const;
+               Place place);
 
   // An accepted element: `nodes` holds the type's node tags in Gmsh order; `physicals` the
-  // physical tags of its entity. `entity` keys the MSH 2 duplicates (see Assembly.cpp).
+  // physical tags of its entity. `entity` keys the MSH 2 duplicates (see GmshAssembly.cpp).
   void element(int dim, std::int64_t type, std::int64_t tag, std::int64_t entity, const std::vector<std::int64_t> &nodes,
                const std::vector<std::int64_t> &physicals, Place place);
 
@@ -100,6 +102,7 @@ class Assembly {
   std::map<std::int64_t, std::vector<Quad>> surfaceMembers_;
   std::map<std::pair<std::int64_t, std::int64_t>, std::vector<NodeId>> lowerMembers_;  // (dim, tag)
   std::vector<bool> cornerNode_, midsideNode_;  // per node: a corner / a higher-order node of some element
+  std::optional<std::pair<Place, std::string>> pendingRefusal_;  // triangles in a face set
   std::map<std::int64_t, std::size_t> secondOrderCount_;  // Gmsh type -> elements read by their corners
 };
 

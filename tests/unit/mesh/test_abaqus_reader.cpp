@@ -133,7 +133,7 @@ TEST(AbaqusReader, RefusesMalformedFiles) {
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*SURFACE, NAME=s\n1, S7\n")),
               {f + ":39:", "'S7' is not S1..S6"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELSET, ELSET=mixed\n1, 20\n")),
-              {f + ":38:", "'mixed' mixes hexahedra and quadrilaterals"});
+              {f + ":38:", "'mixed' mixes hexahedra, quadrilaterals and lines"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELSET, ELSET=far\n1, 77\n")),
               {f + ":38:", "refers to element 77"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*INCLUDE, INPUT=more.inp\n")),
