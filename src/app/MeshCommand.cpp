@@ -2,11 +2,14 @@
 
 #include <sstream>
 
+#include "io/output/OutputError.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "mesh/MeshChecks.hpp"
+#include "mesh/MeshError.hpp"
 #include "mesh/MeshFile.hpp"
 #include "mesh/MeshQuality.hpp"
 #include "mesh/MeshRefinement.hpp"
+#include "mesh/MeshWriter.hpp"
 
 namespace glossa::app {
 
@@ -39,7 +42,18 @@ nlohmann::json describeMesh(const std::string &file, const MeshCommandOptions &o
   for (const auto &[name, faces] : m.faceSets) sets["face"][name] = {{"size", faces.size()}};
   for (const auto &[name, nodes] : m.nodeSets) sets["node"][name] = {{"size", nodes.size()}};
   r["sets"] = sets;
-  if (!options.output.empty()) {
+  const std::string extension = options.output.extension().string();
+  if (extension == ".msh" || extension == ".inp") {
+    // A mesh file with every set, face sets included (MeshWriter.hpp), for Gmsh or a solver.
+    try {
+      extension == ".msh" ? mesh::writeGmsh(m, options.output.string()) : mesh::writeAbaqus(m, options.output.string());
+    } catch (const mesh::MeshError &) {
+      throw;
+    } catch (const std::runtime_error &e) {
+      throw io::OutputError(e.what());
+    }
+    r["written"] = options.output.string();
+  } else if (!options.output.empty()) {
     std::vector<std::array<std::int64_t, 8>> hexes(m.elements.begin(), m.elements.end());
     io::ResultWriter writer(options.output, "mesh", m.nodes, hexes);
     std::vector<io::Field> cells;

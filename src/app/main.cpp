@@ -47,9 +47,10 @@ usage:
       (uniaxial, simple shear or a table of F) with its muscle groups' inputs; writes
       stress, fibre and contractile stretches, tensions and activations to FILE
       (default: point.csv)
-  glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR]
-      read a mesh (Gmsh .msh 4.1, Abaqus .inp, ANSYS .node/.elem), optionally refine it,
-      and print its counts, sets, volume and element quality (--output: XDMF for ParaView)
+  glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR|OUT.msh|OUT.inp]
+      read a mesh (Gmsh .msh 2.2/4.1 ASCII or binary, Abaqus .inp, ANSYS .node/.elem),
+      optionally refine it, and print its counts, sets, volume and element quality
+      (--output DIR: XDMF for ParaView; OUT.msh or OUT.inp: the mesh with all its sets)
   glossa zero-strain DECK.xml --output FILE [--method approximate|inverse] [--tolerance T]
          [--max-iterations N] [--set path=value ...] [--quiet]
       the zero-strain configuration (paper §8.1) of a deck loaded by gravity alone: approximate
