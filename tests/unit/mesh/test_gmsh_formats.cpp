@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <random>
 
 #include "ImportTestSupport.hpp"
 #include "mesh/GmshReader.hpp"
+#include "mesh/MeshError.hpp"
 #include "mesh/MeshChecks.hpp"
 #include "mesh/MeshQuality.hpp"
 
@@ -269,6 +271,40 @@ TEST(GmshFormats, RefusesNonHexahedraByName) {
   expectError([f] { readGmsh(f); },
               {f + ": byte " + std::to_string(block) + ":",
                "volume entity 2 (physical 'muscle tissue', 'upper') contains tetrahedra (Gmsh type 4"});
+}
+
+// A bounded fuzz of both binary layouts: bytes flipped, 4- and 8-byte fields set to extreme
+// values, the file cut anywhere. Every mutant is read or refused with a MeshError; anything
+// else (another exception, a crash, an allocation the file cannot back) fails the test.
+TEST(GmshFormats, BinaryMutantsAreReadOrRefused) {
+  ScratchDir dir("gmsh_fuzz");
+  const std::string f = dir.file("mutant.msh");
+  std::mt19937_64 random(20261202);
+  int refused = 0, read = 0;
+  for (const std::string &good : {twoCubes22Binary().str(), twoCubes41Binary().str()}) {
+    const std::size_t start = good.find("$EndMeshFormat");  // past the text a mutant would only break
+    for (int i = 0; i < 600; ++i) {
+      std::string bytes = good;
+      const std::size_t at = start + random() % (bytes.size() - start - 8);
+      switch (i % 4) {
+        case 0: bytes[at] = static_cast<char>(bytes[at] ^ (1 << (random() % 8))); break;
+        case 1: put<std::int32_t>(bytes, at, i % 8 < 4 ? -1 : std::numeric_limits<std::int32_t>::max()); break;
+        case 2: put<std::uint64_t>(bytes, at, std::uint64_t(1) << (32 + random() % 32)); break;
+        default: bytes.resize(at); break;
+      }
+      dir.write("mutant.msh", bytes);
+      try {
+        readGmsh(f);
+        ++read;
+      } catch (const MeshError &e) {
+        EXPECT_EQ(std::string(e.what()).rfind(f + ":", 0), 0u) << e.what();
+        ++refused;
+      }
+    }
+  }
+  // Most mutants break something; some (a flipped coordinate bit) are still a valid mesh.
+  EXPECT_GT(refused, 600);
+  EXPECT_GT(read, 10);
 }
 
 // One 20-node hexahedron (type 17, the unit cube, its 12 edge nodes 9..20 after the corners
