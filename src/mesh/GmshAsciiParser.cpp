@@ -123,8 +123,9 @@ class AsciiParser {
     const auto t = tokens("'version file-type data-size'");
     if (t.size() != 3) in_.fail("expected 'version file-type data-size'");
     if (t[0] != "4.1" && t[0] != "2.2") {
-      in_.fail("MSH version " + t[0] +
-               " is not supported; Glossa reads MSH 4.1 and 2.2, ASCII or binary (gmsh -format msh41 or msh22)");
+      in_.fail(
+          "MSH version " + t[0] +
+          " is not supported; Glossa reads MSH 4.1 and 2.2, ASCII or binary (gmsh -format msh41 or msh22)");
     }
     // A binary file is dispatched to the binary parser before this one; a file that says
     // binary here has binary bytes that the line reader has already split.
@@ -231,7 +232,8 @@ class AsciiParser {
       }
       const std::vector<std::int64_t> &physicals = found == entityPhysicals_.end() ? none : found->second;
       const int d = static_cast<int>(dim);
-      const bool read = assembly_.accepts(d, type, !physicals.empty(), [&] { return assembly_.entityName(d, entity, physicals); }, here());
+      const bool read = assembly_.accepts(
+          d, type, !physicals.empty(), [&] { return assembly_.entityName(d, entity, physicals); }, here());
       for (std::int64_t i = 0; i < n; ++i) {
         const auto et = tokens("an element");
         const std::int64_t tag = integer(et[0], "element tag");
@@ -278,13 +280,15 @@ class AsciiParser {
       assembly_.elementTag(tag, here());
       const ElementType *known = elementType(type);
       if (!known) in_.fail("element " + t[0] + " has Gmsh type " + t[1] + ", which Glossa does not know");
-      if (t.size() < 3 + static_cast<std::size_t>(ntags)) in_.fail("element " + t[0] + " is truncated in its tags");
+      if (t.size() < 3 + static_cast<std::size_t>(ntags))
+        in_.fail("element " + t[0] + " is truncated in its tags");
       const std::int64_t physical = ntags >= 1 ? integer(t[3], "physical tag") : 0;
       const std::int64_t entity = ntags >= 2 ? integer(t[4], "entity tag") : 0;
       const std::vector<std::int64_t> physicals =
           physical == 0 ? std::vector<std::int64_t>{} : std::vector<std::int64_t>{physical};
-      if (!assembly_.accepts(known->dim, type, physical != 0, [&] { return assembly_.entityName(known->dim, entity, physicals); },
-                             here())) {
+      if (!assembly_.accepts(
+              known->dim, type, physical != 0,
+              [&] { return assembly_.entityName(known->dim, entity, physicals); }, here())) {
         continue;
       }
       std::vector<std::int64_t> nodes;

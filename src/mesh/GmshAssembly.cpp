@@ -18,17 +18,17 @@ namespace {
 // The Gmsh element types (numbers of the MSH format) a hexahedral mesh may meet, up to third
 // order: enough to name what is refused and, in binary files, to step over what is skipped.
 const std::map<std::int64_t, ElementType> kTypes = {
-    {1, {1, 2, 2, "2-node line"}},          {2, {2, 3, 3, "3-node triangle"}},
-    {3, {2, 4, 4, "4-node quadrangle"}},    {4, {3, 4, 4, "4-node tetrahedron"}},
-    {5, {3, 8, 8, "8-node hexahedron"}},    {6, {3, 6, 6, "6-node prism"}},
-    {7, {3, 5, 5, "5-node pyramid"}},       {8, {1, 3, 2, "3-node line"}},
-    {9, {2, 6, 3, "6-node triangle"}},      {10, {2, 9, 4, "9-node quadrangle"}},
+    {1, {1, 2, 2, "2-node line"}},           {2, {2, 3, 3, "3-node triangle"}},
+    {3, {2, 4, 4, "4-node quadrangle"}},     {4, {3, 4, 4, "4-node tetrahedron"}},
+    {5, {3, 8, 8, "8-node hexahedron"}},     {6, {3, 6, 6, "6-node prism"}},
+    {7, {3, 5, 5, "5-node pyramid"}},        {8, {1, 3, 2, "3-node line"}},
+    {9, {2, 6, 3, "6-node triangle"}},       {10, {2, 9, 4, "9-node quadrangle"}},
     {11, {3, 10, 4, "10-node tetrahedron"}}, {12, {3, 27, 8, "27-node hexahedron"}},
-    {13, {3, 18, 6, "18-node prism"}},      {14, {3, 14, 5, "14-node pyramid"}},
-    {15, {0, 1, 1, "1-node point"}},        {16, {2, 8, 4, "8-node quadrangle"}},
-    {17, {3, 20, 8, "20-node hexahedron"}}, {18, {3, 15, 6, "15-node prism"}},
-    {19, {3, 13, 5, "13-node pyramid"}},    {20, {2, 9, 3, "9-node triangle"}},
-    {21, {2, 10, 3, "10-node triangle"}},   {26, {1, 4, 2, "4-node line"}},
+    {13, {3, 18, 6, "18-node prism"}},       {14, {3, 14, 5, "14-node pyramid"}},
+    {15, {0, 1, 1, "1-node point"}},         {16, {2, 8, 4, "8-node quadrangle"}},
+    {17, {3, 20, 8, "20-node hexahedron"}},  {18, {3, 15, 6, "15-node prism"}},
+    {19, {3, 13, 5, "13-node pyramid"}},     {20, {2, 9, 3, "9-node triangle"}},
+    {21, {2, 10, 3, "10-node triangle"}},    {26, {1, 4, 2, "4-node line"}},
     {29, {3, 20, 4, "20-node tetrahedron"}}, {36, {2, 16, 4, "16-node quadrangle"}},
     {92, {3, 64, 8, "64-node hexahedron"}}};
 
@@ -37,10 +37,14 @@ const std::map<std::int64_t, ElementType> kTypes = {
 // the trilinear mesh).
 bool isRead(int dim, std::int64_t type) {
   switch (dim) {
-    case 3: return type == 5 || type == 12 || type == 17;
-    case 2: return type == 3 || type == 10 || type == 16;
-    case 1: return type == 1 || type == 8;
-    default: return type == 15;
+    case 3:
+      return type == 5 || type == 12 || type == 17;
+    case 2:
+      return type == 3 || type == 10 || type == 16;
+    case 1:
+      return type == 1 || type == 8;
+    default:
+      return type == 15;
   }
 }
 
@@ -87,21 +91,25 @@ bool Assembly::accepts(int dim, std::int64_t type, bool grouped, const std::func
   if (dim != 3 && !grouped) return false;  // an unused element of an ungrouped entity
   const std::string where = entity();
   const ElementType *known = elementType(type);
-  const std::string gmshType = "Gmsh type " + std::to_string(type) + (known ? std::string(", ") + known->name : "");
+  const std::string gmshType =
+      "Gmsh type " + std::to_string(type) + (known ? std::string(", ") + known->name : "");
   if (dim == 3 && oneOf(type, {4, 11, 29})) {
     fail(place, where + " contains tetrahedra (" + gmshType +
                     "): Glossa needs hexahedra; mesh with Recombine/Transfinite (a transfinite volume, or an "
-                    "extrusion of recombined surfaces with Layers and Recombine) or " + kSubdivide);
+                    "extrusion of recombined surfaces with Layers and Recombine) or " +
+                    kSubdivide);
   }
   if (dim == 3 && oneOf(type, {6, 13, 18})) {
     fail(place, where + " contains prisms (" + gmshType +
                     "): Glossa needs hexahedra; prisms come from extruding triangles: 'Recombine Surface' "
-                    "before extruding, or " + kSubdivide);
+                    "before extruding, or " +
+                    kSubdivide);
   }
   if (dim == 3 && oneOf(type, {7, 14, 19})) {
     fail(place, where + " contains pyramids (" + gmshType +
                     "): Glossa needs hexahedra; pyramids join hexahedra to tetrahedra: make the whole "
-                    "volume transfinite and recombined, or " + kSubdivide);
+                    "volume transfinite and recombined, or " +
+                    kSubdivide);
   }
   if (dim == 2 && oneOf(type, {2, 9, 20, 21})) {
     // Refused at the end: Gmsh writes surfaces before volumes, and when the volume holds
@@ -109,7 +117,8 @@ bool Assembly::accepts(int dim, std::int64_t type, bool grouped, const std::func
     if (!pendingRefusal_) {
       pendingRefusal_ = std::make_pair(place, where + " contains triangles (" + gmshType +
                                                   "): a face set is made of hexahedron faces, quadrangles; "
-                                                  "'Recombine Surface' or " + kSubdivide);
+                                                  "'Recombine Surface' or " +
+                                                  kSubdivide);
     }
     return false;
   }
@@ -132,8 +141,8 @@ void Assembly::element(int dim, std::int64_t type, std::int64_t tag, std::int64_
                        Place place) {
   const ElementType &t = *elementType(type);
   if (static_cast<int>(nodeTags.size()) != t.nodes) {
-    fail(place, "element " + std::to_string(tag) + " of " + typeName(type) + " needs " + std::to_string(t.nodes) +
-                    " nodes, found " + std::to_string(nodeTags.size()));
+    fail(place, "element " + std::to_string(tag) + " of " + typeName(type) + " needs " +
+                    std::to_string(t.nodes) + " nodes, found " + std::to_string(nodeTags.size()));
   }
   std::vector<NodeId> nodes;
   for (int a = 0; a < t.nodes; ++a) {
@@ -167,7 +176,8 @@ void Assembly::element(int dim, std::int64_t type, std::int64_t tag, std::int64_
     elementPhysicals_.push_back(physicals);
     for (std::int64_t p : physicals) volumeMembers_[p].push_back(e);
   } else if (dim == 2) {
-    for (std::int64_t p : physicals) surfaceMembers_[p].push_back({{nodes[0], nodes[1], nodes[2], nodes[3]}, place, tag});
+    for (std::int64_t p : physicals)
+      surfaceMembers_[p].push_back({{nodes[0], nodes[1], nodes[2], nodes[3]}, place, tag});
   } else {
     for (std::int64_t p : physicals) {
       auto &members = lowerMembers_[{dim, p}];
@@ -176,7 +186,8 @@ void Assembly::element(int dim, std::int64_t type, std::int64_t tag, std::int64_
   }
 }
 
-std::string Assembly::entityName(int dim, std::int64_t tag, const std::vector<std::int64_t> &physicals) const {
+std::string Assembly::entityName(int dim, std::int64_t tag,
+                                 const std::vector<std::int64_t> &physicals) const {
   static const char *kinds[4] = {"point", "curve", "surface", "volume"};
   std::string s = std::string(kinds[dim]) + " entity " + std::to_string(tag);
   for (std::size_t i = 0; i < physicals.size(); ++i) {
@@ -230,7 +241,8 @@ void Assembly::dropMidsideNodes() {
     first = false;
   }
   note << "): the geometry is made trilinear (curved edges become straight), and the " << dropped
-       << " nodes only they used (edge, face and centre nodes) are dropped, the others renumbered in file order";
+       << " nodes only they used (edge, face and centre nodes) are dropped, the others renumbered in file "
+          "order";
   result_.notes.push_back(note.str());
 }
 
@@ -238,8 +250,9 @@ ImportedMesh Assembly::finish(Place end) {
   HexMesh &mesh = result_.mesh;
   if (pendingRefusal_) fail(pendingRefusal_->first, pendingRefusal_->second);
   if (mesh.elements.empty()) {
-    fail(end, "no hexahedra (Gmsh types 5, 17, 12) in the file: mesh the volume (gmsh -3) and give it a "
-              "physical group (Gmsh saves only the elements of physical groups)");
+    fail(end,
+         "no hexahedra (Gmsh types 5, 17, 12) in the file: mesh the volume (gmsh -3) and give it a "
+         "physical group (Gmsh saves only the elements of physical groups)");
   }
   dropMidsideNodes();
   result_.indexFileIds();
@@ -248,9 +261,10 @@ ImportedMesh Assembly::finish(Place end) {
   });
   if (!physicalNames_.empty() && volumeMembers_.empty() && surfaceMembers_.empty() && lowerMembers_.empty()) {
     // Gmsh's MSH 2 writer with Mesh.SaveAll = 1 (-save_all) writes physical tag 0 everywhere.
-    result_.notes.push_back(file_ + ": $PhysicalNames names groups but no element carries a physical tag, so "
-                                    "the mesh has no sets (Gmsh's MSH 2 writer does this with -save_all; save as "
-                                    "MSH 4.1 or without it)");
+    result_.notes.push_back(file_ +
+                            ": $PhysicalNames names groups but no element carries a physical tag, so "
+                            "the mesh has no sets (Gmsh's MSH 2 writer does this with -save_all; save as "
+                            "MSH 4.1 or without it)");
   }
   for (auto &[tag, members] : volumeMembers_) {
     importing::sortUnique(members);

@@ -69,8 +69,9 @@ class Assembly {
 
   // An accepted element: `nodes` holds the type's node tags in Gmsh order; `physicals` the
   // physical tags of its entity. `entity` keys the MSH 2 duplicates (see GmshAssembly.cpp).
-  void element(int dim, std::int64_t type, std::int64_t tag, std::int64_t entity, const std::vector<std::int64_t> &nodes,
-               const std::vector<std::int64_t> &physicals, Place place);
+  void element(int dim, std::int64_t type, std::int64_t tag, std::int64_t entity,
+               const std::vector<std::int64_t> &nodes, const std::vector<std::int64_t> &physicals,
+               Place place);
 
   // "volume entity 2" or, in groups, "surface entity 1 (physical 'floor')", for messages.
   std::string entityName(int dim, std::int64_t tag, const std::vector<std::int64_t> &physicals) const;

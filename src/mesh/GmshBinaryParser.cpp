@@ -55,7 +55,8 @@ class BinaryParser {
     while (nextLine(line)) {
       const std::string name = trim(line);
       if (name.empty()) continue;
-      if (name[0] != '$') fail(lineStart_, "expected a section header ($Name), found '" + shorten(name) + "'");
+      if (name[0] != '$')
+        fail(lineStart_, "expected a section header ($Name), found '" + shorten(name) + "'");
       const std::string section = name.substr(1);
       if (section == "PhysicalNames") {
         readPhysicalNames();
@@ -115,7 +116,8 @@ class BinaryParser {
   void need(std::uint64_t count, std::uint64_t size, const std::string &what) const {
     if (size != 0 && count > left() / size) {
       fail(at_, "file ends inside " + what + ": " + std::to_string(count) + " x " + std::to_string(size) +
-                    " bytes announced, " + std::to_string(left()) + " left (truncated or corrupted binary file)");
+                    " bytes announced, " + std::to_string(left()) +
+                    " left (truncated or corrupted binary file)");
     }
   }
 
@@ -154,7 +156,8 @@ class BinaryParser {
       const std::string t = trim(line);
       if (t.empty()) continue;
       if (t == "$End" + section) return;
-      fail(lineStart_, "expected $End" + section + " (a count disagrees with the data?), found '" + shorten(t) + "'");
+      fail(lineStart_,
+           "expected $End" + section + " (a count disagrees with the data?), found '" + shorten(t) + "'");
     }
     fail(at_, "missing $End" + section);
   }
@@ -177,19 +180,23 @@ class BinaryParser {
     if (t.size() != 3) fail(lineStart_, "expected 'version file-type data-size'");
     if (t[0] != "4.1" && t[0] != "2.2") {
       fail(lineStart_, "MSH version " + t[0] +
-                           " is not supported; Glossa reads MSH 4.1 and 2.2, ASCII or binary (gmsh -format msh41 or msh22)");
+                           " is not supported; Glossa reads MSH 4.1 and 2.2, ASCII or binary (gmsh -format "
+                           "msh41 or msh22)");
     }
     if (t[2] != "8") {
-      fail(lineStart_, "data-size " + t[2] + ": Glossa reads binary files with 8-byte sizes (as Gmsh writes on 64-bit machines)");
+      fail(lineStart_,
+           "data-size " + t[2] +
+               ": Glossa reads binary files with 8-byte sizes (as Gmsh writes on 64-bit machines)");
     }
     msh2_ = t[0] == "2.2";
     const std::size_t markerAt = at_;
     const std::int64_t marker = int32("the endianness marker");
     if (marker != 1) {
-      fail(markerAt, marker == 0x01000000
-                         ? std::string("the endianness marker reads 16777216, not 1: the file was written big-endian, "
-                                       "which Glossa does not read; save it on this machine or as ASCII")
-                         : "bad endianness marker " + std::to_string(marker) + " (expected the int 1)");
+      fail(markerAt,
+           marker == 0x01000000
+               ? std::string("the endianness marker reads 16777216, not 1: the file was written big-endian, "
+                             "which Glossa does not read; save it on this machine or as ASCII")
+               : "bad endianness marker " + std::to_string(marker) + " (expected the int 1)");
     }
     expectEnd("MeshFormat");
   }
@@ -197,12 +204,14 @@ class BinaryParser {
   void readPhysicalNames() {
     const auto header = tokens("the number of physical names");
     std::int64_t n = 0;
-    if (!parseInt(header[0], n) || n < 0) fail(lineStart_, "bad number of physical names '" + header[0] + "'");
+    if (!parseInt(header[0], n) || n < 0)
+      fail(lineStart_, "bad number of physical names '" + header[0] + "'");
     std::string line;
     for (std::int64_t i = 0; i < n; ++i) {
       const auto t = tokens("'dim tag \"name\"'");
       std::int64_t dim = 0, tag = 0;
-      if (t.size() < 3 || !parseInt(t[0], dim) || !parseInt(t[1], tag)) fail(lineStart_, "expected 'dim tag \"name\"'");
+      if (t.size() < 3 || !parseInt(t[0], dim) || !parseInt(t[1], tag))
+        fail(lineStart_, "expected 'dim tag \"name\"'");
       if (dim < 0 || dim > 3) fail(lineStart_, "physical dimension " + t[0] + " outside 0..3");
       at_ = lineStart_;  // the name is quoted and may contain blanks: take it from the raw line
       nextLine(line);
@@ -257,7 +266,8 @@ class BinaryParser {
       const int dim = dimension(int32("a node block's entity dimension"), start);
       int32("a node block's entity tag");
       const std::int64_t parametric = int32("a node block's parametric flag");
-      if (parametric != 0 && parametric != 1) fail(start + 8, "parametric flag " + std::to_string(parametric) + " is not 0 or 1");
+      if (parametric != 0 && parametric != 1)
+        fail(start + 8, "parametric flag " + std::to_string(parametric) + " is not 0 or 1");
       const std::int64_t n = size("the number of nodes in a block");
       const std::uint64_t perNode = 8 + 8 * (3 + static_cast<std::uint64_t>(parametric ? dim : 0));
       need(static_cast<std::uint64_t>(n), perNode, "a node block of " + std::to_string(n) + " nodes");
@@ -301,8 +311,9 @@ class BinaryParser {
         fail(start, "element block of Gmsh type " + std::to_string(type) +
                         ", which Glossa does not know (its node count is needed to read past it)");
       }
-      const bool read = assembly_.accepts(dim, type, !physicals.empty(), [&] { return assembly_.entityName(dim, entity, physicals); },
-                                          Place::atByte(start));
+      const bool read = assembly_.accepts(
+          dim, type, !physicals.empty(), [&] { return assembly_.entityName(dim, entity, physicals); },
+          Place::atByte(start));
       need(static_cast<std::uint64_t>(n), 8 * (1 + static_cast<std::uint64_t>(known->nodes)),
            "an element block of " + std::to_string(n) + " elements");
       std::vector<std::int64_t> nodes(static_cast<std::size_t>(known->nodes));
@@ -351,8 +362,8 @@ class BinaryParser {
       const std::int64_t n = int32("the number of elements in a block");
       const std::int64_t ntags = int32("the number of tags");
       if (n < 0 || n > total - seen) {
-        fail(start + 4, "element block of " + std::to_string(n) + " elements where " + std::to_string(total - seen) +
-                            " remain of the $Elements count");
+        fail(start + 4, "element block of " + std::to_string(n) + " elements where " +
+                            std::to_string(total - seen) + " remain of the $Elements count");
       }
       if (ntags < 0 || ntags > 1000) fail(start + 8, "bad number of tags " + std::to_string(ntags));
       const ElementType *known = elementType(type);
@@ -362,7 +373,8 @@ class BinaryParser {
       }
       need(static_cast<std::uint64_t>(n), 4 * (1 + static_cast<std::uint64_t>(ntags + known->nodes)),
            "an element block of " + std::to_string(n) + " elements");
-      std::vector<std::int64_t> tags(static_cast<std::size_t>(ntags)), nodes(static_cast<std::size_t>(known->nodes));
+      std::vector<std::int64_t> tags(static_cast<std::size_t>(ntags)),
+          nodes(static_cast<std::size_t>(known->nodes));
       for (std::int64_t i = 0; i < n; ++i) {
         const Place place = Place::atByte(at_);
         const std::int64_t tag = int32("an element tag");
@@ -374,8 +386,9 @@ class BinaryParser {
         const std::int64_t physical = ntags >= 1 ? tags[0] : 0, entity = ntags >= 2 ? tags[1] : 0;
         const std::vector<std::int64_t> physicals =
             physical == 0 ? std::vector<std::int64_t>{} : std::vector<std::int64_t>{physical};
-        if (assembly_.accepts(known->dim, type, physical != 0, [&] { return assembly_.entityName(known->dim, entity, physicals); },
-                              place)) {
+        if (assembly_.accepts(
+                known->dim, type, physical != 0,
+                [&] { return assembly_.entityName(known->dim, entity, physicals); }, place)) {
           assembly_.element(known->dim, type, tag, entity, nodes, physicals, place);
         }
       }

@@ -29,7 +29,8 @@ void save(const std::string &file, const std::string &text) {
 
 // For each item, the tags (firstTag + index of the set in name order) of the sets holding it.
 template <typename Item>
-std::map<Item, std::vector<int>> memberships(const std::map<std::string, std::vector<Item>> &sets, int firstTag) {
+std::map<Item, std::vector<int>> memberships(const std::map<std::string, std::vector<Item>> &sets,
+                                             int firstTag) {
   std::map<Item, std::vector<int>> result;
   int tag = firstTag;
   for (const auto &[name, items] : sets) {
@@ -100,14 +101,15 @@ void writeGmsh(const HexMesh &mesh, const std::string &file) {
   out << "$Entities\n" << pointTags.size() << " 0 " << surfaces.size() << " " << volumeOf.size() << "\n";
   for (const auto &[node, tags] : pointTags) {
     const auto &x = mesh.nodes[static_cast<std::size_t>(node)];
-    out << node + 1 << " " << number(x.x()) << " " << number(x.y()) << " " << number(x.z()) << " " << tagList(tags)
-        << "\n";
+    out << node + 1 << " " << number(x.x()) << " " << number(x.y()) << " " << number(x.z()) << " "
+        << tagList(tags) << "\n";
   }
   int entity = 1;
   for (const auto &[tags, faces] : surfaces) out << entity++ << " " << box << tagList(tags) << " 0\n";
   std::vector<std::vector<int>> volumes(volumeOf.size());
   for (const auto &[tags, v] : volumeOf) volumes[static_cast<std::size_t>(v - 1)] = tags;
-  for (std::size_t v = 0; v < volumes.size(); ++v) out << v + 1 << " " << box << tagList(volumes[v]) << " 0\n";
+  for (std::size_t v = 0; v < volumes.size(); ++v)
+    out << v + 1 << " " << box << tagList(volumes[v]) << " 0\n";
   out << "$EndEntities\n";
 
   // Nodes in the mesh's order: runs of nodes in volume entity 1, each point-group node in a
@@ -146,7 +148,8 @@ void writeGmsh(const HexMesh &mesh, const std::string &file) {
   std::size_t numFaces = 0;
   for (const auto &[tags, faces] : surfaces) numFaces += faces.size();
   const std::size_t total = mesh.numElements() + numFaces + pointTags.size();
-  out << "$Elements\n" << blocks.size() + surfaces.size() + pointTags.size() << " " << total << " 1 " << total << "\n";
+  out << "$Elements\n"
+      << blocks.size() + surfaces.size() + pointTags.size() << " " << total << " 1 " << total << "\n";
   for (const auto &[begin, end] : blocks) {
     out << "3 " << volumeOfElement[begin] << " 5 " << end - begin << "\n";
     for (std::size_t e = begin; e < end; ++e) {
@@ -167,7 +170,8 @@ void writeGmsh(const HexMesh &mesh, const std::string &file) {
       out << "\n";
     }
   }
-  for (const auto &[node, tags] : pointTags) out << "0 " << node + 1 << " 15 1\n" << next++ << " " << node + 1 << "\n";
+  for (const auto &[node, tags] : pointTags)
+    out << "0 " << node + 1 << " 15 1\n" << next++ << " " << node + 1 << "\n";
   out << "$EndElements\n";
   save(file, out.str());
 }
@@ -196,7 +200,8 @@ void writeAbaqus(const HexMesh &mesh, const std::string &file) {
   }
   // Sixteen ids a line, Abaqus's limit.
   auto ids = [&out](const auto &items) {
-    for (std::size_t i = 0; i < items.size(); ++i) out << items[i] + 1 << (i % 16 == 15 || i + 1 == items.size() ? "\n" : ", ");
+    for (std::size_t i = 0; i < items.size(); ++i)
+      out << items[i] + 1 << (i % 16 == 15 || i + 1 == items.size() ? "\n" : ", ");
   };
   for (const auto &[name, s] : mesh.elementSets) {
     out << "*ELSET, ELSET=" << name << "\n";

@@ -5,10 +5,10 @@
 // (the generator numbers nodes and elements its own way, so it checks that numbering does not
 // matter). Skipped when gmsh was not found at configure time.
 
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 #include "RunDeck.hpp"
 
@@ -30,7 +30,8 @@ Physical Surface("top") = {out[0]};
 
 std::string deck(const std::string &mesh, const std::string &base, const std::string &top) {
   return R"x(<ParameterList name="Glossa">
-  <ParameterList name="Mesh">)x" + mesh + R"x(
+  <ParameterList name="Mesh">)x" +
+         mesh + R"x(
   </ParameterList>
   <ParameterList name="Material">
     <Parameter name="type" type="string" value="neo-Hookean"/>
@@ -38,13 +39,15 @@ std::string deck(const std::string &mesh, const std::string &base, const std::st
   </ParameterList>
   <ParameterList name="Boundary conditions">
     <ParameterList name="clamped">
-      <Parameter name="node set" type="string" value=")x" + base + R"x("/>
+      <Parameter name="node set" type="string" value=")x" +
+         base + R"x("/>
       <Parameter name="components" type="string" value="x,y,z"/>
     </ParameterList>
   </ParameterList>
   <ParameterList name="Loads">
     <ParameterList name="shear">
-      <Parameter name="face set" type="string" value=")x" + top + R"x("/>
+      <Parameter name="face set" type="string" value=")x" +
+         top + R"x("/>
       <Parameter name="traction" type="Array(double)" value="{100, 40, -50}"/>
     </ParameterList>
   </ParameterList>
@@ -65,11 +68,13 @@ std::string fileMesh(const std::string &path) {
   return R"x(
     <Parameter name="type" type="string" value="file"/>
     <ParameterList name="File">
-      <Parameter name="path" type="string" value=")x" + path + R"x("/>
+      <Parameter name="path" type="string" value=")x" +
+         path + R"x("/>
     </ParameterList>)x";
 }
 
-std::vector<double> cornerDisplacement(const std::filesystem::path &dir, const std::string &name, const std::string &xml) {
+std::vector<double> cornerDisplacement(const std::filesystem::path &dir, const std::string &name,
+                                       const std::string &xml) {
   const std::filesystem::path file = dir / (name + ".xml");
   std::ofstream(file) << xml;
   const auto summary = test::runDeck(file.string(), {}, dir / ("out_" + name));
@@ -83,29 +88,31 @@ TEST(GmshDecks, FourMeshSourcesMoveTheCornerAlike) {
   const auto dir = test::scratchDirectory("gmsh_decks");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "block.geo") << kGeo;
-  for (const auto &[name, options] : std::vector<std::pair<std::string, std::string>>{
-           {"block22b.msh", "-format msh22 -bin"}, {"block41.msh", "-format msh41"}, {"block.inp", "-format inp"}}) {
+  for (const auto &[name, options] :
+       std::vector<std::pair<std::string, std::string>>{{"block22b.msh", "-format msh22 -bin"},
+                                                        {"block41.msh", "-format msh41"},
+                                                        {"block.inp", "-format inp"}}) {
     const std::string command = gmsh + " -3 " + (dir / "block.geo").string() + " " + options + " -o " +
                                 (dir / name).string() + " > /dev/null 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
   }
-  const auto generated = cornerDisplacement(
-      dir, "generated",
-      deck(R"x(
+  const auto generated = cornerDisplacement(dir, "generated",
+                                            deck(R"x(
     <Parameter name="type" type="string" value="box"/>
     <ParameterList name="Box">
       <Parameter name="lengths" type="Array(double)" value="{2e-3, 1e-3, 3e-3}"/>
       <Parameter name="cells" type="Array(int)" value="{4, 2, 3}"/>
     </ParameterList>)x",
-           "zmin", "zmax"));
+                                                 "zmin", "zmax"));
   // The shear moves the corner by a fair fraction of the block: a real, non-uniform solve.
   ASSERT_EQ(generated.size(), 3u);
   EXPECT_GT(generated[0], 1e-4);
   EXPECT_GT(generated[1], 1e-5);
   for (const std::string &name : std::vector<std::string>{"block22b.msh", "block41.msh", "block.inp"}) {
     SCOPED_TRACE(name);
-    const auto u = cornerDisplacement(dir, name.substr(0, name.find('.')) + "_" + name.substr(name.find('.') + 1),
-                                      deck(fileMesh(name), "base", "top"));
+    const auto u =
+        cornerDisplacement(dir, name.substr(0, name.find('.')) + "_" + name.substr(name.find('.') + 1),
+                           deck(fileMesh(name), "base", "top"));
     ASSERT_EQ(u.size(), 3u);
     // Newton converges each run to its tolerance; the numbering changes round-off only.
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(u[k], generated[k], 1e-10 * std::abs(generated[0])) << k;

@@ -63,7 +63,8 @@ ByPosition byPosition(const HexMesh &mesh, const std::set<std::string> &names) {
   ByPosition p;
   auto hex = [&](ElementId e) {
     std::array<Point, 8> h;
-    for (int a = 0; a < 8; ++a) h[static_cast<std::size_t>(a)] = at(mesh, mesh.elements[static_cast<std::size_t>(e)][a]);
+    for (int a = 0; a < 8; ++a)
+      h[static_cast<std::size_t>(a)] = at(mesh, mesh.elements[static_cast<std::size_t>(e)][a]);
     return h;
   };
   for (std::size_t n = 0; n < mesh.numNodes(); ++n) p.nodes.insert(at(mesh, static_cast<NodeId>(n)));
@@ -99,7 +100,8 @@ class GmshExports : public ::testing::Test {
   // Runs gmsh on the box with `options`, writing `name`; returns its path.
   std::string mesh(const std::string &name, const std::string &options, const std::string &geo = kGeo) {
     const std::string geoFile = dir_.write(name + ".geo", geo), out = dir_.file(name);
-    const std::string command = gmsh_ + " -3 " + geoFile + " " + options + " -o " + out + " > " + out + ".log 2>&1";
+    const std::string command =
+        gmsh_ + " -3 " + geoFile + " " + options + " -o " + out + " > " + out + ".log 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     return out;
   }
@@ -139,8 +141,10 @@ TEST_F(GmshExports, FiveFormatsGiveTheSameMesh) {
   ASSERT_EQ(expected.elementSets.size() + expected.faceSets.size(), 4u);
   ASSERT_EQ(expected.nodeSets.size(), 5u);  // the three surfaces' node sets, the edge, the point
 
-  for (const auto &[name, options] : std::vector<std::pair<std::string, std::string>>{
-           {"box22.msh", "-format msh22"}, {"box22b.msh", "-format msh22 -bin"}, {"box41b.msh", "-format msh41 -bin"}}) {
+  for (const auto &[name, options] :
+       std::vector<std::pair<std::string, std::string>>{{"box22.msh", "-format msh22"},
+                                                        {"box22b.msh", "-format msh22 -bin"},
+                                                        {"box41b.msh", "-format msh41 -bin"}}) {
     SCOPED_TRACE(name);
     const ImportedMesh imported = readGmsh(mesh(name, options));
     EXPECT_EQ(imported.mesh.numNodes(), 60u);
@@ -188,12 +192,14 @@ TEST_F(GmshExports, TetrahedraRefusedSubdivisionRead) {
   const std::string tets22 = mesh("tets22.msh", "-format msh22 -bin", geo);
   expectError([&] { readGmsh(tets22); }, {tets22 + ": byte ", "contains tetrahedra (Gmsh type 4"});
   // The advice works: Mesh.SubdivisionAlgorithm = 2 splits every element into hexahedra.
-  const ImportedMesh split = readGmsh(mesh("split.msh", "-string 'Mesh.SubdivisionAlgorithm = 2;' -format msh41", geo));
+  const ImportedMesh split =
+      readGmsh(mesh("split.msh", "-string 'Mesh.SubdivisionAlgorithm = 2;' -format msh41", geo));
   EXPECT_GT(split.mesh.numElements(), 24u);
   EXPECT_NEAR(meshVolume(split.mesh), 6.0, 1e-9);
   EXPECT_EQ(split.mesh.elementSets.at("tissue").size(), split.mesh.numElements());
   EXPECT_FALSE(split.mesh.faceSets.at("side").empty());
-  for (const ElementFace &f : split.mesh.faceSets.at("side")) EXPECT_NEAR(faceCentroid(split.mesh, f).y(), 0.0, 1e-9);
+  for (const ElementFace &f : split.mesh.faceSets.at("side"))
+    EXPECT_NEAR(faceCentroid(split.mesh, f).y(), 0.0, 1e-9);
 }
 
 }  // namespace

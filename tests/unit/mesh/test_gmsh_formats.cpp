@@ -12,8 +12,8 @@
 
 #include "ImportTestSupport.hpp"
 #include "mesh/GmshReader.hpp"
-#include "mesh/MeshError.hpp"
 #include "mesh/MeshChecks.hpp"
+#include "mesh/MeshError.hpp"
 #include "mesh/MeshQuality.hpp"
 
 namespace glossa::mesh {
@@ -230,7 +230,8 @@ TEST(GmshFormats, RefusesBrokenBinaryFiles) {
   // A node that no $Nodes entry defines (binary element tags are located by byte).
   std::string unknown = good22;
   put<std::int32_t>(unknown, elements22 + 4 * 6, 99);
-  expectError(read(unknown), {f + ": byte " + std::to_string(elements22 + 12) + ":", "element 1 refers to node 99"});
+  expectError(read(unknown),
+              {f + ": byte " + std::to_string(elements22 + 12) + ":", "element 1 refers to node 99"});
 }
 
 TEST(GmshFormats, RefusesNonHexahedraByName) {
@@ -242,22 +243,27 @@ TEST(GmshFormats, RefusesNonHexahedraByName) {
   };
   // Line 32 is the first extra element of twoCubes22().
   expectError(read({"300 4 2 1 3 11 12 13 15"}),
-              {f + ":32:", "volume entity 3 (physical 'muscle tissue') contains tetrahedra (Gmsh type 4, "
-                           "4-node tetrahedron): Glossa needs hexahedra; mesh with Recombine/Transfinite",
+              {f + ":32:",
+               "volume entity 3 (physical 'muscle tissue') contains tetrahedra (Gmsh type 4, "
+               "4-node tetrahedron): Glossa needs hexahedra; mesh with Recombine/Transfinite",
                "'Mesh.SubdivisionAlgorithm = 2;'"});
   expectError(read({"300 11 2 0 3 11 12 13 15 16 17 18 19 20 21"}),
               {f + ":32:", "volume entity 3 contains tetrahedra (Gmsh type 11, 10-node tetrahedron)"});
-  expectError(read({"300 6 2 1 3 11 12 13 15 16 17"}),
-              {f + ":32:", "contains prisms (Gmsh type 6, 6-node prism)", "'Recombine Surface' before extruding"});
-  expectError(read({"300 7 2 1 3 11 12 13 14 19"}), {f + ":32:", "contains pyramids (Gmsh type 7, 5-node pyramid)"});
+  expectError(
+      read({"300 6 2 1 3 11 12 13 15 16 17"}),
+      {f + ":32:", "contains prisms (Gmsh type 6, 6-node prism)", "'Recombine Surface' before extruding"});
+  expectError(read({"300 7 2 1 3 11 12 13 14 19"}),
+              {f + ":32:", "contains pyramids (Gmsh type 7, 5-node pyramid)"});
   // Triangles in a face set are refused, but after the volumes, which may hold tetrahedra.
-  expectError(read({"300 2 2 2 1 11 12 13"}),
-              {f + ":32:", "surface entity 1 (physical 'floor') contains triangles (Gmsh type 2, 3-node triangle)"});
+  expectError(
+      read({"300 2 2 2 1 11 12 13"}),
+      {f + ":32:", "surface entity 1 (physical 'floor') contains triangles (Gmsh type 2, 3-node triangle)"});
   expectError(read({"300 2 2 2 1 11 12 13", "301 4 2 1 3 11 12 13 15"}), {f + ":33:", "contains tetrahedra"});
   // Ungrouped triangles are not the mesh: skipped.
   EXPECT_EQ(readGmsh(dir.write("ok.msh", twoCubes22({"300 2 2 0 1 11 12 13"}))).mesh.numElements(), 2u);
   // Types Glossa does not know cannot be stepped over in MSH 2 (no entity dimension).
-  expectError(read({"300 99 2 0 1 11"}), {f + ":32:", "element 300 has Gmsh type 99, which Glossa does not know"});
+  expectError(read({"300 99 2 0 1 11"}),
+              {f + ":32:", "element 300 has Gmsh type 99, which Glossa does not know"});
   // A copy with the same group is a true duplicate element: kept, and the mesh checks see it.
   const ImportedMesh dup = readGmsh(dir.write("dup.msh", twoCubes22({"202 5 2 1 2" + hexNodes(15)})));
   EXPECT_EQ(dup.mesh.numElements(), 3u);
@@ -287,10 +293,18 @@ TEST(GmshFormats, BinaryMutantsAreReadOrRefused) {
       std::string bytes = good;
       const std::size_t at = start + random() % (bytes.size() - start - 8);
       switch (i % 4) {
-        case 0: bytes[at] = static_cast<char>(bytes[at] ^ (1 << (random() % 8))); break;
-        case 1: put<std::int32_t>(bytes, at, i % 8 < 4 ? -1 : std::numeric_limits<std::int32_t>::max()); break;
-        case 2: put<std::uint64_t>(bytes, at, std::uint64_t(1) << (32 + random() % 32)); break;
-        default: bytes.resize(at); break;
+        case 0:
+          bytes[at] = static_cast<char>(bytes[at] ^ (1 << (random() % 8)));
+          break;
+        case 1:
+          put<std::int32_t>(bytes, at, i % 8 < 4 ? -1 : std::numeric_limits<std::int32_t>::max());
+          break;
+        case 2:
+          put<std::uint64_t>(bytes, at, std::uint64_t(1) << (32 + random() % 32));
+          break;
+        default:
+          bytes.resize(at);
+          break;
       }
       dir.write("mutant.msh", bytes);
       try {
@@ -312,7 +326,8 @@ TEST(GmshFormats, BinaryMutantsAreReadOrRefused) {
 // quadrangle (type 16) in a physical surface, and node 99 that no element uses.
 std::string serendipityCube(const std::string &version) {
   std::string s = "$MeshFormat\n" + version + " 0 8\n$EndMeshFormat\n";
-  const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   // Gmsh's 20-node edge order: 0-1 0-3 0-4 1-2 1-5 2-3 2-6 3-7 4-5 4-7 5-6 6-7.
   const int edges[12][2] = {{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3},
                             {2, 6}, {3, 7}, {4, 5}, {4, 7}, {5, 6}, {6, 7}};
@@ -336,7 +351,8 @@ std::string serendipityCube(const std::string &version) {
     // Bottom corners 1 4 3 2 (seen from outside), its edge nodes 0-3, 2-3, 1-2, 0-1.
     return s + "\n2 16 2 2 1 1 4 3 2 10 14 12 9\n$EndElements\n";
   }
-  s += "$Entities\n0 0 1 1\n1 0 0 0 1 1 0 1 2 0\n1 0 0 0 1 1 1 1 1 0\n$EndEntities\n$Nodes\n1 21 1 99\n3 1 0 21\n";
+  s += "$Entities\n0 0 1 1\n1 0 0 0 1 1 0 1 2 0\n1 0 0 0 1 1 1 1 1 0\n$EndEntities\n$Nodes\n1 21 1 99\n3 1 0 "
+       "21\n";
   for (std::size_t n = 0; n < x.size(); ++n) s += std::to_string(n + 1) + "\n";
   s += "99\n";
   std::string coords;
@@ -368,10 +384,11 @@ TEST(GmshFormats, SecondOrderReadByCorners) {
     EXPECT_EQ(mesh.nodeSets.at("physical2d_2"), (std::vector<NodeId>{0, 1, 2, 3}));
     ASSERT_EQ(imported.notes.size(), 1u);
     const std::string &note = imported.notes[0];
-    for (const std::string &fragment : std::vector<std::string>
-         {f + ": second-order elements read by their corner nodes", "1 of Gmsh type 16 (8-node quadrangle)",
-          "1 of Gmsh type 17 (20-node hexahedron)", "the geometry is made trilinear",
-          "the 12 nodes only they used (edge, face and centre nodes) are dropped"}) {
+    for (const std::string &fragment :
+         std::vector<std::string>{f + ": second-order elements read by their corner nodes",
+                                  "1 of Gmsh type 16 (8-node quadrangle)",
+                                  "1 of Gmsh type 17 (20-node hexahedron)", "the geometry is made trilinear",
+                                  "the 12 nodes only they used (edge, face and centre nodes) are dropped"}) {
       EXPECT_NE(note.find(fragment), std::string::npos) << fragment << " not in: " << note;
     }
   }

@@ -80,7 +80,8 @@ TEST(MeshWriter, GmshResavesWhatIsWritten) {
   for (const std::string &format : std::vector<std::string>{"msh41", "msh22"}) {
     SCOPED_TRACE(format);
     const std::string again = dir.file("again_" + format + ".msh");
-    const std::string command = gmsh + " " + file + " -0 -format " + format + " -o " + again + " > /dev/null 2>&1";
+    const std::string command =
+        gmsh + " " + file + " -0 -format " + format + " -o " + again + " > /dev/null 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     const HexMesh read = readGmsh(again).mesh;
     // Gmsh's MSH 2 writer renumbers nodes: match nodes by position, elements by their nodes.
@@ -91,7 +92,8 @@ TEST(MeshWriter, GmshResavesWhatIsWritten) {
       nodeAt[{read.nodes[n].x(), read.nodes[n].y(), read.nodes[n].z()}] = static_cast<NodeId>(n);
     }
     std::map<Hex, ElementId> elementOf;
-    for (std::size_t e = 0; e < read.numElements(); ++e) elementOf[read.elements[e]] = static_cast<ElementId>(e);
+    for (std::size_t e = 0; e < read.numElements(); ++e)
+      elementOf[read.elements[e]] = static_cast<ElementId>(e);
     std::vector<NodeId> node(mesh.numNodes());  // written node -> node read
     for (std::size_t n = 0; n < mesh.numNodes(); ++n) {
       const auto it = nodeAt.find({mesh.nodes[n].x(), mesh.nodes[n].y(), mesh.nodes[n].z()});
@@ -114,7 +116,8 @@ TEST(MeshWriter, GmshResavesWhatIsWritten) {
     }
     for (const auto &[name, set] : mesh.faceSets) {
       std::vector<ElementFace> expected;
-      for (ElementFace f : set) expected.push_back({element[static_cast<std::size_t>(f.element)], f.localFace});
+      for (ElementFace f : set)
+        expected.push_back({element[static_cast<std::size_t>(f.element)], f.localFace});
       std::sort(expected.begin(), expected.end());
       EXPECT_EQ(read.faceSets.at(name), expected) << name;
     }
@@ -132,14 +135,17 @@ TEST(MeshWriter, RefusesWhatTheFormatCannotHold) {
   HexMesh mesh = sampleMesh();
   mesh.nodeSets["zmin"].pop_back();  // no longer the nodes of face set zmin
   const std::string msh = dir.file("bad.msh");
-  expectError([&] { writeGmsh(mesh, msh); }, {msh + ": node set 'zmin' has the name of a face set but other nodes"});
+  expectError([&] { writeGmsh(mesh, msh); },
+              {msh + ": node set 'zmin' has the name of a face set but other nodes"});
   EXPECT_NO_THROW(writeAbaqus(mesh, dir.file("ok.inp")));  // an NSET says it exactly
   EXPECT_EQ(readAbaqus(dir.file("ok.inp")).mesh.nodeSets.at("zmin"), mesh.nodeSets.at("zmin"));
   HexMesh comma = sampleMesh();
   comma.elementSets["a,b"] = {0};
   const std::string inp = dir.file("bad.inp");
-  expectError([&] { writeAbaqus(comma, inp); }, {inp + ": set name 'a,b' cannot stand in an Abaqus keyword line"});
-  expectError([&] { writeGmsh(sampleMesh(), dir.file("no/such/dir.msh")); }, {"no/such/dir.msh: cannot write"});
+  expectError([&] { writeAbaqus(comma, inp); },
+              {inp + ": set name 'a,b' cannot stand in an Abaqus keyword line"});
+  expectError([&] { writeGmsh(sampleMesh(), dir.file("no/such/dir.msh")); },
+              {"no/such/dir.msh: cannot write"});
 }
 
 }  // namespace
