@@ -163,6 +163,20 @@ TEST_F(GmshExports, FiveFormatsGiveTheSameMesh) {
   expectSame(byPosition(inp.mesh, kGroups), fromMsh);
 }
 
+// -save_all: MSH 4.1 keeps the groups; Gmsh's MSH 2 writer drops them (physical tag 0), which
+// the reader notes instead of returning a mesh whose missing sets a deck would only meet later.
+TEST_F(GmshExports, SaveAll) {
+  const ImportedMesh all41 = readGmsh(mesh("all41.msh", "-save_all -format msh41 -bin"));
+  EXPECT_EQ(all41.mesh.numElements(), 24u);
+  EXPECT_EQ(all41.mesh.faceSets.at("side").size(), 12u);
+  EXPECT_TRUE(all41.notes.empty());
+  const ImportedMesh all22 = readGmsh(mesh("all22.msh", "-save_all -format msh22"));
+  EXPECT_EQ(all22.mesh.numElements(), 24u);
+  EXPECT_TRUE(all22.mesh.elementSets.empty());
+  ASSERT_EQ(all22.notes.size(), 1u);
+  EXPECT_NE(all22.notes[0].find("no element carries a physical tag"), std::string::npos);
+}
+
 TEST_F(GmshExports, SecondOrderReadAsItsCorners) {
   const ByPosition expected = byPosition(readGmsh(mesh("box.msh", "-format msh41")).mesh, kGroups);
   for (const auto &[name, options, types] : std::vector<std::array<std::string, 3>>{

@@ -104,6 +104,26 @@ TEST(GmshFormats, Msh22Ascii) {
   EXPECT_FALSE(imported.hasElementFileId(201));
 }
 
+// Gmsh's MSH 2 writer with -save_all writes physical tag 0 on every element: no sets, and a note
+// saying why (the names are there, the groups are not).
+TEST(GmshFormats, Msh22WithoutPhysicalTagsNotesIt) {
+  ScratchDir dir("gmsh22_saveall");
+  std::string text = twoCubes22();
+  const std::size_t elements = text.find("$Elements");
+  text = text.substr(0, elements) + "$Elements\n2\n100 5 2 0 1" + hexNodes(11) + "\n200 5 2 0 2" +
+         hexNodes(15) + "\n$EndElements\n";
+  const std::string f = dir.write("all.msh", text);
+  const ImportedMesh imported = readGmsh(f);
+  EXPECT_EQ(imported.mesh.numElements(), 2u);
+  EXPECT_TRUE(imported.mesh.elementSets.empty());
+  EXPECT_TRUE(imported.mesh.faceSets.empty());
+  ASSERT_EQ(imported.notes.size(), 1u);
+  EXPECT_EQ(
+      imported.notes[0].rfind(f + ": $PhysicalNames names groups but no element carries a physical tag", 0),
+      0u)
+      << imported.notes[0];
+}
+
 std::string header(const std::string &version) {
   return "$MeshFormat\n" + version + " 1 8\n" + std::string("\x01\x00\x00\x00", 4) + "\n$EndMeshFormat\n";
 }
