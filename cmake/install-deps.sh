@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libgtest-dev nlohmann-json3-dev hdf5-tools
   python3-numpy python3-matplotlib                 # plots and reference-table scripts (/usr/bin/python3)
   paraview xvfb                                    # the ParaView reader test (pvpython under xvfb-run)
+  gmsh                                             # the import tests run the real Gmsh (else they are skipped)
 )
 missing=()
 for p in "${packages[@]}"; do

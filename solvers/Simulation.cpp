@@ -284,6 +284,8 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
     std::printf("glossa: %s  %zu elements  %lld dofs  %d rank(s)  %s (kappa/mu = %.3g)\n", deck.file().c_str(),
                 scene.mesh.numElements(), static_cast<long long>(assembler_->layout().numGlobalDofs()),
                 comm->getSize(), incompressibility.get<std::string>("method").c_str(), scene.volumetric.kappa() / mu);
+  if (talk_)
+    for (const std::string &note : scene.meshNotes) std::printf("glossa: note: %s\n", note.c_str());
 
   committed_ = std::make_unique<StepState>(assembler_->ownedMap(), assembler_->numLocalElements());
   stepStart_ = std::make_unique<StepState>(*committed_);

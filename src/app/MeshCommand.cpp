@@ -2,20 +2,25 @@
 
 #include <sstream>
 
+#include "io/output/OutputError.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "mesh/MeshChecks.hpp"
+#include "mesh/MeshError.hpp"
 #include "mesh/MeshFile.hpp"
 #include "mesh/MeshQuality.hpp"
 #include "mesh/MeshRefinement.hpp"
+#include "mesh/MeshWriter.hpp"
 
 namespace glossa::app {
 
 nlohmann::json describeMesh(const std::string &file, const MeshCommandOptions &options) {
-  mesh::HexMesh m = mesh::readMeshFile(file, options.format).mesh;
+  mesh::ImportedMesh imported = mesh::readMeshFile(file, options.format);
+  mesh::HexMesh m = std::move(imported.mesh);
   if (options.refine > 0) m = mesh::refineUniformly(m, options.refine);
   nlohmann::json r;
   r["file"] = file;
   r["refine"] = options.refine;
+  r["notes"] = imported.notes;
   r["nodes"] = m.nodes.size();
   r["elements"] = m.numElements();
   r["volume"] = mesh::meshVolume(m);
@@ -37,7 +42,18 @@ nlohmann::json describeMesh(const std::string &file, const MeshCommandOptions &o
   for (const auto &[name, faces] : m.faceSets) sets["face"][name] = {{"size", faces.size()}};
   for (const auto &[name, nodes] : m.nodeSets) sets["node"][name] = {{"size", nodes.size()}};
   r["sets"] = sets;
-  if (!options.output.empty()) {
+  const std::string extension = options.output.extension().string();
+  if (extension == ".msh" || extension == ".inp") {
+    // A mesh file with every set, face sets included (MeshWriter.hpp), for Gmsh or a solver.
+    try {
+      extension == ".msh" ? mesh::writeGmsh(m, options.output.string()) : mesh::writeAbaqus(m, options.output.string());
+    } catch (const mesh::MeshError &) {
+      throw;
+    } catch (const std::runtime_error &e) {
+      throw io::OutputError(e.what());
+    }
+    r["written"] = options.output.string();
+  } else if (!options.output.empty()) {
     std::vector<std::array<std::int64_t, 8>> hexes(m.elements.begin(), m.elements.end());
     io::ResultWriter writer(options.output, "mesh", m.nodes, hexes);
     std::vector<io::Field> cells;
@@ -67,6 +83,8 @@ std::string meshReportText(const nlohmann::json &r) {
   s << "  parts " << c.at("parts") << "  unused nodes " << c.at("unused_nodes") << "  coincident node pairs "
     << c.at("coincident_node_pairs") << "  duplicate elements " << c.at("duplicate_elements")
     << "  elements with an inverted corner " << c.at("inverted_corner_elements") << "\n";
+  if (r.contains("notes"))
+    for (const auto &note : r.at("notes")) s << "  note: " << note.get<std::string>() << "\n";
   const auto &sets = r.at("sets");
   for (const char *kind : {"element", "face", "node"}) {
     if (!sets.contains(kind)) continue;

@@ -47,9 +47,10 @@ usage:
       (uniaxial, simple shear or a table of F) with its muscle groups' inputs; writes
       stress, fibre and contractile stretches, tensions and activations to FILE
       (default: point.csv)
-  glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR]
-      read a mesh (Gmsh .msh 4.1, Abaqus .inp, ANSYS .node/.elem), optionally refine it,
-      and print its counts, sets, volume and element quality (--output: XDMF for ParaView)
+  glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR|OUT.msh|OUT.inp]
+      read a mesh (Gmsh .msh 2.2/4.1 ASCII or binary, Abaqus .inp, ANSYS .node/.elem),
+      optionally refine it, and print its counts, sets, volume and element quality
+      (--output DIR: XDMF for ParaView; OUT.msh or OUT.inp: the mesh with all its sets)
   glossa zero-strain DECK.xml --output FILE [--method approximate|inverse] [--tolerance T]
          [--max-iterations N] [--set path=value ...] [--quiet]
       the zero-strain configuration (paper §8.1) of a deck loaded by gravity alone: approximate
@@ -213,7 +214,9 @@ int main(int argc, char **argv) {
     if (a.command == "validate") {
       const auto deck = loadDeck(a, schema);
       // Building the scene checks what needs the mesh too (set names, named points).
-      glossa::model::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
+      const auto scene = glossa::model::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
+      if (root)
+        for (const std::string &note : scene.meshNotes) std::fprintf(stderr, "glossa: note: %s\n", note.c_str());
       if (root) std::cout << deck.toXml();
       return 0;
     }

@@ -20,6 +20,9 @@ namespace {
 const std::set<std::string> kHexTypes = {"C3D8", "C3D8H", "C3D8R", "C3D8RH"};
 const std::set<std::string> kQuadTypes = {"CPS4", "CPS4R", "CPE4",  "CPE4R",  "S4",     "S4R",
                                           "R3D4", "M3D4",  "M3D4R", "SFM3D4", "SFM3D4R"};
+// 2-node lines: Gmsh exports a physical curve as T3D2 elements in an ELSET; like MSH's physical
+// curves they give node sets.
+const std::set<std::string> kLineTypes = {"T3D2", "T2D2", "B31", "B21"};
 
 struct Keyword {
   std::string name;                           // upper case, without '*'
@@ -38,6 +41,7 @@ struct FileElement {
   std::vector<std::int64_t> nodes;
   std::size_t line;
   bool hex;
+  bool segment;  // a 2-node line (neither hexahedron nor quadrilateral)
 };
 
 class AbaqusParser {
@@ -130,10 +134,11 @@ class AbaqusParser {
       if (k.params.count("NSET")) set(nsets_, param(k, "NSET"));
     } else if (k.name == "ELEMENT") {
       const std::string type = upper(param(k, "TYPE"));
-      if (!kHexTypes.count(type) && !kQuadTypes.count(type)) {
+      if (!kHexTypes.count(type) && !kQuadTypes.count(type) && !kLineTypes.count(type)) {
         in_.fail("element type " + type +
-                 " is not supported: Glossa reads C3D8, C3D8H, C3D8R and C3D8RH hexahedra, and 4-node "
-                 "quadrilaterals (CPS4, S4, R3D4, ...) as face sets");
+                 " is not supported: Glossa reads C3D8, C3D8H, C3D8R and C3D8RH hexahedra, 4-node "
+                 "quadrilaterals (CPS4, S4, R3D4, ...) as face sets and 2-node lines (T3D2, T2D2, B31, B21) "
+                 "as node sets");
       }
       if (k.params.count("ELSET")) set(elsets_, param(k, "ELSET"));
     } else if (k.name == "ELSET") {
@@ -170,7 +175,8 @@ class AbaqusParser {
       if (k.params.count("NSET")) set(nsets_, k.params.at("NSET")).ids.push_back(id);
     } else if (k.name == "ELEMENT") {
       const bool hex = kHexTypes.count(upper(k.params.at("TYPE"))) != 0;
-      const std::size_t needed = hex ? 9 : 5;
+      const bool segment = kLineTypes.count(upper(k.params.at("TYPE"))) != 0;
+      const std::size_t needed = hex ? 9 : segment ? 3 : 5;
       if (pending_.empty()) pendingLine_ = in_.lineNumber();
       for (const auto &x : fields(line)) pending_.push_back(x);
       if (pending_.size() > needed) {
@@ -180,7 +186,7 @@ class AbaqusParser {
       if (pending_.size() < needed) return;  // continued on the next line
       const std::int64_t id = integer(pending_[0], "element id");
       if (elements_.count(id)) in_.fail("duplicate element id " + pending_[0]);
-      FileElement e{{}, pendingLine_, hex};
+      FileElement e{{}, pendingLine_, hex, segment};
       for (std::size_t a = 1; a < needed; ++a) e.nodes.push_back(integer(pending_[a], "node id"));
       elements_[id] = e;
       elementOrder_.push_back(id);
@@ -276,6 +282,7 @@ class AbaqusParser {
     for (const auto &[key, s] : elsets_) {
       std::vector<ElementId> hexes;
       std::vector<ElementFace> faces;
+      std::vector<NodeId> lineNodes;
       for (std::int64_t id : s.ids) {
         const auto it = elements_.find(id);
         if (it == elements_.end()) {
@@ -285,6 +292,10 @@ class AbaqusParser {
         }
         if (it->second.hex) {
           hexes.push_back(result_.elementOfFileId(id));
+          continue;
+        }
+        if (it->second.segment) {
+          for (std::int64_t n : it->second.nodes) lineNodes.push_back(result_.nodeOfFileId(n));
           continue;
         }
         std::array<NodeId, 4> quad;
@@ -298,11 +309,14 @@ class AbaqusParser {
         }
         faces.push_back(face);
       }
-      if (!hexes.empty() && !faces.empty()) {
+      if (int(!hexes.empty()) + int(!faces.empty()) + int(!lineNodes.empty()) > 1) {
         importing::fail(result_.source, s.line,
-                        "element set '" + s.name + "' mixes hexahedra and quadrilaterals");
+                        "element set '" + s.name + "' mixes hexahedra, quadrilaterals and lines");
       }
-      if (faces.empty()) {
+      if (!lineNodes.empty()) {
+        importing::sortUnique(lineNodes);
+        mesh.nodeSets[s.name] = lineNodes;  // an NSET of the same name, below, takes precedence
+      } else if (faces.empty()) {
         importing::sortUnique(hexes);
         mesh.elementSets[s.name] = hexes;
       } else {

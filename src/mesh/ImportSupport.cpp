@@ -141,15 +141,19 @@ bool parseDouble(const std::string &token, double &value) {
 
 void checkElements(const HexMesh &mesh, const std::string &file, const std::vector<std::size_t> &lines,
                    const std::vector<std::int64_t> &fileIds) {
+  checkElements(mesh, fileIds, [&](std::size_t e, const std::string &reason) { fail(file, lines[e], reason); });
+}
+
+void checkElements(const HexMesh &mesh, const std::vector<std::int64_t> &fileIds,
+                   const std::function<void(std::size_t e, const std::string &reason)> &refuse) {
   for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
     const Hex &hex = mesh.elements[e];
     for (int a = 0; a < 8; ++a) {
       for (int b = a + 1; b < 8; ++b) {
         if (hex[a] == hex[b]) {
-          fail(file, lines[e],
-               "element " + std::to_string(fileIds[e]) + " repeats a node (local nodes " +
-                   std::to_string(a + 1) + " and " + std::to_string(b + 1) +
-                   "): not a hexahedron (collapsed wedges and tetrahedra are not supported)");
+          refuse(e, "element " + std::to_string(fileIds[e]) + " repeats a node (local nodes " +
+                        std::to_string(a + 1) + " and " + std::to_string(b + 1) +
+                        "): not a hexahedron (collapsed wedges and tetrahedra are not supported)");
         }
       }
     }
@@ -158,7 +162,7 @@ void checkElements(const HexMesh &mesh, const std::string &file, const std::vect
       std::ostringstream reason;
       reason << "element " << fileIds[e] << " is inverted or degenerate: det(dX/dxi) = " << detJ
              << " at a Gauss point (check the node order)";
-      fail(file, lines[e], reason.str());
+      refuse(e, reason.str());
     }
   }
 }

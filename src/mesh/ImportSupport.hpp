@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -54,6 +55,10 @@ bool parseDouble(const std::string &token, double &value);
 // lines[e] and fileIds[e] locate element e in the file.
 void checkElements(const HexMesh &mesh, const std::string &file, const std::vector<std::size_t> &lines,
                    const std::vector<std::int64_t> &fileIds);
+// The same checks for readers that locate elements otherwise (a byte offset in a binary file):
+// `refuse(e, reason)` must throw.
+void checkElements(const HexMesh &mesh, const std::vector<std::int64_t> &fileIds,
+                   const std::function<void(std::size_t e, const std::string &reason)> &refuse);
 
 // Finds hexahedron faces by their four nodes (any order, any rotation).
 class FaceLocator {

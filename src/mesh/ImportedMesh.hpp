@@ -16,6 +16,9 @@ struct ImportedMesh {
   std::vector<std::int64_t> nodeFileIds;     // nodeFileIds[n]: the file's id of node n
   std::vector<std::int64_t> elementFileIds;  // elementFileIds[e]: the file's id of element e
   std::string source;                        // the file the mesh was read from (for messages)
+  // What the reader changed on the way in and the user should know (e.g. second-order elements
+  // made trilinear): not errors; the deck and `glossa mesh` print them.
+  std::vector<std::string> notes;
 
   // Glossa's index of a file id. Throws std::runtime_error naming the id and the source.
   NodeId nodeOfFileId(std::int64_t fileId) const;

@@ -77,6 +77,8 @@ struct Scene {
   std::vector<BodyForceLoad> bodyForces;
   std::vector<FollowerPressureLoad> pressures;
   std::vector<std::string> tracedPoints; // names in mesh.namedPoints, in deck order
+  // What the mesh reader changed on the way in (ImportedMesh::notes), for the run to print.
+  std::vector<std::string> meshNotes;
 };
 
 } // namespace glossa::model

@@ -155,7 +155,7 @@ ParameterList namedPointParameters() {
   return p;
 }
 
-mesh::HexMesh buildMesh(const io::Deck &deck) {
+mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
   const ParameterList &p = deck.root().sublist("Mesh");
   mesh::HexMesh m;
   try {
@@ -205,6 +205,7 @@ mesh::HexMesh buildMesh(const io::Deck &deck) {
         for (auto it = lists.begin(); it != lists.end(); ++it)
           mesh::readAnsysNodeList(resolve(lists.sublist(lists.name(it)).get<std::string>("file")), lists.name(it), imported);
         m = std::move(imported.mesh);
+        notes = std::move(imported.notes);
       } catch (const io::DeckError &) {
         throw;
       } catch (const std::runtime_error &e) {
@@ -299,7 +300,7 @@ void declareSceneParameters(ParameterList &schema) {
 
 Scene buildScene(const io::Deck &deck, double endTime) {
   Scene scene;
-  scene.mesh = buildMesh(deck);
+  scene.mesh = buildMesh(deck, scene.meshNotes);
   mesh::HexMesh &m = scene.mesh;
 
   BuiltMaterial material = buildMaterial(deck, m, endTime);

@@ -110,6 +110,21 @@ TEST(AbaqusReader, HandWrittenFile) {
   EXPECT_NEAR(meshVolume(mesh), 2.0, 1e-15);
 }
 
+// Gmsh exports a physical curve as T3D2 lines in an ELSET: the node set of their nodes (an NSET of
+// the same name, as for face sets, would take precedence).
+TEST(AbaqusReader, LineElsetsAreNodeSets) {
+  ScratchDir dir("abaqus_lines");
+  const std::string extra = "*ELEMENT, type=T3D2, ELSET=Line1\n30, 1, 2\n31, 2, 6\n*ELSET,ELSET=edge\n30, 31,\n";
+  const HexMesh mesh = readAbaqus(dir.write("two.inp", twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", extra))).mesh;
+  EXPECT_EQ(mesh.numElements(), 2u);
+  EXPECT_EQ(mesh.nodeSets.at("edge"), (std::vector<NodeId>{0, 1, 5}));
+  EXPECT_EQ(mesh.nodeSets.at("Line1"), (std::vector<NodeId>{0, 1, 5}));
+  EXPECT_EQ(mesh.elementSets.count("edge"), 0u);
+  EXPECT_EQ(mesh.faceSets.count("edge"), 0u);
+  const std::string f = dir.write("bad.inp", twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", extra + "*ELSET, ELSET=odd\n1, 30\n"));
+  expectError([&] { readAbaqus(f); }, {f + ":", "'odd' mixes hexahedra, quadrilaterals and lines"});
+}
+
 TEST(AbaqusReader, RefusesMalformedFiles) {
   ScratchDir dir("abaqus_bad");
   const std::string f = dir.file("bad.inp");
@@ -133,7 +148,7 @@ TEST(AbaqusReader, RefusesMalformedFiles) {
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*SURFACE, NAME=s\n1, S7\n")),
               {f + ":39:", "'S7' is not S1..S6"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELSET, ELSET=mixed\n1, 20\n")),
-              {f + ":38:", "'mixed' mixes hexahedra and quadrilaterals"});
+              {f + ":38:", "'mixed' mixes hexahedra, quadrilaterals and lines"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELSET, ELSET=far\n1, 77\n")),
               {f + ":38:", "refers to element 77"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*INCLUDE, INPUT=more.inp\n")),

@@ -96,15 +96,18 @@ TEST(GmshReader, RefusesMalformedFiles) {
     dir.write("bad.msh", text);
     return [f] { readGmsh(f); };
   };
-  expectError(read(twoCubes("200 15 16 17 18 19 20 21 22", "2.2 0 8")), {f + ":2:", "MSH version 2.2"});
-  expectError(read(twoCubes("200 15 16 17 18 19 20 21 22", "4.1 1 8")), {f + ":2:", "binary"});
+  expectError(read(twoCubes("200 15 16 17 18 19 20 21 22", "4.0 0 8")), {f + ":2:", "MSH version 4.0"});
+  // Binary by its header but ASCII after it: the endianness marker is the text "$End".
+  expectError(read(twoCubes("200 15 16 17 18 19 20 21 22", "4.1 1 8")), {f + ": byte 22:", "endianness marker"});
   // A 4-node tetrahedron in a volume entity: refused, naming the type. The block header says
   // type 5, so give a tetrahedron a block of its own.
   const std::string tet = twoCubes();
   std::string withTet = tet;
   withTet.replace(withTet.find("4 4 1 200"), 9, "5 5 1 300");
   withTet.replace(withTet.find("$EndElements"), 12, "3 2 4 1\r\n300 15 16 17 19\r\n$EndElements");
-  expectError(read(withTet), {f + ":", "type 4 (4-node tetrahedron) in volume entity 2"});
+  expectError(read(withTet), {f + ":59:", "volume entity 2 (physical 'muscle tissue', 'upper') contains tetrahedra "
+                                          "(Gmsh type 4, 4-node tetrahedron): Glossa needs hexahedra",
+                              "Recombine/Transfinite", "'Mesh.SubdivisionAlgorithm = 2;'"});
   expectError(read(twoCubes("200 15 16 17 18 19 20 21 99")), {f + ":", "refers to node 99"});
   expectError(read(twoCubes("200 15 16 17 18 19 20 21")), {f + ":", "needs 8 nodes, found 7"});
   expectError(read(twoCubes("200 19 20 21 22 15 16 17 18")), {f + ":", "element 200 is inverted"});
