@@ -12,6 +12,7 @@ void ControllerParameters::validate() const {
   ga.validate("ga.");
   gradient.validate("gradient.");
   detail::requireInRange("pruningTolerance", pruningTolerance, 0.0, detail::kInf, false, true);
+  detail::requireInRange("predictionSeedSteps", predictionSeedSteps, 1, 16);
   detail::requireInRange("effortWeight", effortWeight, 0.0, detail::kInf, false, true);
   std::set<std::string> seen;
   for (std::size_t i = 0; i < alwaysEvaluated.size(); ++i) {

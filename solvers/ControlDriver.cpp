@@ -169,20 +169,24 @@ std::vector<control::Genome> ControlDriver::geneticSeeds(Search &search, const s
     seeds.push_back(control::genomeFromInputs(evaluated, predicted));
   }
   if (p.predictionSeed == control::PredictionSeed::gaussNewtonStep && !evaluated.empty()) {
-    control::Genome g = control::genomeFromInputs(evaluated, gaussNewtonPrediction(search, previousInputs));
-    if (p.ga.geneType == control::GeneType::binary)
-      for (double &u : g) u = u < 0.5 ? 0.0 : 1.0;
-    seeds.push_back(std::move(g));
+    for (const auto &predicted : gaussNewtonPrediction(search, previousInputs)) {
+      control::Genome g = control::genomeFromInputs(evaluated, predicted);
+      if (p.ga.geneType == control::GeneType::binary)
+        for (double &u : g) u = u < 0.5 ? 0.0 : 1.0;
+      if (std::find(seeds.begin(), seeds.end(), g) == seeds.end()) seeds.push_back(std::move(g));
+    }
   }
   return seeds;
 }
 
-std::vector<double> ControlDriver::gaussNewtonPrediction(Search &search, const std::vector<double> &from) {
+std::vector<std::vector<double>> ControlDriver::gaussNewtonPrediction(Search &search,
+                                                                      const std::vector<double> &from) {
   // Ranked like the GA's candidates and solved ahead of them (index -1): every control group
   // solves it alike, so it is also the group-0 winner among equals.
   const control::ControlEvaluation e = solveCandidate(search, from, true, -1);
   ++search.predictionSolves;
-  if (!e.ok || search.result.inputs != from) return from; // no state to linearise about
+  if (!e.ok || search.result.inputs != from) return {from}; // no state to linearise about
+  if (setup_.parameters.candidatesFromPreviousBest) plant_.startFromLast();
   const std::vector<int> &evaluated = search.result.evaluated;
   const auto n = static_cast<Eigen::Index>(evaluated.size());
   const double epsilon = setup_.parameters.effortWeight;
@@ -197,10 +201,16 @@ std::vector<double> ControlDriver::gaussNewtonPrediction(Search &search, const s
   const double rho = setup_.parameters.gradient.damping * (S.transpose() * S).diagonal().maxCoeff() +
                      std::numeric_limits<double>::min();
   const Eigen::VectorXd du = control::solveBoundedLeastSquares(S, -r, -u, Eigen::VectorXd::Ones(n) - u, rho).x;
-  std::vector<double> predicted = from;
-  for (Eigen::Index i = 0; i < n; ++i)
-    predicted[evaluated[static_cast<std::size_t>(i)]] = std::clamp(u(i) + du(i), 0.0, 1.0);
-  return predicted;
+  // u + du lies in [0, 1]^n, and so does every point between it and u.
+  std::vector<std::vector<double>> predictions;
+  double t = 1.0;
+  for (int k = 0; k < setup_.parameters.predictionSeedSteps; ++k, t *= 0.5) {
+    std::vector<double> predicted = from;
+    for (Eigen::Index i = 0; i < n; ++i)
+      predicted[evaluated[static_cast<std::size_t>(i)]] = std::clamp(u(i) + t * du(i), 0.0, 1.0);
+    predictions.push_back(std::move(predicted));
+  }
+  return predictions;
 }
 
 void ControlDriver::shareWinner(Search &search) {

@@ -67,9 +67,10 @@ private:
   double effort(const std::vector<double> &inputs) const;
   // The GA's seeds: the previous step's best and the prediction the parameters ask for.
   std::vector<control::Genome> geneticSeeds(Search &search, const std::vector<double> &previousInputs);
-  // The inputs one bounded Gauss-Newton step from `from`, linearised there (its solve is a
-  // candidate like any other).
-  std::vector<double> gaussNewtonPrediction(Search &search, const std::vector<double> &from);
+  // The inputs one bounded Gauss-Newton step from `from`, linearised there, at the step lengths
+  // 1, 1/2, ... of ControllerParameters::predictionSeedSteps (the solve at `from` is a candidate
+  // like any other).
+  std::vector<std::vector<double>> gaussNewtonPrediction(Search &search, const std::vector<double> &from);
 
   ControlDriverSetup setup_;
   ControlPlant &plant_;

@@ -104,6 +104,9 @@ void requireMixedCompatible(const Teuchos::ParameterList &D, const model::Scene 
     throw io::DeckError(why + "Linear solver/type = iterative (the block system is solved by GMRES)");
   if (D.sublist("Control").get<std::string>("type") != "none")
     throw io::DeckError(why + "Control/type = none (the controllers' sensitivities use the condensed tangent)");
+  if (scene.tissues.size() > 1)
+    throw io::DeckError(why + "one tissue (its pressure state holds one volumetric law); use the augmented Lagrangian "
+                              "for Material/Tissues");
 }
 } // namespace
 
@@ -158,6 +161,8 @@ public:
   }
 
   void keepLast() override { kept_.assign(last_); }
+  // stepStart_ is set anew by every attemptStep, so this lasts for the step.
+  void startFromLast() override { sim_.stepStart_->assign(last_); }
 
   InputSensitivity sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) override {
     const Trial &trial = *sim_.trial_;
@@ -210,11 +215,16 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   steps_ = std::make_unique<StepSizeController>(D.sublist("Time"));
   scene_ = std::make_unique<model::Scene>(model::buildScene(deck, steps_->endTime()));
   model::Scene &scene = *scene_;
-  const double mu = scene.material->shearModulus();
+  // The summary's kappa/mu figures are the Material section's tissue's (tissues[0]).
+  const double mu = scene.tissues[0].matrix->shearModulus();
   const auto &incompressibility = D.sublist("Incompressibility");
-  // The material's law stays the physical one for the Uzawa loop; the tangent gets kappa_t.
-  const materials::VolumetricEnergy physicalVolumetric = scene.volumetric;
-  scene.volumetric = scene.volumetric.withKappa(UzawaLoop::tangentKappa(incompressibility, scene.volumetric.kappa(), mu));
+  // Each tissue's law stays the physical one for the Uzawa loop; the tangent gets its kappa_t.
+  std::vector<materials::VolumetricEnergy> physicalVolumetric;
+  for (auto &tissue : scene.tissues) {
+    physicalVolumetric.push_back(tissue.volumetric);
+    tissue.volumetric = tissue.volumetric.withKappa(
+        UzawaLoop::tangentKappa(incompressibility, tissue.volumetric.kappa(), tissue.matrix->shearModulus()));
+  }
 
   // Control groups: the world splits into G groups of equal size, each with its own copy of
   // the whole solver on a sub-communicator (every group steps the same committed state; GA
@@ -234,9 +244,9 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
   if (incompressibility.get<std::string>("method") == "mixed") {
     requireMixedCompatible(D, scene);
-    const AugmentedLagrangianRule law(physicalVolumetric, mu); // only its theta_phys(p) is used
+    const AugmentedLagrangianRule law(physicalVolumetric[0], mu); // only its theta_phys(p) is used
     mixedPressure = Teuchos::rcp(new assembly::MixedPressureState(
-        physicalVolumetric, [law](double p) { return law.dilatationAtPressure(p); }, mu));
+        physicalVolumetric[0], [law](double p) { return law.dilatationAtPressure(p); }, mu));
   }
   model_ = Teuchos::rcp(new assembly::ModelEvaluator(
       assembler_, mixedPressure.is_null() ? buildLinearSolver(linearSection, context)
@@ -247,7 +257,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   newton_ = std::make_unique<NewtonSolver>(model_, D.sublist("Nonlinear solver"), lengthScale,
                                            linearSection.get<double>("tolerance"),
                                            linearSection.get<std::string>("MueLu reuse scope") == "run");
-  uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility, physicalVolumetric, mu);
+  uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility, physicalVolumetric);
 
   dir_ = options.outputDirectory.empty() ? std::filesystem::path(D.sublist("Output").get<std::string>("directory"))
                                          : options.outputDirectory;
@@ -274,16 +284,26 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   doc_["dofs"] = assembler_->layout().numGlobalDofs();
   doc_["elements"] = scene.mesh.numElements();
   doc_["incompressibility"] = incompressibility.get<std::string>("method");
-  doc_["kappa_tangent"] = scene.volumetric.kappa();
-  doc_["kappa_over_mu"] = scene.volumetric.kappa() / mu;
-  doc_["kappa_physical_over_mu"] = physicalVolumetric.kappa() / mu; // inf is written as null
+  doc_["kappa_tangent"] = scene.tissues[0].volumetric.kappa();
+  doc_["kappa_over_mu"] = scene.tissues[0].volumetric.kappa() / mu;
+  doc_["kappa_physical_over_mu"] = physicalVolumetric[0].kappa() / mu; // inf is written as null
+  doc_["tissues"] = nlohmann::json::array();
+  for (std::size_t t = 0; t < scene.tissues.size(); ++t) {
+    const auto &tissue = scene.tissues[t];
+    const auto elements = scene.elementTissue.empty()
+                              ? scene.mesh.numElements()
+                              : static_cast<std::size_t>(std::count(scene.elementTissue.begin(), scene.elementTissue.end(), static_cast<int>(t)));
+    doc_["tissues"].push_back({{"name", tissue.name}, {"elements", elements}, {"mu", tissue.matrix->shearModulus()},
+                               {"kappa_physical", physicalVolumetric[t].kappa()}, {"kappa_tangent", tissue.volumetric.kappa()},
+                               {"density", tissue.density}});
+  }
   if (uzawa_->augmentedLagrangian()) doc_["kappa_AL_over_mu"] = UzawaLoop::augmentationKappa(incompressibility, mu) / mu;
   doc_["steps"] = nlohmann::json::array();
 
   if (talk_)
     std::printf("glossa: %s  %zu elements  %lld dofs  %d rank(s)  %s (kappa/mu = %.3g)\n", deck.file().c_str(),
                 scene.mesh.numElements(), static_cast<long long>(assembler_->layout().numGlobalDofs()),
-                comm->getSize(), incompressibility.get<std::string>("method").c_str(), scene.volumetric.kappa() / mu);
+                comm->getSize(), incompressibility.get<std::string>("method").c_str(), scene.tissues[0].volumetric.kappa() / mu);
   if (talk_)
     for (const std::string &note : scene.meshNotes) std::printf("glossa: note: %s\n", note.c_str());
 

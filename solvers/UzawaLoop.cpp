@@ -65,20 +65,25 @@ double UzawaLoop::tangentKappa(const Teuchos::ParameterList &s, double materialK
   return materialKappa;
 }
 
-UzawaLoop::UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton,
-                     const Teuchos::ParameterList &s, const materials::VolumetricEnergy &physical, double mu)
-    : assembler_(assembler), newton_(newton),
-      augmented_(s.get<std::string>("method") == "augmented Lagrangian"),
-      mixed_(s.get<std::string>("method") == "mixed"),
-      rule_(physical, augmentationKappa(s, mu)), tolerance_(s.get<double>("dilatation tolerance")), maxIterations_(s.get<int>("maximum Uzawa iterations")),
+UzawaLoop::UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton, const Teuchos::ParameterList &s,
+                     const std::vector<materials::VolumetricEnergy> &physical)
+    : assembler_(assembler), newton_(newton), augmented_(s.get<std::string>("method") == "augmented Lagrangian"),
+      mixed_(s.get<std::string>("method") == "mixed"), tolerance_(s.get<double>("dilatation tolerance")),
+      maxIterations_(s.get<int>("maximum Uzawa iterations")),
       inexact_(augmented_ && s.get<std::string>("Uzawa acceleration") == "inexact"),
-      innerTolerance_(s.get<double>("inner tolerance")) {}
+      innerTolerance_(s.get<double>("inner tolerance")) {
+  const model::Scene &scene = assembler.scene();
+  for (std::size_t t = 0; t < scene.tissues.size(); ++t)
+    rules_.emplace_back(physical.at(t), augmentationKappa(s, scene.tissues[t].matrix->shearModulus()));
+  for (const auto e : assembler.layout().localElements)
+    localTissue_.push_back(scene.elementTissue.empty() ? 0 : scene.elementTissue[static_cast<std::size_t>(e)]);
+}
 
 DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) const {
   double local[2] = {0.0, 0.0}, volume = 0.0, maxErr = 0.0, maxChange = 0.0;
   for (std::size_t i = 0; i < f.theta.size(); ++i) {
     const double change = std::abs(f.theta[i] - 1.0);
-    const double e = measuresPhysicalLaw() ? rule_.dilatationError(f.theta[i], f.pressure[i]) : change;
+    const double e = measuresPhysicalLaw() ? ruleOf(i).dilatationError(f.theta[i], f.pressure[i]) : change;
     maxErr = std::max(maxErr, e);
     maxChange = std::max(maxChange, change);
     local[0] += e * f.referenceVolume[i];
@@ -137,7 +142,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
     // Lambda_e <- beta p_e (p_e = U_t'(theta_e) + Lambda_e; for nu = 0.5, beta = 1 and this is
     // Lambda_e + kappa_AL (theta_e - 1) to first order): the multiplier takes over the element
     // pressure, so the next solve needs less volume change to carry it (AugmentedLagrangianRule).
-    for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = rule_.nextMultiplier(fields.pressure[i]);
+    for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = ruleOf(i).nextMultiplier(fields.pressure[i]);
   }
   return result;
 }

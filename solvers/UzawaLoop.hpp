@@ -22,9 +22,10 @@ Teuchos::ParameterList incompressibilityParameters();
 
 class UzawaLoop {
 public:
-  // `physical`: the material's volumetric law (kappa = inf for nu = 0.5); mu: its shear modulus.
-  UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton,
-            const Teuchos::ParameterList &section, const materials::VolumetricEnergy &physical, double mu);
+  // `physical`: per tissue of the assembler's scene, its volumetric law (kappa = inf for nu = 0.5);
+  // each tissue's kappa_AL is the penalty ratio times its matrix's shear modulus.
+  UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton, const Teuchos::ParameterList &section,
+            const std::vector<materials::VolumetricEnergy> &physical);
 
   bool augmentedLagrangian() const { return augmented_; }
   bool mixedPressure() const { return mixed_; }
@@ -50,7 +51,9 @@ private:
   // Stops on the distance from the physical law, with room for more than one Newton solve
   // (augmented Lagrangian and mixed; a penalty makes one solve and reports |theta - 1|).
   bool measuresPhysicalLaw() const { return augmented_ || mixed_; }
-  AugmentedLagrangianRule rule_;
+  std::vector<AugmentedLagrangianRule> rules_; // per tissue
+  std::vector<int> localTissue_;               // per local element: its tissue
+  const AugmentedLagrangianRule &ruleOf(std::size_t localElement) const { return rules_[localTissue_[localElement]]; }
   double tolerance_;
   int maxIterations_;
   bool inexact_;              // Uzawa acceleration = inexact inner solves

@@ -97,7 +97,8 @@ class Xml:
 
 
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
-         reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None):
+         reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None,
+         matrix=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
@@ -105,7 +106,9 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     breathing_start: None (the pressure ramps over [1, 2] s) or when eq. 27's first breath starts.
     external_sg: the styloglossus also as an external muscle per side (eq. 22-23) from the styloid
     anchor to its exit nodes, driven by the SG group (passive where SG is).
-    control: None or {parameter: (type, value)} of the Control section (neural control, §6.1)."""
+    control: None or {parameter: (type, value)} of the Control section (neural control, §6.1).
+    matrix: None (the Fung muscle matrix of Table I, exactly incompressible) or
+    {parameter: (type, value)} of the Material section's matrix law."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -153,8 +156,8 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.add("reference coordinates file", "string", reference)
     x.close()  # Mesh
     x.open("Material")
-    x.add("type", "string", "Fung")
-    x.add("Poisson's ratio", "double", 0.5)
+    for parameter, (kind, value) in (matrix or {"type": ("string", "Fung"), "Poisson's ratio": ("double", 0.5)}).items():
+        x.add(parameter, kind, value)
     x.open("Muscle groups")
     for g in GROUPS:
         x.open(g)
@@ -304,6 +307,18 @@ stepping, two steps per load, each converged: upright gravity along {0, 0, -1.0}
 [0, 1] s"""
 deck("s8_2_gravity", "Paper §8.2 (Tables III and IV analogue): mesh dependence under upright gravity.\n" + COMMON +
      MESH_STUDY + " in steps of 0.5 s.", {}, gravity=(0, 0, -1), end_time=1.0, step=0.5)
+# The ArtiSynth/ICP tongue's own matrix law beside Glossa's (doc/tongue.md, "The ArtiSynth material").
+ARTISYNTH = {"type": ("string", "Mooney-Rivlin"), "C10": ("double", 1037), "C20": ("double", 486),
+             "bulk modulus": ("double", 10370), "volumetric energy": ("string", "quadratic")}
+deck("s8_2_gravity_artisynth", "The s8_2_gravity scene with the ArtiSynth tongue's matrix law in place of the Fung muscle matrix.\n" +
+     COMMON + """
+The matrix is the five-parameter Mooney-Rivlin solid of the ArtiSynth/ICP tongue model (Buchaillard,
+Perrier and Payan 2009, as ArtiSynth ships it): C10 = 1037 Pa, C20 = 486 Pa, the other
+coefficients 0, bulk modulus 10 C10 = 10.37 kPa with U = kappa/2 (J - 1)^2 (so nearly but not
+exactly incompressible, kappa/mu = 5); the passive fibre families and everything else as in
+s8_2_gravity. Upright gravity along {0, 0, -1.0} ramped over [0, 1] s in steps of 0.5 s, every
+muscle group passive. doc/tongue.md compares the two.""",
+     {}, gravity=(0, 0, -1), end_time=1.0, step=0.5, matrix=ARTISYNTH)
 deck("s8_2_gravity_pressure", "Paper §8.2 (Tables III and IV analogue): mesh dependence under upright gravity and\n"
      "the 500 Pa airway pressure.\n" + COMMON + MESH_STUDY + """, then the airway pressure as in
 s8_3: linear from 0 at P_A to p_max = -500 Pa (suction) at P_P on the face set 'airway', ramped
@@ -354,11 +369,12 @@ a group switched on at the previous step is kept."""
 GA = """
 Elitist GA (the paper's, section 6.1) on continuous genes in [0, 1]: population 14, at most 10
 generations (stop after 3 without improvement), the initial population holding the previous
-step's inputs and the corners of the search space (all off, all on, each group alone: 14 fit
-all 11 groups) and, after the previous inputs, a prediction: one bounded Gauss-Newton step from
-them on the converged tangent's sensitivities (the onset of each breath is met by a prediction,
-not by the corners); activation priced at 0.2 mm per unit input squared (effort weight 2e-4 m),
-so the least-activated of equally good inputs wins; seed 1 (the same seed gives the same run).
+step's inputs, a prediction and the corners of the search space (all off, all on, each
+evaluated group alone, as many as fit). The prediction: one bounded Gauss-Newton step from
+the previous inputs on the converged tangent's sensitivities (the onset of each breath is met by
+a prediction, not by the corners). Activation is priced at 0.2 mm per unit input squared
+(effort weight 2e-4 m), so the least-activated of equally good inputs wins; seed 1 (the same
+seed gives the same run).
 Not the paper's binary genes: at steps of 0.3125 s an input of 1 raises alpha to
 dt/(tau + dt) = 0.68 in one step (FFMR 6.8 %), far above the 0.3 to 2 % that holding the
 tongue needs, so binary genes keep every group off and the tongue moves as the passive one
@@ -368,8 +384,12 @@ Gradient controller: projected Gauss-Newton on continuous inputs in [0, 1] from 
 step's, sensitivities from the converged tangent, at most 4 iterations per step."""
 SUPINE_GA = """
 Supine, the GA stops after 2 generations without improvement (not 3): the supine solves cost
-more, and so the run stays within 30 min on 2 ranks (measured: 27 min, eq. 25 mean 5.2 mm,
-against 40 min and 6.0 mm with 3)."""
+more (measured: 27 min, eq. 25 mean 5.2 mm, against 40 min and 6.0 mm with 3). Supine the
+response is strongly nonlinear (the geniohyoid pulls the tongue base forward) and the full
+Gauss-Newton step can overshoot and lose to the previous inputs, which a short GA then keeps for
+several steps; so the prediction is seeded at step lengths 1, 1/2 and 1/4 (a line search in
+generation 0), and every candidate starts its solve from the converged state of the previous
+inputs (Control/candidate start), which the prediction solves first (doc/tongue.md, s8_5)."""
 CONTROL_COMMON = {"control points": ("string", CONTROL_POINTS), "always evaluated": ("string", "GGa, GGm, GGp")}
 CONTROLLERS = {
     "ga": (GA, dict(CONTROL_COMMON, **{"type": ("string", "genetic algorithm"), "genes": ("string", "continuous"),
@@ -392,7 +412,8 @@ for posture, g in POSTURES:
             # Supine solves cost more (72 s per GA step against 56 upright): stopping after 2
             # generations without improvement keeps the run within 30 min on 2 ranks, and was
             # measured better too (doc/tongue.md, s8_5).
-            control = dict(control, **{"stagnation generations": ("int", 2)})
+            control = dict(control, **{"stagnation generations": ("int", 2), "prediction seed steps": ("int", 3),
+                                       "candidate start": ("string", "previous best")})
             text += SUPINE_GA
         deck(f"s8_5_{controller}_{posture}",
              f"Paper §8.5 (Figs. 11 and 12): {posture} posture, three 350 Pa breathing cycles, position\n"

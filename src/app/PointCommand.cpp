@@ -159,7 +159,7 @@ int runPointDriver(const io::Deck &deck, const std::filesystem::path &csv) {
   auto evaluate = [&](double t, double dt, materials::MusclePointResponse &m) {
     materials::PointResponse r;
     if (!law) {
-      r = material.isochoric->evaluate(path(t));
+      r = material.tissues[0].matrix->evaluate(path(t));
       return r;
     }
     materials::MusclePointInput in;

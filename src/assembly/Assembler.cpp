@@ -67,7 +67,10 @@ Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
   // Dirichlet rows get a diagonal of the size of an element stiffness diagonal, so that they
   // neither dominate nor vanish in the preconditioner's spectrum.
   const double h = std::cbrt(volume / static_cast<double>(mesh.numElements()));
-  dirichletScale_ = (scene_.volumetric.kappa() + 4.0 / 3.0 * scene_.material->shearModulus()) * h;
+  // With several tissues: the stiffest one's (the same for every rank, whatever it owns).
+  double stiffness = 0.0;
+  for (const auto &t : scene_.tissues) stiffness = std::max(stiffness, t.volumetric.kappa() + 4.0 / 3.0 * t.matrix->shearModulus());
+  dirichletScale_ = stiffness * h;
 
   history_ = model::MuscleHistory(scene_.muscles, layout_.localElements);
   elementLids_.resize(layout_.localElements.size());
@@ -164,7 +167,8 @@ std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::ve
   std::vector<fem::MixedBase> bases(layout_.localElements.size());
   for (std::size_t i = 0; i < bases.size(); ++i)
     bases[i] = fem::mixedBase(scene_.mesh.elementCoordinates(layout_.localElements[i]), elementDisplacement(i, uData),
-                              previous ? &(*previous)[i] : nullptr, scene_.volumetric, lambda[i]);
+                              previous ? &(*previous)[i] : nullptr,
+                              scene_.tissueOf(static_cast<std::size_t>(layout_.localElements[i])).volumetric, lambda[i]);
   return bases;
 }
 
@@ -188,10 +192,11 @@ void Assembler::addExternalForces(double time, Teuchos::ArrayRCP<double> &fData,
     }
   }
   for (const auto &load : scene_.bodyForces) {
-    const Eigen::Vector3d b = scene_.density * load.scale(time) * load.acceleration;
-    if (b.isZero()) continue;
+    const Eigen::Vector3d a = load.scale(time) * load.acceleration;
+    if (a.isZero()) continue;
     for (const auto e : load.elements) {
       if (layout_.elementOwner[e] != layout_.rank) continue;
+      const Eigen::Vector3d b = scene_.tissueOf(static_cast<std::size_t>(e)).density * a; // rho a of its tissue
       const auto &hex = mesh.elements[e];
       const loads::HexForces fe = loads::bodyForces(mesh.elementCoordinates(e), b);
       for (int a = 0; a < 8; ++a)
@@ -392,13 +397,14 @@ fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix 
                                            fem::Q1P0Output what) const {
   const auto e = static_cast<std::size_t>(layout_.localElements[i]);
   const int region = scene_.muscles.hasFibres() ? scene_.muscles.elementRegion[e] : -1;
+  const model::Tissue &tissue = scene_.tissueOf(e);
   auto kernel = [&](const fem::QuadraturePointLaw &law) {
     if (scene_.formulation == model::ElementFormulation::PlainQ1)
-      return fem::evaluatePlainQ1(X, ue, law, scene_.volumetric, what);
-    if (base) return fem::evaluateQ1P0Mixed(X, ue, *base, law, scene_.volumetric, lambda, extrapolate, what);
-    return fem::evaluateQ1P0(X, ue, law, scene_.volumetric, lambda, what);
+      return fem::evaluatePlainQ1(X, ue, law, tissue.volumetric, what);
+    if (base) return fem::evaluateQ1P0Mixed(X, ue, *base, law, tissue.volumetric, lambda, extrapolate, what);
+    return fem::evaluateQ1P0(X, ue, law, tissue.volumetric, lambda, what);
   };
-  if (region < 0) return kernel(fem::UniformPointLaw(*scene_.material));
+  if (region < 0) return kernel(fem::UniformPointLaw(*tissue.matrix));
   std::array<const double *, 8> lambdaCOld;
   for (int q = 0; q < 8; ++q) lambdaCOld[q] = history_.committedLambdaC(i, q);
   return kernel(model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],

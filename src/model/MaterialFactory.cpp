@@ -264,10 +264,9 @@ ExternalMuscleGroup readExternalMuscle(const io::Deck &deck, const mesh::HexMesh
   return out;
 }
 
-} // namespace
-
-ParameterList materialParameters() {
-  ParameterList p;
+// The matrix law of a tissue, its volumetric law and density: declared alike for the Material
+// section (the law of every element in no tissue's set) and for each sublist of Material/Tissues.
+void declareMatrixLaw(ParameterList &p) {
   io::declareString(p, "type", "neo-Hookean",
                     "isochoric matrix law: neo-Hookean (eq. 8, 'shear modulus'); Fung "
                     "A (exp(B (I1bar - 3)) - 1) (eq. 9 adipose, eq. 10 muscle matrix); Mooney-Rivlin "
@@ -304,6 +303,70 @@ ParameterList materialParameters() {
   io::declareDouble(p, "density", 1060.0, "kg/m^3",
                     "mass density for body forces (muscle 1060, adipose 920, cartilage 1000, bone 1900)",
                     io::Range::positive());
+}
+
+// One tissue as the deck gives it at `path` (the Material section or a Tissues sublist).
+Tissue buildTissue(const io::Deck &deck, const std::vector<std::string> &path, const ParameterList &t,
+                   const std::string &name) {
+  auto at = [&](const char *parameter) {
+    auto where = path;
+    where.emplace_back(parameter);
+    return deck.where(where);
+  };
+  Tissue tissue;
+  tissue.name = name;
+  const auto type = t.get<std::string>("type");
+  try {
+    if (type == "Fung") {
+      tissue.matrix = std::make_shared<materials::FungIsotropic>(t.get<double>("Fung A"), t.get<double>("Fung B"));
+    } else if (type == "Mooney-Rivlin") {
+      materials::MooneyRivlinParameters c;
+      c.C10 = t.get<double>("C10");
+      c.C01 = t.get<double>("C01");
+      c.C11 = t.get<double>("C11");
+      c.C20 = t.get<double>("C20");
+      c.C02 = t.get<double>("C02");
+      tissue.matrix = std::make_shared<materials::MooneyRivlin>(c);
+    } else if (type == "Yeoh") {
+      tissue.matrix = std::make_shared<materials::Yeoh>(t.get<double>("C10"), t.get<double>("C20"), t.get<double>("C30"));
+    } else {
+      tissue.matrix = std::make_shared<materials::NeoHookean>(t.get<double>("shear modulus"));
+    }
+  } catch (const std::invalid_argument &e) {
+    throw io::DeckError(at("type") + " = " + type + ": " + e.what());
+  }
+  tissue.density = t.get<double>("density");
+  const double mu = tissue.matrix->shearModulus();
+  const double kappaGiven = t.get<double>("bulk modulus");
+  const double nu = t.get<double>("Poisson's ratio");
+  // nu = 0.5 is exact incompressibility: an infinite bulk modulus, which the augmented Lagrangian
+  // enforces as theta = 1 (solvers/AugmentedLagrangianRule).
+  const double kappa = kappaGiven > 0.0 ? kappaGiven
+                       : nu == 0.5      ? std::numeric_limits<double>::infinity()
+                                        : materials::bulkModulus(mu, nu);
+  tissue.volumetric = materials::VolumetricEnergy(
+      materials::VolumetricEnergy::formFromName(t.get<std::string>("volumetric energy")), kappa);
+  return tissue;
+}
+
+ParameterList tissueParameters() {
+  ParameterList t;
+  io::declareString(t, "element set", "", "the elements of this tissue (required; an element is in one tissue at most)");
+  declareMatrixLaw(t);
+  return t;
+}
+
+} // namespace
+
+ParameterList materialParameters() {
+  ParameterList p;
+  declareMatrixLaw(p);
+  ParameterList tissues;
+  tissues.set(io::kAnySublist, tissueParameters(), "one tissue");
+  p.set("Tissues", tissues,
+        "further tissues, one sublist each: an element set with its own matrix law, volumetric law and "
+        "density (bone, cartilage, adipose tissue beside muscle); elements in none have the Material "
+        "section's own law");
   io::declareString(p, "element", "Q1P0",
                     "Q1P0: three-field, pressure and dilatation condensed per element; Q1: plain "
                     "displacement element (locks; for comparison only)",
@@ -343,29 +406,24 @@ ParameterList materialParameters() {
 BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double endTime) {
   const ParameterList &mat = deck.root().sublist("Material");
   BuiltMaterial built;
-  std::shared_ptr<const materials::IsochoricMaterial> matrix;
-  const auto type = mat.get<std::string>("type");
-  try {
-    if (type == "Fung") {
-      matrix = std::make_shared<materials::FungIsotropic>(mat.get<double>("Fung A"), mat.get<double>("Fung B"));
-    } else if (type == "Mooney-Rivlin") {
-      materials::MooneyRivlinParameters c;
-      c.C10 = mat.get<double>("C10");
-      c.C01 = mat.get<double>("C01");
-      c.C11 = mat.get<double>("C11");
-      c.C20 = mat.get<double>("C20");
-      c.C02 = mat.get<double>("C02");
-      matrix = std::make_shared<materials::MooneyRivlin>(c);
-    } else if (type == "Yeoh") {
-      matrix = std::make_shared<materials::Yeoh>(mat.get<double>("C10"), mat.get<double>("C20"), mat.get<double>("C30"));
-    } else {
-      matrix = std::make_shared<materials::NeoHookean>(mat.get<double>("shear modulus"));
+  built.tissues.push_back(buildTissue(deck, {"Material"}, mat, "Material"));
+  built.elementTissue.assign(m.numElements(), 0);
+  const ParameterList &tissues = mat.sublist("Tissues");
+  for (auto it = tissues.begin(); it != tissues.end(); ++it) {
+    const std::string &name = tissues.name(it);
+    const std::vector<std::string> path{"Material", "Tissues", name};
+    const int index = static_cast<int>(built.tissues.size());
+    built.tissues.push_back(buildTissue(deck, path, tissues.sublist(name), name));
+    if (tissues.sublist(name).get<std::string>("element set").empty())
+      throw io::DeckError(deck.where({"Material", "Tissues", name, "element set"}) + " is empty: name the tissue's elements");
+    for (const auto e : elementSetOrAll(deck, m, {"Material", "Tissues", name, "element set"})) {
+      int &owner = built.elementTissue[static_cast<std::size_t>(e)];
+      if (owner != 0)
+        throw io::DeckError(deck.where({"Material", "Tissues", name, "element set"}) + ": element " + std::to_string(e) +
+                            " is already in tissue '" + built.tissues[owner].name + "'; an element has one tissue");
+      owner = index;
     }
-  } catch (const std::invalid_argument &e) {
-    throw io::DeckError(deck.where({"Material", "type"}) + " = " + type + ": " + e.what());
   }
-  built.isochoric = matrix;
-  built.density = mat.get<double>("density");
 
   MuscleArchitecture &muscles = built.muscles;
   const ParameterList &groups = mat.sublist("Muscle groups");
@@ -404,7 +462,8 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
       }
     const double total = law.get<double>("total fibre fraction");
     auto hill = [&](int group) { return hillFibre(mat, muscles, group); };
-    std::map<std::vector<int>, int> regionOf;
+    // A region: the families present and the tissue whose matrix they reinforce.
+    std::map<std::pair<int, std::vector<int>>, int> regionOf;
     muscles.elementRegion.assign(m.numElements(), -1);
     muscles.directions.resize(m.numElements());
     if (perPoint) muscles.pointDirections.resize(m.numElements());
@@ -419,7 +478,8 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
                             std::to_string(present[e].size()) + " fibre families (" + names + "); at most " +
                             std::to_string(materials::kMaxFibreFamilies) + " per element");
       }
-      auto [it, inserted] = regionOf.emplace(present[e], static_cast<int>(muscles.regions.size()));
+      const int tissue = built.elementTissue[e];
+      auto [it, inserted] = regionOf.emplace(std::pair{tissue, present[e]}, static_cast<int>(muscles.regions.size()));
       if (inserted) {
         FibreRegion region;
         std::vector<materials::MuscleMaterial::Family> laws;
@@ -429,7 +489,7 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
           region.familyGroup.push_back(families[f].group);
           region.familyNames.push_back(families[f].name);
         }
-        region.law = std::make_shared<materials::MuscleMaterial>(matrix, std::move(laws), form);
+        region.law = std::make_shared<materials::MuscleMaterial>(built.tissues[tissue].matrix, std::move(laws), form);
         muscles.regions.push_back(std::move(region));
       }
       muscles.elementRegion[e] = it->second;
@@ -445,16 +505,6 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
     }
   }
 
-  const double mu = matrix->shearModulus();
-  const double kappaGiven = mat.get<double>("bulk modulus");
-  const double nu = mat.get<double>("Poisson's ratio");
-  // nu = 0.5 is exact incompressibility: an infinite bulk modulus, which the augmented Lagrangian
-  // enforces as theta = 1 (solvers/AugmentedLagrangianRule).
-  const double kappa = kappaGiven > 0.0 ? kappaGiven
-                       : nu == 0.5      ? std::numeric_limits<double>::infinity()
-                                        : materials::bulkModulus(mu, nu);
-  built.volumetric = materials::VolumetricEnergy(
-      materials::VolumetricEnergy::formFromName(mat.get<std::string>("volumetric energy")), kappa);
   built.plainQ1 = mat.get<std::string>("element") == "Q1";
   return built;
 }

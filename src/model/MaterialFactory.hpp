@@ -1,8 +1,8 @@
 #pragma once
-// The deck's "Material" section: declares its parameters and builds the isochoric matrix law
-// (neo-Hookean or Fung), the fibre families with their direction fields and the muscle groups
-// driving them (MuscleArchitecture), the volumetric energy, the density and the element
-// formulation.
+// The deck's "Material" section: declares its parameters and builds the tissues (each an isochoric
+// matrix law, neo-Hookean, Fung, Mooney-Rivlin or Yeoh, with its volumetric law and density, on
+// its element set), the fibre families with their direction fields and the muscle groups
+// driving them (MuscleArchitecture) and the element formulation.
 
 #include <memory>
 
@@ -13,16 +13,21 @@
 #include "materials/VolumetricEnergy.hpp"
 #include "mesh/HexMesh.hpp"
 #include "model/MuscleArchitecture.hpp"
+#include "model/Tissue.hpp"
 
 namespace glossa::model {
 
 Teuchos::ParameterList materialParameters();
 
 struct BuiltMaterial {
-  // The matrix law: the whole material of elements without fibres; its shear modulus scales the
-  // augmented-Lagrangian penalty.
-  std::shared_ptr<const materials::IsochoricMaterial> isochoric;
-  materials::VolumetricEnergy volumetric{materials::VolumetricEnergy::Form::SimoTaylor, 0.0};
+  // tissues[0]: the Material section's own law, that of every element in no Tissues set; then
+  // one per Material/Tissues sublist, in deck order.
+  std::vector<Tissue> tissues;
+  std::vector<int> elementTissue; // per mesh element: its index in `tissues`
+  MuscleArchitecture muscles;
+  bool plainQ1 = false;
+  bool symmetricTangent = true; // false for the eq. 5 fibre stress form
+};
   MuscleArchitecture muscles;
   double density = 1060.0;
   bool plainQ1 = false;

@@ -13,6 +13,7 @@
 #include "mesh/HexMesh.hpp"
 #include "loads/PressureField.hpp"
 #include "model/MuscleArchitecture.hpp"
+#include "model/Tissue.hpp"
 #include "model/TimeFunction.hpp"
 
 namespace glossa::model {
@@ -64,12 +65,12 @@ enum class Partitioner { coordinateBisection, zoltan2MultiJagged, zoltan2Rcb };
 struct Scene {
   mesh::HexMesh mesh;
   Partitioner partitioner = Partitioner::coordinateBisection;
-  // The matrix law: the whole material where no fibres are; its shear modulus scales the
-  // penalty. Fibres and muscle groups (with the matrix in their point laws) are in `muscles`.
-  std::shared_ptr<const materials::IsochoricMaterial> material;
+  // The tissues (at least one: the Material section's) and each element's. A tissue's matrix
+  // is the whole material where no fibres are; its shear modulus scales its elements' penalty.
+  // Fibres and muscle groups (with their element's matrix in their point laws) are in `muscles`.
+  std::vector<Tissue> tissues;
+  std::vector<int> elementTissue; // per mesh element; empty: every element is tissues[0]
   MuscleArchitecture muscles;
-  double density = 1060.0; // [kg/m^3]
-  materials::VolumetricEnergy volumetric{materials::VolumetricEnergy::Form::SimoTaylor, 0.0};
   ElementFormulation formulation = ElementFormulation::Q1P0;
   bool symmetricTangent = true; // CG applies; false selects GMRES when the deck says auto
   std::vector<DirichletCondition> dirichlet;
@@ -79,6 +80,10 @@ struct Scene {
   std::vector<std::string> tracedPoints; // names in mesh.namedPoints, in deck order
   // What the mesh reader changed on the way in (ImportedMesh::notes), for the run to print.
   std::vector<std::string> meshNotes;
+
+  const Tissue &tissueOf(std::size_t element) const {
+    return tissues[elementTissue.empty() ? 0 : static_cast<std::size_t>(elementTissue[element])];
+  }
 };
 
 } // namespace glossa::model

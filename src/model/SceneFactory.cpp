@@ -304,10 +304,9 @@ Scene buildScene(const io::Deck &deck, double endTime) {
   mesh::HexMesh &m = scene.mesh;
 
   BuiltMaterial material = buildMaterial(deck, m, endTime);
-  scene.material = material.isochoric;
+  scene.tissues = std::move(material.tissues);
+  scene.elementTissue = std::move(material.elementTissue);
   scene.muscles = std::move(material.muscles);
-  scene.density = material.density;
-  scene.volumetric = material.volumetric;
   scene.formulation = material.plainQ1 ? ElementFormulation::PlainQ1 : ElementFormulation::Q1P0;
   {
     const ParameterList &m = deck.root().sublist("Mesh");

@@ -302,3 +302,43 @@ TEST(ControlDriver, GeneticAlgorithmSeedsAGaussNewtonStep) {
   ControlDriver without(s, plain, one);
   EXPECT_GT(without.step(0, kStretched).objective, 1e-6);
 }
+
+// Gauss-Newton step seeds at several step lengths: generation 0 holds u + t du for t = 1, 1/2,
+// 1/4 (a line search along the linearised step), solved right after the prediction's own solve.
+TEST(ControlDriver, GeneticAlgorithmSeedsTheGaussNewtonStepAtShorterLengths) {
+  const std::vector<double> uStar{0.3, 0.6, 0.45, 0.15};
+  auto s = setup(glossa::control::ControllerType::geneticAlgorithm, uStar);
+  s.parameters.ga.geneType = glossa::control::GeneType::continuous;
+  s.parameters.ga.generations = 1;
+  s.parameters.ga.populationSize = 8;
+  s.parameters.gradient.damping = 0.0;
+  s.parameters.predictionSeed = glossa::control::PredictionSeed::gaussNewtonStep;
+  s.parameters.predictionSeedSteps = 3;
+  SingleControlGroup one;
+  LinearPlant plant(plantMatrix());
+  ControlDriver driver(s, plant, one);
+  const ControlStepResult r = driver.step(0, kStretched);
+  ASSERT_TRUE(r.found());
+  // From u = 0 the linearised step is u* itself (the plant is linear).
+  ASSERT_GE(plant.solved.size(), 4u);
+  EXPECT_EQ(plant.solved[0], std::vector<double>(kGroups, 0.0));
+  double t = 1.0;
+  for (std::size_t k = 1; k <= 3; ++k, t *= 0.5)
+    for (int m = 0; m < kGroups; ++m) EXPECT_NEAR(plant.solved[k][m], t * uStar[m], 1e-9) << k << ' ' << m;
+  for (int m = 0; m < kGroups; ++m) EXPECT_NEAR(r.inputs[m], uStar[m], 1e-9) << m;
+
+  EXPECT_TRUE(plant.startsFromLast.empty()); // not asked for
+
+  // Asked for: the plant is told once per step, right after the prediction's own solve.
+  s.parameters.candidatesFromPreviousBest = true;
+  LinearPlant warm(plantMatrix());
+  ControlDriver warmDriver(s, warm, one);
+  warmDriver.step(0, kStretched);
+  EXPECT_EQ(warm.startsFromLast, (std::vector<int>{1}));
+  const int before = warm.solves;
+  warmDriver.step(1, kStretched);
+  EXPECT_EQ(warm.startsFromLast, (std::vector<int>{1, before + 1}));
+
+  s.parameters.predictionSeedSteps = 0;
+  EXPECT_THROW(s.parameters.validate(), std::invalid_argument);
+}
