@@ -38,11 +38,6 @@ struct ControllerParameters {
   // nonlinear (the hyoid muscles supine) the full step overshoots and loses to the previous best,
   // and a short GA ends on it; a shorter step along the same direction still improves. [1, 16]
   int predictionSeedSteps = 1;
-  // gaussNewtonStep: every later candidate of the step starts its solve from the converged state
-  // of the previous best inputs (the prediction's own solve, made alike by every control group,
-  // so 1 and N groups still agree) rather than from the step's start. Most candidates lie near
-  // the previous best, so their Newton and Uzawa loops start near their answers.
-  bool candidatesFromPreviousBest = false;
   // epsilon [m]: the price of activation, so that among inputs that hold the points equally well
   // the one with the least activation wins (redundant muscles make eq. 25's minimiser a valley).
   // The GA ranks by eq. 25 + epsilon sum_M u_M^2; the gradient controller minimises

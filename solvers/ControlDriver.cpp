@@ -23,6 +23,11 @@ struct ControlDriver::Search {
   double rank = std::numeric_limits<double>::infinity();
   long index = -1; // the winner's position in the order of evaluation (ties among control groups)
   std::size_t predictionSolves = 0; // full solves made for the GA's seeds, outside the GA
+  // The Gauss-Newton seed's own solve, at the previous best inputs, made by every control group:
+  // generation 0 holds those inputs again, and takes their value from here instead of a solve.
+  std::vector<double> solvedInputs;
+  double solvedValue = std::numeric_limits<double>::infinity(); // eq. 25 + effort; inf: failed
+  std::size_t reused = 0; // genomes valued from solvedInputs (counted alike in every group)
 };
 
 ControlDriver::ControlDriver(ControlDriverSetup setup, ControlPlant &plant, const ControlGroups &groups)
@@ -131,12 +136,15 @@ void ControlDriver::searchGenetic(Search &search, int committedSteps, const std:
     // Candidate i of the batch is solved by control group i mod G; every rank then sees every
     // objective, each taken from the group that solved it.
     std::vector<double> values(genomes.size(), 0.0);
-    for (std::size_t i = 0; i < genomes.size(); ++i)
-      if (i % groupCount == mine) {
-        const auto inputs = control::inputsFromGenome(evaluated, genomes[i], setup_.groupNames.size());
-        values[i] = solveCandidate(search, inputs, true, evaluatedSoFar + static_cast<long>(i)).objective +
-                    effort(inputs); // +inf stays +inf for a failed solve
-      }
+    for (std::size_t i = 0; i < genomes.size(); ++i) {
+      const auto inputs = control::inputsFromGenome(evaluated, genomes[i], setup_.groupNames.size());
+      const bool known = !search.solvedInputs.empty() && inputs == search.solvedInputs;
+      if (known) ++search.reused;
+      if (i % groupCount != mine) continue;
+      values[i] = known ? search.solvedValue
+                        : solveCandidate(search, inputs, true, evaluatedSoFar + static_cast<long>(i)).objective +
+                              effort(inputs); // +inf stays +inf for a failed solve
+    }
     evaluatedSoFar += static_cast<long>(genomes.size());
     return groupCount == 1 ? values : groups_.sumOfGroupRoots(values);
   };
@@ -145,7 +153,7 @@ void ControlDriver::searchGenetic(Search &search, int committedSteps, const std:
   const control::ElitistGeneticAlgorithm ga(gaParameters);
   const auto gaResult = ga.minimise(evaluated.size(), evaluate, geneticSeeds(search, previousInputs));
   // The GA runs on every rank alike: its counts are the same in every group.
-  search.result.candidates = gaResult.evaluations + search.predictionSolves;
+  search.result.candidates = gaResult.evaluations - search.reused + search.predictionSolves;
   search.result.generations = gaResult.generations;
   search.result.stop = control::toString(gaResult.stopReason);
   if (groupCount > 1) shareWinner(search);
@@ -185,8 +193,9 @@ std::vector<std::vector<double>> ControlDriver::gaussNewtonPrediction(Search &se
   // solves it alike, so it is also the group-0 winner among equals.
   const control::ControlEvaluation e = solveCandidate(search, from, true, -1);
   ++search.predictionSolves;
+  search.solvedInputs = from;
+  search.solvedValue = e.objective + effort(from); // +inf for a failed solve
   if (!e.ok || search.result.inputs != from) return {from}; // no state to linearise about
-  if (setup_.parameters.candidatesFromPreviousBest) plant_.startFromLast();
   const std::vector<int> &evaluated = search.result.evaluated;
   const auto n = static_cast<Eigen::Index>(evaluated.size());
   const double epsilon = setup_.parameters.effortWeight;

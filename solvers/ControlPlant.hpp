@@ -38,11 +38,7 @@ public:
   virtual CandidateSolve solve(const std::vector<double> &inputs) = 0;
   // Keeps the last solve's state, replacing what was kept.
   virtual void keepLast() = 0;
-  // The rest of this step's solves start from the last solve's converged state (displacements
-  // and multipliers) instead of the step's start: candidates near it need fewer Newton and Uzawa
-  // iterations. Only the starting point changes, never what a solve converges to; a plant that
-  // solves exactly (a fake) may ignore it.
-  virtual void startFromLast() {}
+
   // At the kept state, which was solved with `inputs`, for the groups `groups` (scene indices).
   virtual InputSensitivity sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) = 0;
   // The kept state as numbers, and back: a control group adopts the winning group's state.

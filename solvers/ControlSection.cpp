@@ -62,12 +62,6 @@ ParameterList controlParameters() {
                  "Gauss-Newton step seed: k seeds at step lengths 1, 1/2, ..., 2^(1-k) of the linearised step "
                  "(a line search in generation 0, for a response the linearisation overshoots)",
                  io::Range::closed(1, 16));
-  io::declareString(p, "candidate start", "step start",
-                    "where a candidate's step solve starts: step start, the committed state (extrapolated); "
-                    "previous best, with the Gauss-Newton step seed: the converged state of the previous "
-                    "step's inputs, solved first by every control group (fewer Newton and Uzawa iterations "
-                    "for candidates near it; each solve still converges to the same tolerances)",
-                    {"step start", "previous best"});
   io::declareDouble(p, "effort weight", 0.0, "m",
                     "the price of activation: the GA ranks candidates by eq. 25 + w sum u^2, the gradient "
                     "controller minimises sum |r_p|^2 + w^2 sum u^2; among inputs that hold the points "
@@ -138,10 +132,6 @@ ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
                      : prediction == "Gauss-Newton step"  ? control::PredictionSeed::gaussNewtonStep
                                                           : control::PredictionSeed::none;
   p.predictionSeedSteps = c.get<int>("prediction seed steps");
-  p.candidatesFromPreviousBest = c.get<std::string>("candidate start") == "previous best";
-  if (p.candidatesFromPreviousBest && p.predictionSeed != control::PredictionSeed::gaussNewtonStep)
-    throw io::DeckError(where("candidate start") +
-                        " = previous best needs 'prediction seed' = Gauss-Newton step (its solve is the start)");
   p.effortWeight = c.get<double>("effort weight");
   p.gradient.maxIterations = c.get<int>("gradient iterations");
   p.gradient.maxBacktracks = c.get<int>("gradient backtracks");

@@ -34,6 +34,16 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// 42 s, 3 min 05 s, 2 h 07 min: a duration as a person reads it.
+std::string readableDuration(double seconds) {
+  char text[64];
+  const long s = std::lround(std::max(seconds, 0.0));
+  if (s < 60) std::snprintf(text, sizeof text, "%ld s", s);
+  else if (s < 3600) std::snprintf(text, sizeof text, "%ld min %02ld s", s / 60, s % 60);
+  else std::snprintf(text, sizeof text, "%ld h %02ld min", s / 3600, (s % 3600) / 60);
+  return text;
+}
+
 Teuchos::ParameterList outputParameters() {
   Teuchos::ParameterList p;
   io::declareString(p, "directory", "results", "where results go (glossa run --output overrides)");
@@ -161,8 +171,6 @@ public:
   }
 
   void keepLast() override { kept_.assign(last_); }
-  // stepStart_ is set anew by every attemptStep, so this lasts for the step.
-  void startFromLast() override { sim_.stepStart_->assign(last_); }
 
   InputSensitivity sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) override {
     const Trial &trial = *sim_.trial_;
@@ -210,7 +218,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                        const RunOptions &options)
     : start_(Clock::now()), setupAtStart_(timerSeconds("NOX Total Preconditioner Construction")),
       solveAtStart_(timerSeconds("NOX Total Linear Solve")), deckFile_(deck.file()), comm_(comm), options_(options),
-      root_(comm->getRank() == 0), talk_(root_ && !options.quiet) {
+      root_(comm->getRank() == 0), talk_(root_ && !options.quiet), detail_(talk_ && options.verbose) {
   const auto &D = deck.root();
   steps_ = std::make_unique<StepSizeController>(D.sublist("Time"));
   scene_ = std::make_unique<model::Scene>(model::buildScene(deck, steps_->endTime()));
@@ -317,6 +325,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
     initialInputs.push_back(assembler_->muscleHistory().input(static_cast<int>(g), 0.0));
   recorder_->record(0.0, committed_->u, committed_->lambda, true, initialMuscle, initialInputs);
   writeSummary();
+  stepsStart_ = Clock::now();
   installStopSignalHandlers();
   if (root_) onStopSignal([this](int signal) { writeInterruptedSummary(signal); });
 
@@ -342,7 +351,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
     setup.referencePositions.col(static_cast<Eigen::Index>(p)) = scene.mesh.nodes[control_->pointNodes[p]];
   setup.goals = control_->goals;
   setup.weights = control_->weights;
-  setup.talk = talk_;
+  setup.talk = detail_;
   plant_ = std::make_unique<CandidatePlant>(*this);
   driver_ = std::make_unique<ControlDriver>(std::move(setup), *plant_, *groups_);
 }
@@ -398,7 +407,7 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
   if (!(reference > 0.0)) reference = 1.0;
   const double tolerance = newton_->relativeResidualTolerance() * reference;
 
-  const bool progress = talk_ && !quiet;
+  const bool progress = detail_ && !quiet;
   auto onNewton = [&](int k, double normF, int krylov) {
     if (progress) std::printf("    newton %2d  |f| = %.3e  krylov %d\n", k, normF, krylov);
   };
@@ -450,7 +459,7 @@ bool Simulation::attemptStep() {
       stepStart_->lambda[e] += ratio * (committed_->lambda[e] - previous_->lambda[e]);
   }
   trial_ = std::make_unique<Trial>(t_ + dt, dt, model_->assemblySeconds(), *stepStart_);
-  if (talk_) std::printf("step %d  t = %.6g  dt = %.3g\n", stepNumber_ + 1, trial_->time, dt);
+  if (detail_) std::printf("step %d  t = %.6g  dt = %.3g\n", stepNumber_ + 1, trial_->time, dt);
   if (driver_) controlledStep(*trial_);
   else trial_->attempt = solveStep(trial_->time, dt, trial_->state, false);
   return trial_->attempt.ok;
@@ -491,9 +500,17 @@ void Simulation::commitTrial() {
   committedStretch_ = trial.attempt.muscle.groupMeanStretch;
   assembler_->muscleHistory().commit();
   const UzawaResult &r = trial.attempt.uzawa;
-  if (talk_)
-    std::printf("step %d done  t = %.6g  newton %d  krylov %d  uzawa %d  dilatation error %.2e  [%.2f s]\n", stepNumber_,
-                t_, r.newtonIterations, r.linearIterations, r.solves, r.dilatation.max, since(start_));
+  if (talk_) {
+    // step k/N with N from the step size now (the controller may still cut back or grow it), and
+    // the time left from the wall time per simulated second so far.
+    const double end = steps_->endTime(), elapsed = since(stepsStart_);
+    const long left = t_ < end ? std::lround(std::ceil((end - t_) / trial.dt - 1e-9)) : 0;
+    const double remaining = t_ > 0.0 ? elapsed * (end - t_) / t_ : 0.0;
+    std::printf("step %d/%ld  t = %.6g of %.6g s  newton %d  krylov %d  uzawa %d  dilatation error %.1e%s  "
+                "[%s elapsed, about %s left]\n",
+                stepNumber_, stepNumber_ + left, t_, end, r.newtonIterations, r.linearIterations, r.solves,
+                r.dilatation.max, controlLine_.c_str(), readableDuration(elapsed).c_str(), readableDuration(remaining).c_str());
+  }
   writeSummary();
   output.unlock();
 }
@@ -562,9 +579,11 @@ nlohmann::json Simulation::controlJson(const Trial &trial) {
   c["inputs"] = inputs;
   c["point_errors"] = errors;
   if (controls_) controls_->append(t_, rows);
-  if (talk_)
-    std::printf("  control: objective %.3e  candidates %zu  %s %d (%s)\n", outcome.objective, outcome.candidates,
-                ga ? "generations" : "iterations", ga ? outcome.generations : outcome.iterations, outcome.stop.c_str());
+  char line[160];
+  std::snprintf(line, sizeof line, "  control: eq. 25 %.3g m, %zu candidates, %s %d (%s)", outcome.objective,
+                outcome.candidates, ga ? "generations" : "iterations", ga ? outcome.generations : outcome.iterations,
+                outcome.stop.c_str());
+  controlLine_ = line;
   return c;
 }
 

@@ -48,7 +48,8 @@ void declareSolverParameters(Teuchos::ParameterList &schema);
 
 struct RunOptions {
   std::filesystem::path outputDirectory; // empty: the deck's Output/directory
-  bool quiet = false;
+  bool quiet = false;   // nothing but failures on the console
+  bool verbose = false; // every Newton and Uzawa iteration and the controller's detail, not only a line per step
   // The ranks split into this many groups, each solving GA candidates on its own
   // sub-communicator (issue 5); must divide the rank count. 1: every rank solves every candidate.
   int controlGroups = 1;
@@ -110,6 +111,9 @@ private:
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   RunOptions options_;
   bool root_, talk_;
+  bool detail_ = false; // talk_ and --verbose: the per-iteration lines
+  std::chrono::steady_clock::time_point stepsStart_; // after set-up: the time per simulated second
+  std::string controlLine_; // the last control step's summary, for its step's line
 
   std::unique_ptr<StepSizeController> steps_;
   std::unique_ptr<model::Scene> scene_;

@@ -30,10 +30,12 @@ namespace {
 const char *kUsage = R"(glossa - finite elements for nearly incompressible, fibre-reinforced, active soft tissue
 
 usage:
-  glossa run DECK.xml [--output DIR] [--set path/to/parameter=value ...] [--quiet] [--timers]
-             [--control-groups G]
+  glossa run DECK.xml [--output DIR] [--set path/to/parameter=value ...] [--quiet | --verbose]
+             [--timers] [--control-groups G]
       run a deck; results (results.xdmf/.h5, traces.csv, summary.json) go to DIR
       (default: the deck's Output/directory). Under mpiexec -np N it runs on N ranks.
+      It prints a line per step (step k/N, time, iterations, elapsed and estimated time left);
+      --verbose adds every Newton and Uzawa iteration, --quiet prints only failures.
       --timers prints Trilinos' timers (MueLu set-up, Belos solve) at the end.
       --control-groups G splits the N ranks into G groups that solve the genetic
       algorithm's candidates concurrently, N/G ranks each (G must divide N).
@@ -73,7 +75,7 @@ written; 5 an internal error. Errors go to stderr, with --quiet too.
 struct Arguments {
   std::string command, deck, output;
   std::vector<std::string> overrides;
-  bool quiet = false, markdown = false, timers = false, json = false;
+  bool quiet = false, verbose = false, markdown = false, timers = false, json = false;
   std::string format = "auto";
   std::vector<std::string> zeroStrain; // --method, --tolerance, --max-iterations as deck overrides
   int refine = 0;
@@ -94,6 +96,7 @@ Arguments parse(int argc, char **argv) {
     if (s == "--output") a.output = value("--output");
     else if (s == "--set") a.overrides.push_back(value("--set"));
     else if (s == "--quiet") a.quiet = true;
+    else if (s == "--verbose") a.verbose = true;
     else if (s == "--timers") a.timers = true;
     else if (s == "--markdown") a.markdown = true;
     else if (s == "--json") a.json = true;
@@ -235,7 +238,7 @@ int main(int argc, char **argv) {
     if (a.command == "run") {
       const auto deck = loadDeck(a, schema);
       stage = Stage::Running;
-      const auto summary = glossa::solvers::runSimulation(deck, comm, {a.output, a.quiet, a.controlGroups});
+      const auto summary = glossa::solvers::runSimulation(deck, comm, {a.output, a.quiet, a.verbose, a.controlGroups});
       if (a.timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
       if (summary.contains("interrupted")) return kInterrupted;
       return summary.value("converged", false) ? 0 : kNotConverged;

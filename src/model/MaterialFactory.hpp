@@ -5,6 +5,7 @@
 // driving them (MuscleArchitecture) and the element formulation.
 
 #include <memory>
+#include <vector>
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -25,11 +26,6 @@ struct BuiltMaterial {
   std::vector<Tissue> tissues;
   std::vector<int> elementTissue; // per mesh element: its index in `tissues`
   MuscleArchitecture muscles;
-  bool plainQ1 = false;
-  bool symmetricTangent = true; // false for the eq. 5 fibre stress form
-};
-  MuscleArchitecture muscles;
-  double density = 1060.0;
   bool plainQ1 = false;
   bool symmetricTangent = true; // false for the eq. 5 fibre stress form
 };

@@ -91,6 +91,14 @@ ParameterList meshParameters() {
                     io::Range::closed(-1, 1));
   io::declareDoubleArray(face, "box min", Array<double>(3, -1e300), "m", "lower corner of the selection box", 3);
   io::declareDoubleArray(face, "box max", Array<double>(3, 1e300), "m", "upper corner of the selection box", 3);
+  ParameterList &elementSets = p.sublist("Element sets", false,
+                                         "derived element sets: the elements of an existing set (or of the "
+                                         "whole mesh) whose centroid lies in a box, e.g. the tissues of a "
+                                         "generated mesh");
+  ParameterList &elementSet = elementSets.sublist(io::kAnySublist);
+  io::declareString(elementSet, "from", "", "existing element set to select from; empty: every element");
+  io::declareDoubleArray(elementSet, "box min", Array<double>(3, -1e300), "m", "lower corner of the selection box", 3);
+  io::declareDoubleArray(elementSet, "box max", Array<double>(3, 1e300), "m", "upper corner of the selection box", 3);
   io::declareString(p, "reference coordinates file", "",
                     "nodal coordinates that replace the mesh's as the reference (zero-strain) configuration, "
                     "e.g. written by glossa zero-strain: lines 'node x y z', node the 0-based index in this mesh, "
@@ -240,6 +248,28 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
       throw io::DeckError(deck.where({"Mesh", "Face sets", name}) + ": the box and normal select no face of " +
                           (from.empty() ? std::string("the boundary") : "'" + from + "'"));
     m.faceSets[name] = std::move(selected);
+  }
+  const ParameterList &elementSets = p.sublist("Element sets");
+  for (auto it = elementSets.begin(); it != elementSets.end(); ++it) {
+    const std::string &name = elementSets.name(it);
+    const ParameterList &set = elementSets.sublist(name);
+    const std::string from = set.get<std::string>("from");
+    if (!from.empty() && !m.elementSets.count(from))
+      throw io::DeckError(deck.where({"Mesh", "Element sets", name, "from"}) + ": no element set '" + from + "'");
+    const Eigen::Vector3d lo = vec3(set.get<Array<double>>("box min")), hi = vec3(set.get<Array<double>>("box max"));
+    std::vector<mesh::ElementId> selected;
+    auto consider = [&](mesh::ElementId e) {
+      const Eigen::Vector3d c = m.elementCoordinates(e).colwise().mean().transpose();
+      if ((c.array() >= lo.array()).all() && (c.array() <= hi.array()).all()) selected.push_back(e);
+    };
+    if (from.empty())
+      for (std::size_t e = 0; e < m.numElements(); ++e) consider(static_cast<mesh::ElementId>(e));
+    else
+      for (const auto e : m.elementSets.at(from)) consider(e);
+    if (selected.empty())
+      throw io::DeckError(deck.where({"Mesh", "Element sets", name}) + ": the box selects no element of " +
+                          (from.empty() ? std::string("the mesh") : "'" + from + "'"));
+    m.elementSets[name] = std::move(selected);
   }
   return m;
 }

@@ -38,7 +38,7 @@ Distances gravityOn(const std::filesystem::path &coordinates, const std::filesys
   deck.applyOverride("Mesh/reference coordinates file=" + coordinates.string(), schema);
   deck.validate(schema);
   std::vector<double> u;
-  const auto summary = solvers::runSimulation(deck, Tpetra::getDefaultComm(), {output, true, 1, &u});
+  const auto summary = solvers::runSimulation(deck, Tpetra::getDefaultComm(), {output, true, false, 1, &u});
   EXPECT_TRUE(summary.value("converged", false));
   const auto imaged = mesh::readMeshFile(inputPath("tongue/tongue.node")).mesh.nodes;
   EXPECT_EQ(u.size(), 3 * imaged.size());

@@ -23,7 +23,6 @@ public:
   // The sensitivity reported is this times the true one (1: exact).
   double sensitivityScale = 1.0;
   int solves = 0;
-  std::vector<int> startsFromLast; // the solve count at each startFromLast call
   std::vector<std::vector<double>> solved; // the inputs of every solve, in order
 
   Eigen::Matrix3Xd displacement(const std::vector<double> &inputs) const {
@@ -52,7 +51,6 @@ public:
   }
 
   void keepLast() override { kept_ = last_; }
-  void startFromLast() override { startsFromLast.push_back(solves); }
 
   solvers::InputSensitivity sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) override {
     if (inputs != kept_) throw std::logic_error("LinearPlant: sensitivity away from the kept state");

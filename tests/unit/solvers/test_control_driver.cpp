@@ -327,18 +327,29 @@ TEST(ControlDriver, GeneticAlgorithmSeedsTheGaussNewtonStepAtShorterLengths) {
     for (int m = 0; m < kGroups; ++m) EXPECT_NEAR(plant.solved[k][m], t * uStar[m], 1e-9) << k << ' ' << m;
   for (int m = 0; m < kGroups; ++m) EXPECT_NEAR(r.inputs[m], uStar[m], 1e-9) << m;
 
-  EXPECT_TRUE(plant.startsFromLast.empty()); // not asked for
-
-  // Asked for: the plant is told once per step, right after the prediction's own solve.
-  s.parameters.candidatesFromPreviousBest = true;
-  LinearPlant warm(plantMatrix());
-  ControlDriver warmDriver(s, warm, one);
-  warmDriver.step(0, kStretched);
-  EXPECT_EQ(warm.startsFromLast, (std::vector<int>{1}));
-  const int before = warm.solves;
-  warmDriver.step(1, kStretched);
-  EXPECT_EQ(warm.startsFromLast, (std::vector<int>{1, before + 1}));
-
   s.parameters.predictionSeedSteps = 0;
   EXPECT_THROW(s.parameters.validate(), std::invalid_argument);
+}
+
+// The previous best is solved once per step: the Gauss-Newton seed linearises about it, and
+// generation 0, which holds it again, takes its value from that solve. The count of candidates
+// is that of the solves.
+TEST(ControlDriver, ThePreviousBestIsSolvedOncePerStep) {
+  auto s = setup(glossa::control::ControllerType::geneticAlgorithm, {0.3, 0.6, 0.45, 0.15});
+  s.parameters.ga.geneType = glossa::control::GeneType::continuous;
+  s.parameters.ga.generations = 2;
+  s.parameters.ga.populationSize = 8;
+  s.parameters.predictionSeed = glossa::control::PredictionSeed::gaussNewtonStep;
+  SingleControlGroup one;
+  LinearPlant plant(plantMatrix());
+  ControlDriver driver(s, plant, one);
+  const auto first = driver.step(0, kStretched);
+  const int before = plant.solves;
+  const auto second = driver.step(1, kStretched);
+  ASSERT_TRUE(second.found());
+  const std::vector<std::vector<double>> solved(plant.solved.begin() + before, plant.solved.end());
+  EXPECT_EQ(solved.front(), first.inputs); // the seed's own solve
+  EXPECT_EQ(std::count(solved.begin(), solved.end(), first.inputs), 1);
+  EXPECT_EQ(second.candidates, static_cast<std::size_t>(plant.solves - before));
+  EXPECT_LE(second.objective, first.objective + 1e-15); // the previous best still competes
 }
