@@ -1,5 +1,7 @@
 #include "solvers/ControlSection.hpp"
 
+#include "io/deck/NameList.hpp"
+
 #include <algorithm>
 #include <sstream>
 
@@ -12,15 +14,7 @@ using Teuchos::Array;
 using Teuchos::ParameterList;
 
 namespace {
-std::vector<std::string> splitList(const std::string &s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');) {
-    const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
-    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
-  }
-  return out;
-}
+std::vector<std::string> splitList(const std::string &s) { return io::splitNameList(s); }
 } // namespace
 
 ParameterList controlParameters() {
@@ -97,6 +91,9 @@ ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
     const auto it = scene.mesh.namedPoints.find(name);
     if (it == scene.mesh.namedPoints.end())
       throw io::DeckError(where("control points") + ": no named point '" + name + "' (declare it in Named points)");
+    if (it->second.probe())
+      throw io::DeckError(where("control points") + ": '" + name + "' is a probe inside an element; a control "
+                          "point must be a mesh node");
     s.pointNames.push_back(name);
     s.pointNodes.push_back(it->second.node);
   }

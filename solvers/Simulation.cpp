@@ -11,6 +11,7 @@
 #include "assembly/ModelEvaluator.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
+#include "io/deck/NameList.hpp"
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "io/output/SummaryWriter.hpp"
@@ -50,6 +51,14 @@ Teuchos::ParameterList outputParameters() {
   io::declareInt(p, "every", 1, "write fields every this many converged steps (the last always)",
                  io::Range::atLeast(1));
   io::declareBool(p, "fields", true, "write HDF5/XDMF fields (traces and summary are always written)");
+  io::declareString(p, "resultant face sets", "",
+                    "face sets whose resultant force goes to resultants.csv every step: the sum over the set's "
+                    "nodes of internal less body forces, i.e. a support's reaction or a load's resultant "
+                    "(comma separated)");
+  io::declareString(p, "volume face sets", "",
+                    "face sets whose enclosed volume goes to volumes.csv every step: 1/3 of the integral of "
+                    "x . n over the deformed faces (n the body's outward normal), the body's volume for its "
+                    "whole boundary, minus a cavity's for the cavity's wall (comma separated)");
   return p;
 }
 
@@ -85,8 +94,8 @@ void markInterrupted(nlohmann::json &summary, int signal) {
 // activation.csv must not stand beside a later passive run's traces). Rank 0 only.
 void prepareOutputDirectory(const std::filesystem::path &dir) {
   std::filesystem::create_directories(dir);
-  for (const char *file : {"results.xdmf", "results.h5", "traces.csv", "reactions.csv", "activation.csv",
-                           "controls.csv", "summary.json"})
+  for (const char *file : {"results.xdmf", "results.h5", "traces.csv", "reactions.csv", "resultants.csv",
+                           "volumes.csv", "activation.csv", "controls.csv", "summary.json"})
     std::filesystem::remove(dir / file);
 }
 
@@ -267,11 +276,20 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                                            linearSection.get<std::string>("MueLu reuse scope") == "run");
   uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility, physicalVolumetric);
 
+  // Checked before the output directory is cleared: a bad deck leaves an earlier run intact.
+  std::vector<std::vector<std::string>> outputSets;
+  for (const char *key : {"resultant face sets", "volume face sets"}) {
+    outputSets.push_back(io::splitNameList(D.sublist("Output").get<std::string>(key)));
+    for (const auto &name : outputSets.back())
+      if (!scene.mesh.faceSets.count(name))
+        throw io::DeckError(deck.where({"Output", key}) + ": no face set '" + name + "'");
+  }
   dir_ = options.outputDirectory.empty() ? std::filesystem::path(D.sublist("Output").get<std::string>("directory"))
                                          : options.outputDirectory;
   if (root_) prepareOutputDirectory(dir_);
   comm->barrier();
-  recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_);
+  recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_,
+                                             outputSets[0], outputSets[1]);
   every_ = D.sublist("Output").get<int>("every");
 
   doc_["deck"] = deck.file();

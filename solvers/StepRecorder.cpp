@@ -5,9 +5,15 @@
 namespace glossa::solvers {
 
 StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields,
-                           bool writer)
-    : assembler_(assembler), root_(writer), fields_(fields) {
+                           bool writer, std::vector<std::string> resultantSets, std::vector<std::string> volumeSets)
+    : assembler_(assembler), root_(writer), fields_(fields), resultantSets_(std::move(resultantSets)),
+      volumeSets_(std::move(volumeSets)) {
   if (!root_) return;
+  if (!resultantSets_.empty())
+    resultants_ = std::make_unique<io::KeyedCsvWriter>(dir / "resultants.csv", "face_set",
+                                                       std::vector<std::string>{"fx", "fy", "fz"});
+  if (!volumeSets_.empty())
+    volumes_ = std::make_unique<io::KeyedCsvWriter>(dir / "volumes.csv", "face_set", std::vector<std::string>{"volume"});
   const auto &mesh = assembler.scene().mesh;
   if (fields_) results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.nodes, mesh.elements);
   traces_ = std::make_unique<io::TraceWriter>(dir / "traces.csv");
@@ -42,8 +48,7 @@ std::vector<std::pair<std::string, Eigen::Vector3d>> StepRecorder::pointDisplace
   std::vector<std::pair<std::string, Eigen::Vector3d>> out;
   const auto &mesh = assembler_.scene().mesh;
   for (const auto &name : assembler_.scene().tracedPoints) {
-    const auto node = mesh.namedPoints.at(name).node;
-    out.emplace_back(name, Eigen::Vector3d(u[3 * node], u[3 * node + 1], u[3 * node + 2]));
+    out.emplace_back(name, mesh.namedPoints.at(name).interpolate(u));
   }
   return out;
 }
@@ -79,12 +84,31 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(do
     std::vector<io::TraceWriter::Point> points;
     const auto &mesh = assembler_.scene().mesh;
     for (const auto &[name, d] : pointDisplacements(uAll)) {
-      const auto node = mesh.namedPoints.at(name).node;
-      points.push_back({name, d, mesh.nodes[node] + d - mesh.imagedPosition(node)});
+      const mesh::NamedPoint &p = mesh.namedPoints.at(name);
+      // d from the imaged position: of the node, or interpolated like the displacement.
+      Eigen::Vector3d offset = mesh.nodes[p.node] - mesh.imagedPosition(p.node);
+      if (p.probe()) {
+        offset.setZero();
+        for (const auto &[n, w] : p.weights) offset += w * (mesh.nodes[n] - mesh.imagedPosition(n));
+      }
+      points.push_back({name, d, offset + d});
     }
     traces_->appendPoints(time, points);
   }
   if (root_ && reactions_) reactions_->append(time, reactions);
+  // Collective, so every rank computes them; rank 0 writes.
+  if (!resultantSets_.empty()) {
+    const auto forces = assembler_.faceSetResultants(u, time, lambda, resultantSets_);
+    std::vector<std::pair<std::string, std::vector<double>>> rows;
+    for (std::size_t s = 0; s < forces.size(); ++s) rows.push_back({resultantSets_[s], {forces[s].x(), forces[s].y(), forces[s].z()}});
+    if (root_) resultants_->append(time, rows);
+  }
+  if (!volumeSets_.empty()) {
+    const auto volumes = assembler_.enclosedVolumes(u, volumeSets_);
+    std::vector<std::pair<std::string, std::vector<double>>> rows;
+    for (std::size_t s = 0; s < volumes.size(); ++s) rows.push_back({volumeSets_[s], {volumes[s]}});
+    if (root_) volumes_->append(time, rows);
+  }
   if (root_ && activation_) activation_->append(time, activationRows(muscle, input));
   if (!fields_ || !writeFields) return reactions;
   const auto f = assembler_.elementFields(u, lambda);

@@ -26,7 +26,10 @@ class StepRecorder {
 public:
   // `writer`: this rank writes the files (rank 0 of the world; with control groups every group
   // records, collectively on its own communicator, but only one rank writes).
-  StepRecorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields, bool writer);
+  // `resultantSets`, `volumeSets`: face sets (existing) whose resultant force and enclosed volume
+  // are written every step to resultants.csv and volumes.csv.
+  StepRecorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields, bool writer,
+               std::vector<std::string> resultantSets = {}, std::vector<std::string> volumeSets = {});
 
   // Displacement of every traced point (on every rank).
   std::vector<std::pair<std::string, Eigen::Vector3d>> pointDisplacements(const std::vector<double> &u) const;
@@ -52,7 +55,8 @@ private:
   bool root_, fields_;
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;
-  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_;
+  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_, resultants_, volumes_;
+  std::vector<std::string> resultantSets_, volumeSets_;
   std::map<std::string, std::vector<double>> fibreDirections_; // rank 0, per family
   std::vector<std::pair<std::string, std::vector<double>>> groupMembership_; // per group, per element
 };

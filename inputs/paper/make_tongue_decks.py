@@ -395,9 +395,9 @@ response is strongly nonlinear (the geniohyoid pulls the tongue base forward) an
 Gauss-Newton step can overshoot and lose to the previous inputs, which a short GA then keeps for
 several steps; so the prediction is seeded at step lengths 1, 1/2 and 1/4 (a line search in
 generation 0). With it the GA searches more (1,275 solves against 1,051), so to stay within
-30 min on 2 ranks a step ends after at most 6 generations (one step of 28 needed 10) and MueLu's
-aggregates and transfer operators are kept for the run (Linear solver/MueLu reuse scope = run;
-the coarse matrices are still recomputed at every Newton iteration): doc/tongue.md, s8_5."""
+30 min on 2 ranks MueLu's aggregates and transfer operators are kept for the run (Linear
+solver/MueLu reuse scope = run; the coarse matrices are still recomputed at every Newton
+iteration): doc/tongue.md, s8_5."""
 CONTROL_COMMON = {"control points": ("string", CONTROL_POINTS), "always evaluated": ("string", "GGa, GGm, GGp")}
 CONTROLLERS = {
     "ga": (GA, dict(CONTROL_COMMON, **{"type": ("string", "genetic algorithm"), "genes": ("string", "continuous"),
@@ -419,8 +419,7 @@ for posture, g in POSTURES:
         if controller == "ga" and posture == "supine":
             # Supine solves cost more (72 s per GA step against 56 upright) and the response is
             # strongly nonlinear: SUPINE_GA says what differs and why (doc/tongue.md, s8_5).
-            control = dict(control, **{"stagnation generations": ("int", 2), "prediction seed steps": ("int", 3),
-                                       "generations": ("int", 6)})
+            control = dict(control, **{"stagnation generations": ("int", 2), "prediction seed steps": ("int", 3)})
             linear = {"MueLu reuse scope": ("string", "run")}
             text += SUPINE_GA
         else:

@@ -4,6 +4,7 @@
 #include "assembly/ZoltanPartition.hpp"
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <limits>
 
@@ -172,10 +173,12 @@ std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::ve
   return bases;
 }
 
-void Assembler::addExternalForces(double time, Teuchos::ArrayRCP<double> &fData, bool constrainedToo) const {
+void Assembler::addExternalForces(double time, Teuchos::ArrayRCP<double> &fData, bool constrainedToo,
+                                  bool surfaceLoads) const {
   // External forces enter with a minus sign: f = f_int - f_ext.
   const mesh::HexMesh &mesh = scene_.mesh;
   for (const auto &load : scene_.tractions) {
+    if (!surfaceLoads) break;
     const Eigen::Vector3d t = load.traction * load.scale(time);
     for (const auto &face : load.faces) {
       if (layout_.elementOwner[face.element] != layout_.rank) continue;
@@ -542,6 +545,61 @@ std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, 
   std::vector<Eigen::Vector3d> out;
   for (std::size_t b = 0; b < scene_.dirichlet.size(); ++b) out.emplace_back(global[3 * b], global[3 * b + 1], global[3 * b + 2]);
   return out;
+}
+
+std::vector<Eigen::Vector3d> Assembler::faceSetResultants(const Vector &u, double time, const std::vector<double> &lambda,
+                                                         const std::vector<std::string> &faceSets) const {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  Vector uOverlap(overlapMap_), fOverlap(overlapMap_), f(ownedMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  {
+    auto fData = fOverlap.getDataNonConst(0);
+    for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+      const auto r = evaluateElement(i, mesh.elementCoordinates(layout_.localElements[i]), elementDisplacement(i, uData),
+                                     lambda[i], nullptr, false, fem::Q1P0Output::ResidualOnly);
+      for (int l = 0; l < 24; ++l) fData[elementLids_[i][l]] += r.residual(l);
+    }
+    addExternalForces(time, fData, /*constrainedToo=*/true, /*surfaceLoads=*/false);
+  }
+  f.doExport(fOverlap, *exporter_, Tpetra::ADD);
+  auto fOwned = f.getData(0);
+  std::vector<double> local(3 * faceSets.size(), 0.0), global(local.size(), 0.0);
+  for (std::size_t s = 0; s < faceSets.size(); ++s) {
+    std::set<mesh::NodeId> nodes;
+    for (const auto &face : mesh.faceSets.at(faceSets[s]))
+      for (int k = 0; k < 4; ++k) nodes.insert(mesh.elements[face.element][mesh::kHexFaceNodes[face.localFace][k]]);
+    for (const mesh::NodeId n : nodes)
+      if (layout_.nodeOwner[n] == layout_.rank)
+        for (int c = 0; c < 3; ++c) local[3 * s + c] += fOwned[ownedMap_->getLocalElement(layout_.dof(n, c))];
+  }
+  if (!local.empty())
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
+  std::vector<Eigen::Vector3d> out;
+  for (std::size_t s = 0; s < faceSets.size(); ++s) out.emplace_back(global[3 * s], global[3 * s + 1], global[3 * s + 2]);
+  return out;
+}
+
+std::vector<double> Assembler::enclosedVolumes(const Vector &u, const std::vector<std::string> &faceSets) const {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  Vector uOverlap(overlapMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  std::vector<double> local(faceSets.size(), 0.0), global(local.size(), 0.0);
+  for (std::size_t s = 0; s < faceSets.size(); ++s)
+    for (const auto &face : mesh.faceSets.at(faceSets[s])) {
+      if (layout_.elementOwner[face.element] != layout_.rank) continue;
+      loads::FaceNodes x; // the deformed face, its nodes in outward right-hand order
+      for (int k = 0; k < 4; ++k) {
+        const mesh::NodeId n = mesh.elements[face.element][mesh::kHexFaceNodes[face.localFace][k]];
+        for (int c = 0; c < 3; ++c)
+          x(k, c) = mesh.nodes[n](c) + uData[overlapMap_->getLocalElement(layout_.dof(n, c))];
+      }
+      local[s] += loads::faceVolumeMoment(x);
+    }
+  if (!local.empty())
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
+  return global;
 }
 
 double Assembler::externalForceNorm(double time) const {

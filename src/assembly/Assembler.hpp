@@ -115,6 +115,15 @@ public:
   // A node in several conditions counts in each. For an elastic support: the sum of its springs'
   // forces on the body, -k (u - g), over the components no other condition fixes. Collective.
   std::vector<Eigen::Vector3d> reactions(const Vector &u, double time, const std::vector<double> &lambda) const;
+  // Per face set named: the force the world exerts on the body through it, sum over the set's
+  // nodes of f_int - f_body (internal forces less body forces): a support's reaction, a load's
+  // resultant. A node shared by two sets counts in both.
+  std::vector<Eigen::Vector3d> faceSetResultants(const Vector &u, double time, const std::vector<double> &lambda,
+                                                 const std::vector<std::string> &faceSets) const;
+  // Per face set named: 1/3 of the integral of x . n over its deformed faces (2x2 Gauss points,
+  // exact for bilinear faces), n the body's outward normal: the volume of the body for its whole
+  // boundary, minus that of a cavity for the cavity's wall. Collective.
+  std::vector<double> enclosedVolumes(const Vector &u, const std::vector<std::string> &faceSets) const;
 
   // Norm of the external force vector at time t (the scale of the Newton tolerance).
   double externalForceNorm(double time) const;
@@ -137,7 +146,8 @@ private:
   void importToOverlap(const Vector &u, Vector &overlap) const;
   // Subtracts the dead tractions and body forces at time t from the overlap residual (local
   // faces and elements only); at constrained dofs only if `constrainedToo`.
-  void addExternalForces(double time, Teuchos::ArrayRCP<double> &fData, bool constrainedToo = false) const;
+  void addExternalForces(double time, Teuchos::ArrayRCP<double> &fData, bool constrainedToo = false,
+                         bool surfaceLoads = true) const;
   // The element kernel with the point law of local element i (its muscle law if it has fibres).
   fem::Q1P0Result evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue, double lambda,
                                   const fem::MixedBase *base, bool extrapolate, fem::Q1P0Output what) const;

@@ -15,6 +15,11 @@ FaceForces deadTractionForces(const FaceNodes &X, const Eigen::Vector3d &t);
 // Reference area of the face (same rule).
 double faceArea(const FaceNodes &X);
 
+// 1/3 of the integral of x . n over the face (x its nodes' positions, n the normal of the
+// right-hand node order); exact for a bilinear face (the integrand is of degree 3 in s and t).
+// Summed over a closed surface with outward normals: the enclosed volume (divergence theorem).
+double faceVolumeMoment(const FaceNodes &x);
+
 // Outward unit normal at the face centre for the right-hand node order.
 Eigen::Vector3d faceNormal(const FaceNodes &X);
 

@@ -43,10 +43,22 @@ struct ElementFace {
 extern const std::array<std::array<int, 4>, 6> kHexFaceNodes;
 
 // A named point for output (traces) and control: a location in the reference configuration
-// and the mesh node it sits on (generators put named points on nodes).
+// and the mesh node it sits on (generators put named points on nodes), or a probe inside an
+// element, whose values are its element's nodal values interpolated at it.
 struct NamedPoint {
   Eigen::Vector3d position;
-  NodeId node;
+  NodeId node; // the node it is at; a probe: the nearest node of its element
+  // A probe: its element's nodes and their trilinear shape functions at the point (summing to 1);
+  // empty for a point at a node.
+  std::vector<std::pair<NodeId, double>> weights;
+  bool probe() const { return !weights.empty(); }
+  // sum_a N_a v(a) of a per-node vector field v (3 per node, by mesh node).
+  Eigen::Vector3d interpolate(const std::vector<double> &v) const {
+    if (!probe()) return {v[3 * node], v[3 * node + 1], v[3 * node + 2]};
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (const auto &[n, w] : weights) x += w * Eigen::Vector3d(v[3 * n], v[3 * n + 1], v[3 * n + 2]);
+    return x;
+  }
 };
 
 struct HexMesh {

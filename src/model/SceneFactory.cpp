@@ -1,5 +1,7 @@
 #include "model/SceneFactory.hpp"
 
+#include "model/PointLocation.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -158,8 +160,9 @@ ParameterList loadParameters() {
 ParameterList namedPointParameters() {
   ParameterList p;
   io::declareDoubleArray(p, "position", Array<double>(3, 0.0), "m",
-                         "reference position; must coincide with a mesh node (within 1e-6 of "
-                         "the smallest element edge)", 3);
+                         "reference position: at a mesh node (within 1e-6 of the smallest element edge) "
+                         "the node's values; elsewhere inside the mesh a probe, its element's nodal values "
+                         "interpolated by the trilinear shape functions (not a control point)", 3);
   return p;
 }
 
@@ -300,7 +303,14 @@ void replaceReferenceCoordinates(const io::Deck &deck, mesh::HexMesh &m) {
   } catch (const std::runtime_error &e) {
     throw io::DeckError(deck.where({"Mesh", "reference coordinates file"}) + ": " + e.what());
   }
-  for (auto &[name, point] : m.namedPoints) point.position = m.nodes[point.node];
+  for (auto &[name, point] : m.namedPoints) {
+    if (!point.probe()) {
+      point.position = m.nodes[point.node];
+      continue;
+    }
+    point.position.setZero(); // the same local coordinates in the element's new shape
+    for (const auto &[n, w] : point.weights) point.position += w * m.nodes[n];
+  }
 }
 
 std::string knownSets(const mesh::HexMesh &m) {
@@ -440,13 +450,16 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     const mesh::NodeId node = m.nearestNode(x);
     double hMin = std::numeric_limits<double>::infinity();
     for (const auto &e : m.elements) hMin = std::min(hMin, (m.nodes[e[1]] - m.nodes[e[0]]).norm());
-    if ((m.nodes[node] - x).norm() > 1e-6 * hMin) {
+    if ((m.nodes[node] - x).norm() <= 1e-6 * hMin) {
+      m.namedPoints[name] = {x, node, {}};
+    } else if (auto probe = probeAt(m, x)) {
+      m.namedPoints[name] = std::move(*probe); // interpolated in its element
+    } else {
       std::ostringstream s;
-      s << deck.where({"Named points", name, "position"}) << ": no mesh node there (nearest node "
-        << node << " at " << m.nodes[node].transpose() << ")";
+      s << deck.where({"Named points", name, "position"}) << ": outside the mesh (nearest node " << node << " at "
+        << m.nodes[node].transpose() << ")";
       throw io::DeckError(s.str());
     }
-    m.namedPoints[name] = {x, node};
     if (std::find(scene.tracedPoints.begin(), scene.tracedPoints.end(), name) == scene.tracedPoints.end())
       scene.tracedPoints.push_back(name);
   }
