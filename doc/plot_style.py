@@ -134,3 +134,11 @@ def run_title(directory):
     name = os.path.splitext(os.path.basename(deck))[0]
     scene = deck_scene(deck)
     return f"{name}: {scene}" if scene else name
+
+
+if __name__ == "__main__":
+    import argparse
+
+    # Not a script: --help says what the module is for (tests/integration/doc_scripts_help.py
+    # runs every doc/*.py with --help).
+    argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter).parse_args()
