@@ -8,14 +8,18 @@ Reads RESULTS_DIR/results.xdmf (the run needs Output/fields on), takes the last 
 one at --time), moves every node by its displacement and colours the mesh by --field: a cell
 field glossa writes (fibre_stretch_<group>, contractile_stretch_<group>, ffmr_<group>, J,
 dilatation, pressure, ...) or 'displacement' (its magnitude, mm; the default). A field of one
-muscle group is drawn on that group's elements only (muscle_set_<group> = 1), the rest of the
-tongue in grey, and the mesh is cut at the midsagittal plane (the plane halfway across y) so
-that the medial muscles show; --no-cut draws the outside instead. The camera faces the sagittal
-plane (+x posterior to the right, +z superior up). The title names the run's deck and scene.
+muscle group is drawn on that group's elements only (muscle_set_<group> = 1), opaque, inside the
+rest of the tongue drawn as a translucent grey shell. --cut cuts the mesh at the midsagittal
+plane (the plane halfway across y, whole elements) and shows the cut face. The colour range is
+the 2nd to 98th percentile of the values drawn (a stretch: symmetric about 1) unless --range.
+The camera faces the sagittal plane (+x posterior to the right, +z superior up). The title
+names the run's deck and scene.
 """
 import argparse
 import os
 import sys
+
+import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -32,8 +36,8 @@ def parse(argv):
                    help="colour range (default: the data's; stretches symmetric about 1)")
     cut = p.add_mutually_exclusive_group()
     cut.add_argument("--cut", dest="cut", action="store_true", default=None,
-                     help="cut at the midsagittal plane (default for a muscle group's field)")
-    cut.add_argument("--no-cut", dest="cut", action="store_false", help="draw the outside of the mesh")
+                     help="cut at the midsagittal plane (whole elements) and show the cut face")
+    cut.add_argument("--no-cut", dest="cut", action="store_false", help="draw the whole mesh (default)")
     p.add_argument("--size", nargs=2, type=int, default=(1400, 900), metavar=("W", "H"), help="pixels")
     return p.parse_args(argv)
 
@@ -50,17 +54,29 @@ def group_of(field, cell_fields):
 
 
 def colour_range(values, field, requested):
-    """The colour bar's range: a stretch (1 = rest length) symmetric about 1 so that shortening and
-    lengthening read alike on a diverging map; otherwise the data's range."""
+    """The colour bar's range: the 2nd to 98th percentile of the values drawn (a few distorted
+    elements would otherwise wash the rest out to one colour), a stretch (1 = rest length)
+    symmetric about 1 so that shortening and lengthening read alike on a diverging map."""
     if requested:
         return tuple(requested)
-    low, high = values
+    low, high = (float(v) for v in numpy.percentile(values, [2.0, 98.0]))
     if "stretch" in field:
         half = max(abs(low - 1.0), abs(high - 1.0), 1e-6)
         return 1.0 - half, 1.0 + half
     if high <= low:
         high = low + 1e-12
     return low, high
+
+
+def values_of(source, array, association, time):
+    """The array's values on the filter's output (cells or points), as numpy."""
+    from paraview import servermanager
+    from vtk.numpy_interface import dataset_adapter as dsa
+    data = servermanager.Fetch(source)
+    while data.IsA("vtkMultiBlockDataSet"):
+        data = data.GetBlock(0)
+    wrapped = dsa.WrapDataObject(data)
+    return numpy.asarray((wrapped.PointData if association == "POINTS" else wrapped.CellData)[array])
 
 
 def main(argv):
@@ -79,7 +95,7 @@ def main(argv):
     if args.field != "displacement" and args.field not in cell_fields:
         sys.exit(f"no cell field '{args.field}' in {xdmf}; it has: displacement, " + ", ".join(cell_fields))
     group = group_of(args.field, cell_fields)
-    cut = group is not None if args.cut is None else args.cut
+    cut = bool(args.cut)
 
     warped = pv.WarpByVector(Input=reader, Vectors=["POINTS", "displacement"], ScaleFactor=1.0)
     shape = warped
@@ -88,7 +104,7 @@ def main(argv):
         # Whole cells (crinkle) keep their colour; the half nearer the camera (y < mid) goes.
         shape = pv.Clip(Input=warped, ClipType="Plane", Crinkleclip=1, Invert=0)
         shape.ClipType.Origin = [0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1)]
-        shape.ClipType.Normal = [0.0, 1.0, 0.0]
+        shape.ClipType.Normal = [0.0, -1.0, 0.0]
     coloured = shape
     if group:
         coloured = pv.Threshold(Input=shape, Scalars=["CELLS", f"muscle_set_{group}"],
@@ -104,18 +120,26 @@ def main(argv):
     data = coloured.PointData if association == "POINTS" else coloured.CellData
     if array not in data.keys() or coloured.GetDataInformation().GetNumberOfCells() == 0:
         sys.exit(f"'{args.field}': nothing to draw (no elements of group {group}?)")
-    low, high = colour_range(data[array].GetRange(), args.field, args.range)
+    values = values_of(coloured, array, association, time)
+    low, high = colour_range(values, args.field, args.range)
+    print(f"{array}: {values.size} values in [{values.min():.4g}, {values.max():.4g}]; colours over [{low:.4g}, {high:.4g}]")
 
     view = pv.GetActiveViewOrCreate("RenderView")
     view.ViewSize = list(args.size)
+    view.ViewTime = time  # the view draws its own time (0 unless told), not the pipeline's
+    view.UseColorPaletteForBackground = 0  # else the palette's blue-grey wins over Background
     view.Background = [1.0, 1.0, 1.0]
     view.OrientationAxesVisibility = 1
     view.OrientationAxesLabelColor = [0.2, 0.2, 0.2]
     if group:
-        rest = pv.Show(shape, view)
-        pv.ColorBy(rest, None)
-        rest.AmbientColor = rest.DiffuseColor = [0.78, 0.78, 0.78]
-        rest.Opacity = 0.35 if cut else 0.25
+        # The elements outside the group, a translucent grey shell: the group's elements lie
+        # inside the tongue (left and right of the septum, so a midsagittal cut misses them).
+        rest = pv.Threshold(Input=shape, Scalars=["CELLS", f"muscle_set_{group}"], LowerThreshold=0.5,
+                            ThresholdMethod="Below Lower Threshold")
+        shown_rest = pv.Show(rest, view)
+        pv.ColorBy(shown_rest, None)
+        shown_rest.AmbientColor = shown_rest.DiffuseColor = [0.75, 0.75, 0.75]
+        shown_rest.Opacity = 1.0 if cut else 0.22
     display = pv.Show(coloured, view)
     pv.ColorBy(display, (association, array))
     lut = pv.GetColorTransferFunction(array)
@@ -137,7 +161,7 @@ def main(argv):
     title = pv.Text(Text=f"{plot_style.run_title(args.results)}\n{what} at t = {time:g} s, deformed{where}")
     shown = pv.Show(title, view)
     shown.Color = [0.1, 0.1, 0.1]
-    shown.FontSize = 16
+    shown.FontSize = 20
     shown.WindowLocation = "Upper Center"
 
     # Facing the sagittal plane from -y: +x (posterior) to the right, +z (superior) up.
@@ -146,7 +170,7 @@ def main(argv):
     view.CameraViewUp = [0.0, 0.0, 1.0]
     view.CameraParallelProjection = 1
     view.ResetCamera()
-    view.CameraParallelScale *= 0.9
+    view.CameraParallelScale *= 0.8
     pv.Render(view)
     pv.SaveScreenshot(args.png, view, ImageResolution=list(args.size), TransparentBackground=0)
     print("wrote", args.png)
