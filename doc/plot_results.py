@@ -105,7 +105,15 @@ def plot_activation(directory, title, png):
     for name, series in groups.items():
         for ax, (column, _) in zip(axes, panels):
             ax.plot(series[0], series[column], label=name)
-    for ax, (_, heading) in zip(axes, panels):
+    for ax, (column, heading) in zip(axes, panels):
+        if column == 3:
+            # An isometric run holds the stretch at 1 to 1e-7: without a floor on the span the
+            # axis would magnify round-off into a saw-tooth under an unreadable offset label.
+            low, high = ax.get_ylim()
+            if high - low < 2e-3:
+                middle = 0.5 * (low + high)
+                ax.set_ylim(middle - 1e-3, middle + 1e-3)
+            ax.ticklabel_format(axis="y", useOffset=False)
         ax.set_title(heading)
         ax.set_xlabel("time [s]")
         ax.grid(True, alpha=0.3)

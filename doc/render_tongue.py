@@ -68,7 +68,7 @@ def colour_range(values, field, requested):
     return low, high
 
 
-def values_of(source, array, association, time):
+def values_of(source, array, association):
     """The array's values on the filter's output (cells or points), as numpy."""
     from paraview import servermanager
     from vtk.numpy_interface import dataset_adapter as dsa
@@ -120,7 +120,7 @@ def main(argv):
     data = coloured.PointData if association == "POINTS" else coloured.CellData
     if array not in data.keys() or coloured.GetDataInformation().GetNumberOfCells() == 0:
         sys.exit(f"'{args.field}': nothing to draw (no elements of group {group}?)")
-    values = values_of(coloured, array, association, time)
+    values = values_of(coloured, array, association)
     low, high = colour_range(values, args.field, args.range)
     print(f"{array}: {values.size} values in [{values.min():.4g}, {values.max():.4g}]; colours over [{low:.4g}, {high:.4g}]")
 
@@ -156,9 +156,10 @@ def main(argv):
     bar.Visibility = 1
     display.SetScalarBarVisibility(view, True)
 
-    what = f"{args.field}" + (f" on {group}'s elements" if group else "")
+    what = "|displacement|" if args.field == "displacement" else args.field
+    what += f" on {group}'s elements" if group else ""
     where = ", cut at the midsagittal plane" if cut else ""
-    title = pv.Text(Text=f"{plot_style.run_title(args.results)}\n{what} at t = {time:g} s, deformed{where}")
+    title = pv.Text(Text=f"{plot_style.run_title(args.results)}\n{what} at t = {time:g} s, on the deformed mesh{where}")
     shown = pv.Show(title, view)
     shown.Color = [0.1, 0.1, 0.1]
     shown.FontSize = 20
