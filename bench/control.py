@@ -19,6 +19,7 @@ import math
 import os
 import statistics
 import subprocess
+import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -46,10 +47,12 @@ def peak_of_p(out):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
+    p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"), help="the solver (default: build/glossa)")
     p.add_argument("--end-time", default=1.25, type=float, help="seconds of the scene (one breath: 1.25)")
-    p.add_argument("--ranks", default="1,2", type=lambda s: [int(x) for x in s.split(",")])
-    p.add_argument("--plot", action="store_true")
+    p.add_argument("--ranks", default="1,2", type=lambda s: [int(x) for x in s.split(",")],
+                   help="comma-separated rank counts to run each controller on (default: 1,2)")
+    p.add_argument("--plot", action="store_true",
+                   help="also draw bench/results/control_inputs.png from the first rank count's runs")
     args = p.parse_args()
     passive, passive_out = run(args.glossa, "s7_2_passive.xml", 1, args.end_time)
     passive_peak = peak_of_p(passive_out)
@@ -92,10 +95,10 @@ def main():
 
 
 def plot(chosen, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(len(chosen) + 1, 1, figsize=(7, 2.2 * (len(chosen) + 1)), sharex=True)
+    sys.path.insert(0, os.path.join(ROOT, "doc"))
+    import plot_style
+    plt = plot_style.plt
+    fig, axes = plt.subplots(len(chosen) + 1, 1, figsize=(8, 2.2 * (len(chosen) + 1)), sharex=True)
     for ax, (controller, steps) in zip(axes, chosen.items()):
         t = [x["time"] for x in steps]
         for g in steps[0]["control"]["inputs"]:
@@ -103,17 +106,20 @@ def plot(chosen, path):
         ax.set_ylabel("neural input u")
         ax.set_ylim(-0.05, 1.05)
         ax.set_title(controller)
-        ax.legend(loc="upper right", fontsize=7, ncol=4)
+        plot_style.legend_right(ax, title="muscle group")
     ax = axes[-1]
     for controller, steps in chosen.items():
         ax.plot([x["time"] for x in steps], [1e6 * x["control"]["objective"] for x in steps], label=controller)
     ax.set_yscale("log")
     ax.set_ylabel("objective eq. 25 [um]")
     ax.set_xlabel("time [s]")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    print("wrote", path)
+    plot_style.legend_right(ax, title="controller")
+    fig.suptitle(f"Paper §7.2 block: the inputs each controller chose (end time {chosen_end(chosen):g} s)", fontsize=10)
+    plot_style.save(fig, path)
+
+
+def chosen_end(chosen):
+    return max(x["time"] for steps in chosen.values() for x in steps)
 
 
 if __name__ == "__main__":

@@ -20,6 +20,7 @@ import json
 import math
 import os
 import subprocess
+import sys
 import tempfile
 import time
 
@@ -126,15 +127,22 @@ def row_of(scene, n, nu, strategy, ranks, s, note, wall, point):
 
 def plot(scene, rows):
     try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        sys.path.insert(0, os.path.join(ROOT, "doc"))
+        import plot_style
     except ImportError:
         print("matplotlib missing (use /usr/bin/python3): no plot")
         return
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+    plt = plot_style.plt
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
     keys = sorted({(r["strategy"], r["n"], str(r.get("ranks") or "1")) for r in rows},
                   key=lambda k: (list(STRATEGIES).index(k[0]), k[1], k[2]))
+    series = sorted({(k[0], k[2]) for k in keys}, key=lambda k: (list(STRATEGIES).index(k[0]), k[1]))
+    sizes = sorted({k[1] for k in keys})
+    # Strategy (and rank count): colour and marker; n: line style. Two keys of 15 + 3 entries
+    # beside the axes, where one entry per line (28) covered the data.
+    strategy_style = {k: plot_style.marker_style(i) for i, k in enumerate(series)}
+    size_style = {n: plot_style.LINE_STYLES[i % len(plot_style.LINE_STYLES)] for i, n in enumerate(sizes)}
+    drawn_series, drawn_sizes = [], []
     for strategy, n, ranks in keys:
         pts = [(float(r["nu"]), r["krylov_max_per_solve"]) for r in rows
                if r["strategy"] == strategy and r["n"] == n and str(r.get("ranks") or "1") == ranks and r["converged"]]
@@ -143,22 +151,24 @@ def plot(scene, rows):
         pts.sort()
         # x: -log10(0.5 - nu), nu = 0.5 drawn one decade past 0.49999.
         xs = [6.0 if nu >= 0.5 else -math.log10(0.5 - nu) for nu, _ in pts]
-        # One colour per strategy (and rank count), one line style per n.
-        colour = plt.cm.tab20(sorted({(k[0], k[2]) for k in keys}).index((strategy, ranks)) % 20)
-        style = {8: "-", 16: "--", 32: ":"}.get(n, "-.")
-        ax.plot(xs, [k for _, k in pts], marker="o", color=colour, linestyle=style,
-                label=f"{strategy}, n={n}" + (f", {ranks} ranks" if ranks != "1" else ""))
+        ax.plot(xs, [k for _, k in pts], linestyle=size_style[n], markersize=4, **strategy_style[(strategy, ranks)])
+        drawn_series += [(strategy, ranks)] if (strategy, ranks) not in drawn_series else []
+        drawn_sizes += [n] if n not in drawn_sizes else []
     ax.set_xticks([-math.log10(0.2), 2, 3, 4, 5, 6])
     ax.set_xticklabels(["0.3", "0.49", "0.499", "0.4999", "0.49999", "0.5"])
     ax.set_xlabel("Poisson's ratio")
     ax.set_ylabel("max Krylov iterations per linear solve")
     ax.set_yscale("log")
-    ax.set_title(f"{scene}: augmented Lagrangian (kappa_AL = 100 mu; -kal30: 30 mu) and mixed")
+    ax.set_title(f"{scene}: augmented Lagrangian (kappa_AL = 100 mu; -kal30: 30 mu) and mixed", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7, ncol=2)
-    fig.tight_layout()
-    fig.savefig(os.path.join(RESULTS, f"incompressibility_{scene}.png"), dpi=120)
-    plt.close(fig)
+    strategies = plot_style.legend_keys(
+        ax, [(s + (f", {r} ranks" if r != "1" else ""), dict(strategy_style[(s, r)], linestyle="-"))
+             for s, r in series if (s, r) in drawn_series], "strategy")
+    fig.canvas.draw()  # the strategies' key must have its size before the next is put under it
+    box = strategies.get_window_extent().transformed(ax.transAxes.inverted())
+    plot_style.legend_keys(ax, [(f"n = {n}", {"color": "0.3", "linestyle": size_style[n]})
+                                for n in sizes if n in drawn_sizes], "cells per side", box.y0 - 0.03)
+    plot_style.save(fig, os.path.join(RESULTS, f"incompressibility_{scene}.png"))
 
 
 def tables(scene):
@@ -200,16 +210,18 @@ def tables(scene):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
-    ap.add_argument("--sizes", default="8,16")
-    ap.add_argument("--nus", default="0.3,0.49,0.499,0.4999,0.49999,0.5")
-    ap.add_argument("--strategies", default=",".join(STRATEGIES))
-    ap.add_argument("--scenes", default="block,cook")
-    ap.add_argument("--timeout", type=float, default=900.0)
-    ap.add_argument("--ranks", type=int, default=1)
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"), help="the solver (default: build/glossa)")
+    ap.add_argument("--sizes", default="8,16", help="cells per side, comma-separated (default: 8,16)")
+    ap.add_argument("--nus", default="0.3,0.49,0.499,0.4999,0.49999,0.5", help="Poisson's ratios, comma-separated")
+    ap.add_argument("--strategies", default=",".join(STRATEGIES),
+                    help="comma-separated, of: " + ", ".join(STRATEGIES) + " (default: all)")
+    ap.add_argument("--scenes", default="block,cook", help="block (step-44) and/or cook (default: both)")
+    ap.add_argument("--timeout", type=float, default=900.0, help="seconds per run before it is stopped (default: 900)")
+    ap.add_argument("--ranks", type=int, default=1, help="MPI ranks per run (default: 1)")
     ap.add_argument("--append", action="store_true", help="add to the existing CSVs")
-    ap.add_argument("--plot-only", action="store_true")
+    ap.add_argument("--plot-only", action="store_true",
+                    help="run nothing: redraw incompressibility_<scene>.png from the existing CSV")
     ap.add_argument("--tables", action="store_true", help="print markdown tables of the CSVs and stop")
     a = ap.parse_args()
     os.makedirs(RESULTS, exist_ok=True)

@@ -273,21 +273,19 @@ def check(directories, rows, results):
 
 
 def plot(glossa, directories, rows):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    sys.path.insert(0, os.path.join(ROOT, "doc"))
+    import plot_style
+    plt = plot_style.plt
     figures = os.path.join(ROOT, "doc", "figures")
 
-    def finish(axes, fig, name, ylabel=None, legend_size=None):
+    def finish(axes, fig, name, ylabel=None):
         for a in axes:
             a.set_xlabel("time [s]")
             if ylabel:
                 a.set_ylabel(ylabel)
             a.grid(alpha=0.3)
-            a.legend(fontsize=legend_size)
-        fig.tight_layout()
-        fig.savefig(os.path.join(figures, name), dpi=110)
-        plt.close(fig)
+        plot_style.legend_right(axes[-1])
+        plot_style.save(fig, os.path.join(figures, name), dpi=110)
     styles = {"passive": ("0.5", "--"), "gradient": ("tab:blue", "-"), "ga": ("tab:red", "-")}
     # Fig. 11: distance from the imaged position of P_P and P_A.
     fig, axes = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
@@ -306,11 +304,9 @@ def plot(glossa, directories, rows):
             ax.set_ylabel("distance from imaged position [mm]")
             ax.grid(alpha=0.3)
         axes[1][col].set_xlabel("time [s]")
-    axes[0][0].legend()
-    fig.suptitle("Fig. 11: the tongue with and without neural control, three 350 Pa breaths")
-    fig.tight_layout()
-    fig.savefig(os.path.join(figures, "s8_5_fig11.png"), dpi=110)
-    plt.close(fig)
+    plot_style.legend_right(axes[0][1], title="run")
+    fig.suptitle("Fig. 11: the tongue with and without neural control, three 350 Pa breaths (s8_5 decks)")
+    plot_style.save(fig, os.path.join(figures, "s8_5_fig11.png"), dpi=110)
     # Fig. 12a: GGm FFMR raw and B-spline.
     fig, ax = plt.subplots(figsize=(8, 4.5))
     colours = {"upright": "tab:green", "supine": "tab:purple"}
@@ -327,7 +323,7 @@ def plot(glossa, directories, rows):
                     ls="-" if controller == "gradient" else ":",
                     label=f"{posture}, {'GA' if controller == 'ga' else controller}, 12-coefficient B-spline")
     ax.set_title("Fig. 12a: GGm response, upright and supine")
-    finish([ax], fig, "s8_5_fig12a.png", "GGm FFMR [% of max]", 7)
+    finish([ax], fig, "s8_5_fig12a.png", "GGm FFMR [% of max]")
     # Fig. 12b: GGm fibre stretch and f_cL at the mean contractile stretch.
     lam, fcl = force_length(glossa)
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -345,14 +341,14 @@ def plot(glossa, directories, rows):
     a1.set_ylabel("GGm length-weighted mean fibre stretch")
     a2.set_ylabel("f_cL at GGm's mean contractile stretch")
     fig.suptitle("Fig. 12b: GGm fibre stretch and force-length efficiency")
-    finish([a1, a2], fig, "s8_5_fig12b.png", None, 7)
+    finish([a1, a2], fig, "s8_5_fig12b.png")
     # Fig. 13: GGm FFMR per p_max.
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for p, name in sweep_runs().items():
         if name not in directories:
             continue
         t, f = zip(*ffmr_percent(directories[name]))
-        ax.plot(t, f, marker=".", label=f"{p} Pa")
+        ax.plot(t, f, marker=".", label=f"p_max = {p} Pa")
     ax.set_title("Fig. 13: GGm FFMR against the airway pressure (supine, gradient controller)")
     finish([ax], fig, "s8_5_fig13.png", "GGm FFMR [% of max]")
 
@@ -407,15 +403,18 @@ def sweep_table(directories, rows):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
-    p.add_argument("--runs", default=os.path.join(ROOT, "bench", "results", "tongue_control"))
-    p.add_argument("--table", default=os.path.join(ROOT, "bench", "results", "tongue_control.csv"))
+    p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"),
+                   help="the solver (default: build/glossa; --plot also asks it for the f_cL curve)")
+    p.add_argument("--runs", default=os.path.join(ROOT, "bench", "results", "tongue_control"),
+                   help="directory of the runs, one subdirectory each (default: bench/results/tongue_control/)")
+    p.add_argument("--table", default=os.path.join(ROOT, "bench", "results", "tongue_control.csv"),
+                   help="the CSV to write (default: bench/results/tongue_control.csv)")
     p.add_argument("--only", default="", help="comma-separated run names (default: all)")
-    p.add_argument("--ga-ranks", default=2, type=int)
-    p.add_argument("--force", action="store_true")
+    p.add_argument("--ga-ranks", default=2, type=int, help="ranks (one control group each) of the GA runs")
+    p.add_argument("--force", action="store_true", help="rerun runs that have already finished")
     p.add_argument("--no-run", action="store_true", help="only summarise, plot and check existing runs")
-    p.add_argument("--check", action="store_true")
-    p.add_argument("--plot", action="store_true")
+    p.add_argument("--check", action="store_true", help="assert the issue's trends; exit 1 if one fails")
+    p.add_argument("--plot", action="store_true", help="draw doc/figures/s8_5_fig11/12a/12b/13.png")
     p.add_argument("--tables", action="store_true", help="print the markdown table of doc/tongue.md")
     args = p.parse_args()
     only = set(filter(None, args.only.split(",")))

@@ -1,42 +1,35 @@
 #!/usr/bin/python3
 """Plot the muscle curves tabulated by `glossa curves` (doc/materials.md, "Plots of the curves").
 
-    build/glossa curves --output /tmp/curves && /usr/bin/python3 doc/plot_curves.py /tmp/curves
+    build/glossa curves --output CURVES_DIR && /usr/bin/python3 doc/plot_curves.py CURVES_DIR
 
-Reads force_length.csv, force_velocity.csv and passive_series.csv from the directory given and
-writes doc/figures/{force_length,force_velocity,passive_series}.png (Debian's python3-matplotlib).
+Reads force_length.csv, force_velocity.csv and passive_series.csv from CURVES_DIR and writes
+force_length.png, force_velocity.png and passive_series.png to --figures (default doc/figures/;
+Debian's python3-matplotlib).
 """
+import argparse
 import os
 import sys
 
-os.environ.setdefault("MPLBACKEND", "Agg")
-
-import matplotlib  # noqa: E402
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import numpy as np  # noqa: E402
 
-FIGURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "figures")
+import plot_style  # noqa: E402
+from plot_style import plt  # noqa: E402
 
 
 def read(directory, name):
     return np.genfromtxt(os.path.join(directory, name), delimiter=",", names=True)
 
 
-def save(fig, ax, name, title):
-    ax.set_title(title)
-    ax.grid(True, alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    path = os.path.join(FIGURES, name)
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    print("wrote", path)
+def main(directory, figures):
+    os.makedirs(figures, exist_ok=True)
 
-
-def main(directory):
-    os.makedirs(FIGURES, exist_ok=True)
+    def save(fig, ax, name, title):
+        ax.set_title(title)
+        ax.grid(True, alpha=0.3)
+        plot_style.legend_below(fig, ax, ncol=2)
+        plot_style.save(fig, os.path.join(figures, name), dpi=100)
 
     d = read(directory, "force_length.csv")
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
@@ -65,6 +58,8 @@ def main(directory):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit("usage: plot_curves.py DIR  (DIR: the output of `glossa curves --output DIR`)")
-    main(sys.argv[1])
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("curves", help="the directory `glossa curves --output CURVES_DIR` wrote")
+    p.add_argument("--figures", default=plot_style.FIGURES, help="where the pictures go (default: doc/figures/)")
+    a = p.parse_args()
+    main(a.curves, a.figures)
