@@ -1,6 +1,6 @@
 #pragma once
-// The two parameter sets of the contractile element's curves (DESIGN.md §1, eq. 19-21):
-//  - "paper-table-II": Table II exactly (with the closing factor as DESIGN.md resolves eq. 21;
+// The two parameter sets of the contractile element's curves (eq. 19-21, doc/materials.md):
+//  - "paper-table-II": Table II exactly (with the closing factor as doc/materials.md resolves eq. 21;
 //    f_cV term 1's amplitude is 2.5e-5). Reproduces the paper; its shapes contradict Fig. 4.
 //  - "physiological" (the default): the same Gauss-mollifier family fitted by
 //    materials/fit/fit_physiological_curves.py to Gordon, Huxley & Julian (1966) for f_cL and to

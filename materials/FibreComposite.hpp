@@ -1,6 +1,6 @@
 #pragma once
 // Assembly of a fibre-reinforced point response from its matrix and fibre parts
-// (DESIGN.md §1, eq. 2-6), shared by FibreReinforcedMaterial (passive fibres) and
+// (eq. 2-6, doc/materials.md), shared by FibreReinforcedMaterial (passive fibres) and
 // MuscleMaterial (Hill fibres). Fibre stretch uses the isochoric C-bar:
 // lambda-bar_f = sqrt(N_f . C-bar N_f) = sqrt(I4-bar).
 //

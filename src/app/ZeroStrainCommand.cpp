@@ -190,7 +190,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
     char line[256];
     std::snprintf(line, sizeof line, "under the deck's gravity: max |x - X_img| = %.6e m, mean %.6e m",
                   result.maxDistance, result.meanDistance);
-    std::vector<std::string> header{"zero-strain configuration (DESIGN.md §8.1) of " + deck.file(),
+    std::vector<std::string> header{"zero-strain configuration (paper §8.1, doc/tongue.md s8_1) of " + deck.file(),
                                     "method " + result.method + ", " + std::to_string(result.iterations) +
                                         " iteration(s), " + std::to_string(result.solves) +
                                         " forward solves" + (result.converged ? "" : ", TOLERANCE NOT MET"),

@@ -507,11 +507,10 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
   return out;
 }
 
-std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, const std::vector<double> &lambda) const {
+Vector Assembler::nodalForces(const Teuchos::ArrayRCP<const double> &uData, double time,
+                              const std::vector<double> &lambda, bool surfaceLoads) const {
   const mesh::HexMesh &mesh = scene_.mesh;
-  Vector uOverlap(overlapMap_), fOverlap(overlapMap_), f(ownedMap_);
-  importToOverlap(u, uOverlap);
-  auto uData = uOverlap.getData(0);
+  Vector fOverlap(overlapMap_), f(ownedMap_);
   {
     auto fData = fOverlap.getDataNonConst(0);
     for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
@@ -519,10 +518,18 @@ std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, 
                                      lambda[i], nullptr, false, fem::Q1P0Output::ResidualOnly);
       for (int l = 0; l < 24; ++l) fData[elementLids_[i][l]] += r.residual(l);
     }
-    addExternalForces(time, fData, /*constrainedToo=*/true);
-    addFollowerLoads(uData, time, fData, nullptr, /*constrainedToo=*/true);
+    addExternalForces(time, fData, /*constrainedToo=*/true, surfaceLoads);
+    if (surfaceLoads) addFollowerLoads(uData, time, fData, nullptr, /*constrainedToo=*/true);
   }
   f.doExport(fOverlap, *exporter_, Tpetra::ADD);
+  return f;
+}
+
+std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, const std::vector<double> &lambda) const {
+  Vector uOverlap(overlapMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  const Vector f = nodalForces(uData, time, lambda, /*surfaceLoads=*/true);
   auto fOwned = f.getData(0);
   std::vector<double> local(3 * scene_.dirichlet.size(), 0.0), global(local.size(), 0.0);
   for (std::size_t b = 0; b < scene_.dirichlet.size(); ++b) {
@@ -550,19 +557,9 @@ std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, 
 std::vector<Eigen::Vector3d> Assembler::faceSetResultants(const Vector &u, double time, const std::vector<double> &lambda,
                                                          const std::vector<std::string> &faceSets) const {
   const mesh::HexMesh &mesh = scene_.mesh;
-  Vector uOverlap(overlapMap_), fOverlap(overlapMap_), f(ownedMap_);
+  Vector uOverlap(overlapMap_);
   importToOverlap(u, uOverlap);
-  auto uData = uOverlap.getData(0);
-  {
-    auto fData = fOverlap.getDataNonConst(0);
-    for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
-      const auto r = evaluateElement(i, mesh.elementCoordinates(layout_.localElements[i]), elementDisplacement(i, uData),
-                                     lambda[i], nullptr, false, fem::Q1P0Output::ResidualOnly);
-      for (int l = 0; l < 24; ++l) fData[elementLids_[i][l]] += r.residual(l);
-    }
-    addExternalForces(time, fData, /*constrainedToo=*/true, /*surfaceLoads=*/false);
-  }
-  f.doExport(fOverlap, *exporter_, Tpetra::ADD);
+  const Vector f = nodalForces(uOverlap.getData(0), time, lambda, /*surfaceLoads=*/false);
   auto fOwned = f.getData(0);
   std::vector<double> local(3 * faceSets.size(), 0.0), global(local.size(), 0.0);
   for (std::size_t s = 0; s < faceSets.size(); ++s) {

@@ -146,6 +146,10 @@ private:
   void importToOverlap(const Vector &u, Vector &overlap) const;
   // Subtracts the dead tractions and body forces at time t from the overlap residual (local
   // faces and elements only); at constrained dofs only if `constrainedToo`.
+  // Owned f_int - f_body, less the surface loads (tractions, follower loads) too when asked, at
+  // every dof, constrained ones included: reactions and face-set resultants sum it over nodes.
+  Vector nodalForces(const Teuchos::ArrayRCP<const double> &uData, double time, const std::vector<double> &lambda,
+                     bool surfaceLoads) const;
   void addExternalForces(double time, Teuchos::ArrayRCP<double> &fData, bool constrainedToo = false,
                          bool surfaceLoads = true) const;
   // The element kernel with the point law of local element i (its muscle law if it has fibres).
