@@ -40,6 +40,7 @@ def peak_of_p(out):
     peak = 0.0
     with open(os.path.join(out, "traces.csv")) as f:
         for row in csv.DictReader(f):
+            row = {k.split(" [")[0]: v for k, v in row.items()}  # "ux [m]" -> "ux"
             if row["point"] == "P":
                 peak = max(peak, math.sqrt(sum(float(row[c]) ** 2 for c in ("ux", "uy", "uz"))))
     return peak
@@ -51,6 +52,8 @@ def main():
     p.add_argument("--end-time", default=1.25, type=float, help="seconds of the scene (one breath: 1.25)")
     p.add_argument("--ranks", default="1,2", type=lambda s: [int(x) for x in s.split(",")],
                    help="comma-separated rank counts to run each controller on (default: 1,2)")
+    p.add_argument("--csv", default=os.path.join(ROOT, "bench", "results", "control.csv"),
+                   help="where the table goes (default: bench/results/control.csv)")
     p.add_argument("--plot", action="store_true",
                    help="also draw bench/results/control_inputs.png from the first rank count's runs")
     args = p.parse_args()
@@ -84,7 +87,7 @@ def main():
             if ranks == args.ranks[0]:
                 chosen[controller] = steps
     os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
-    path = os.path.join(ROOT, "bench", "results", "control.csv")
+    path = args.csv
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()

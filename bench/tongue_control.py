@@ -96,8 +96,9 @@ def pressure(t, p_max):
 
 
 def read_csv(path):
+    """A run's CSV as dicts keyed by column name without its unit ("ux [m]" -> "ux")."""
     with open(path) as f:
-        return list(csv.DictReader(f))
+        return [{k.split(" [")[0]: v for k, v in r.items()} for r in csv.DictReader(f)]
 
 
 def distances(directory, point):

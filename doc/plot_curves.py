@@ -19,7 +19,12 @@ from plot_style import plt  # noqa: E402
 
 
 def read(directory, name):
-    return np.genfromtxt(os.path.join(directory, name), delimiter=",", names=True)
+    """A table of `glossa curves` as columns keyed by name without the unit ("lambda_c [-]")."""
+    path = os.path.join(directory, name)
+    with open(path) as f:
+        names = [c.split(" [")[0] for c in f.readline().strip().split(",")]
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {n: data[:, i] for i, n in enumerate(names)}
 
 
 def main(directory, figures):

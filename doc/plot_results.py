@@ -23,8 +23,9 @@ from plot_style import plt  # noqa: E402
 
 
 def rows_of(path):
+    """A run's CSV as dicts keyed by column name without its unit ("ux [m]" -> "ux")."""
     with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+        return [{k.split(" [")[0]: v for k, v in r.items()} for r in csv.DictReader(f)]
 
 
 def plot_point(csv_file, png, deck=None):

@@ -359,7 +359,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   if (!control_->enabled) return;
   if (root_)
     controls_ = std::make_unique<io::KeyedCsvWriter>(
-        dir_ / "controls.csv", "group", std::vector<std::string>{"u", "evaluated", "objective", "candidates"});
+        dir_ / "controls.csv", "group", std::vector<std::string>{"u [-]", "evaluated [-]", "objective [m]", "candidates [-]"});
   ControlDriverSetup setup;
   setup.parameters = control_->parameters;
   for (const auto &g : scene.muscles.groups) setup.groupNames.push_back(g.name);

@@ -11,9 +11,9 @@ StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::file
   if (!root_) return;
   if (!resultantSets_.empty())
     resultants_ = std::make_unique<io::KeyedCsvWriter>(dir / "resultants.csv", "face_set",
-                                                       std::vector<std::string>{"fx", "fy", "fz"});
+                                                       std::vector<std::string>{"fx [N]", "fy [N]", "fz [N]"});
   if (!volumeSets_.empty())
-    volumes_ = std::make_unique<io::KeyedCsvWriter>(dir / "volumes.csv", "face_set", std::vector<std::string>{"volume"});
+    volumes_ = std::make_unique<io::KeyedCsvWriter>(dir / "volumes.csv", "face_set", std::vector<std::string>{"volume [m^3]"});
   const auto &mesh = assembler.scene().mesh;
   if (fields_) results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.nodes, mesh.elements);
   traces_ = std::make_unique<io::TraceWriter>(dir / "traces.csv");
@@ -38,10 +38,10 @@ StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::file
   }
   if (!assembler.scene().dirichlet.empty())
     reactions_ = std::make_unique<io::KeyedCsvWriter>(dir / "reactions.csv", "condition",
-                                                      std::vector<std::string>{"fx", "fy", "fz"});
+                                                      std::vector<std::string>{"fx [N]", "fy [N]", "fz [N]"});
   if (!assembler.scene().muscles.groups.empty())
     activation_ = std::make_unique<io::KeyedCsvWriter>(
-        dir / "activation.csv", "group", std::vector<std::string>{"u", "alpha", "ffmr", "mean_fibre_stretch", "mean_contractile_stretch"});
+        dir / "activation.csv", "group", std::vector<std::string>{"u [-]", "alpha [-]", "ffmr [-]", "mean_fibre_stretch [-]", "mean_contractile_stretch [-]"});
 }
 
 std::vector<std::pair<std::string, Eigen::Vector3d>> StepRecorder::pointDisplacements(const std::vector<double> &u) const {

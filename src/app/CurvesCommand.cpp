@@ -51,16 +51,16 @@ std::vector<fs::path> writeCurveTables(const fs::path &directory) {
 
   std::vector<fs::path> written;
   written.push_back(writeTable(directory / "force_length.csv",
-                               "lambda_c,f_cL_physiological,f_cL_paper_table_II",
+                               "lambda_c [-],f_cL_physiological [-],f_cL_paper_table_II [-]",
                                grid(300, 5, 381, 1000.0),  // 0.3 .. 2.2
                                {[&](double l) { return phys.forceLength->evaluate(l).value; },
                                 [&](double l) { return paper.forceLength->evaluate(l).value; }}));
   written.push_back(writeTable(directory / "force_velocity.csv",
-                               "lambda_c_rate,f_cV_physiological,f_cV_paper_table_II",
+                               "lambda_c_rate [1/s],f_cV_physiological [-],f_cV_paper_table_II [-]",
                                grid(-1200, 5, 481, 100.0),  // -12 .. 12 1/s
                                {[&](double v) { return phys.forceVelocity->evaluate(v).value; },
                                 [&](double v) { return paper.forceVelocity->evaluate(v).value; }}));
-  written.push_back(writeTable(directory / "passive_series.csv", "lambda,f_p,f_s",
+  written.push_back(writeTable(directory / "passive_series.csv", "lambda [-],f_p [-],f_s [-]",
                                grid(800, 2, 401, 1000.0),  // 0.8 .. 1.6
                                {[&](double l) { return parallel.evaluate(l).T / T0max; },
                                 // lambda_c = 1: lambda_s = lambda_f = lambda (eq. 13)

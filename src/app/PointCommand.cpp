@@ -129,12 +129,13 @@ int runPointDriver(const io::Deck &deck, const std::filesystem::path &csv) {
   if (csv.has_parent_path()) std::filesystem::create_directories(csv.parent_path());
   std::ofstream out(csv);
   if (!out) throw std::runtime_error("cannot write " + csv.string());
-  out << "time,path_parameter,energy,sigma_xx,sigma_yy,sigma_zz,sigma_xy,sigma_yz,sigma_xz,axial_stress";
+  out << "time [s],path_parameter [-],energy [J/m^3],sigma_xx [Pa],sigma_yy [Pa],sigma_zz [Pa],sigma_xy [Pa],"
+         "sigma_yz [Pa],sigma_xz [Pa],axial_stress [Pa]";
   for (int f = 0; f < families; ++f) {
     const auto &name = muscles.regions[region].familyNames[f];
-    out << ",lambda_f_" << name << ",lambda_c_" << name << ",T_" << name;
+    out << ",lambda_f_" << name << " [-],lambda_c_" << name << " [-],T_" << name << " [Pa]";
   }
-  for (const auto &g : muscles.groups) out << ",alpha_" << g.name;
+  for (const auto &g : muscles.groups) out << ",alpha_" << g.name << " [-]";
   out << '\n';
 
   // Two unit vectors orthogonal to e, for the axial stress.

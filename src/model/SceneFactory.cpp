@@ -17,6 +17,7 @@
 #include "mesh/MeshRefinement.hpp"
 #include "mesh/ReferenceCoordinates.hpp"
 #include "mesh/ThickCylinderGenerator.hpp"
+#include "mesh/ThickSphereGenerator.hpp"
 #include "model/DeckSets.hpp"
 #include "model/MaterialFactory.hpp"
 #include "model/SceneChecks.hpp"
@@ -32,7 +33,7 @@ Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 ParameterList meshParameters() {
   ParameterList p;
   io::declareString(p, "type", "box", "a built-in generator, or file (doc/meshes.md)",
-                    {"box", "cook-membrane", "thick cylinder", "file"});
+                    {"box", "cook-membrane", "thick cylinder", "thick sphere", "file"});
   io::declareString(p, "partitioner", "auto",
                     "how elements are shared out among MPI ranks: auto (Zoltan2 multijagged for a mesh file, "
                     "the built-in coordinate bisection for the generated meshes), or named",
@@ -80,6 +81,15 @@ ParameterList meshParameters() {
   io::declareDouble(cylinder, "height", 0.25e-3, "m", "extent along z", io::Range::positive());
   io::declareIntArray(cylinder, "cells", Array<int>(std::vector<int>{8, 8, 1}), "radial, circumferential, axial", 3,
                       io::Range::closed(1, 1000));
+  ParameterList &sphere = p.sublist("Thick sphere", false,
+                                    "an octant (x, y, z >= 0) of a thick-walled spherical shell (type = thick "
+                                    "sphere), three cubed-sphere patches of equal angles; sets inner, outer, "
+                                    "x0, y0, z0; named points inner, outer on the x axis");
+  io::declareDouble(sphere, "inner radius", 1e-3, "m", "", io::Range::positive());
+  io::declareDouble(sphere, "outer radius", 2e-3, "m", "", io::Range::positive());
+  io::declareInt(sphere, "radial cells", 4, "element layers through the wall", io::Range::closed(1, 1000));
+  io::declareInt(sphere, "cells per patch side", 4, "elements along each edge of each of the three patches "
+                 "(3 n^2 per layer)", io::Range::closed(1, 1000));
   ParameterList &faces = p.sublist("Face sets", false,
                                    "derived face sets: the faces of an existing set (or of the whole "
                                    "boundary) whose centroid lies in a box and whose outward normal "
@@ -228,6 +238,10 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
       const auto &n = c.get<Array<int>>("cells");
       m = mesh::generateThickCylinder(c.get<double>("inner radius"), c.get<double>("outer radius"),
                                       c.get<double>("height"), {n[0], n[1], n[2]});
+    } else if (p.get<std::string>("type") == "thick sphere") {
+      const auto &c = p.sublist("Thick sphere");
+      m = mesh::generateThickSphere(c.get<double>("inner radius"), c.get<double>("outer radius"),
+                                    c.get<int>("radial cells"), c.get<int>("cells per patch side"));
     } else {
       const auto &c = p.sublist("Cook membrane");
       m = mesh::generateCookMembrane(c.get<int>("cells per side"), c.get<int>("cells through thickness"),

@@ -65,6 +65,30 @@ inline std::vector<TraceRow> readTraces(const std::filesystem::path &file) {
   return rows;
 }
 
+// A KeyedCsvWriter file (volumes.csv, resultants.csv, reactions.csv): per key, its rows
+// (time, values) in file order.
+struct KeyedRow {
+  double time;
+  std::vector<double> values;
+};
+inline std::map<std::string, std::vector<KeyedRow>> readKeyedCsv(const std::filesystem::path &file) {
+  std::ifstream in(file);
+  EXPECT_TRUE(in.good()) << "cannot read " << file;
+  std::string line;
+  std::getline(in, line); // header
+  std::map<std::string, std::vector<KeyedRow>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::string cell, key;
+    std::getline(s, cell, ',');
+    KeyedRow r{std::stod(cell), {}};
+    std::getline(s, key, ',');
+    while (std::getline(s, cell, ',')) r.values.push_back(std::stod(cell));
+    rows[key].push_back(r);
+  }
+  return rows;
+}
+
 // The largest displacement magnitude of `point` over a stored trace file.
 inline double peakDisplacement(const std::filesystem::path &file, const std::string &point) {
   double peak = 0.0;

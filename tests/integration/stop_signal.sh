@@ -29,7 +29,7 @@ assert s["running"] is False, "summary.json still says running"
 assert s["interrupted"] == signal, s.get("interrupted")
 assert s["converged"] is False
 assert ("interrupted by " + signal) in s["failure"], s["failure"]
-times = sorted({float(r["time"]) for r in csv.DictReader(open(out + "/traces.csv"))})
+times = sorted({float(r["time [s]"]) for r in csv.DictReader(open(out + "/traces.csv"))})
 last = s["steps"][-1]["time"]
 assert abs(times[-1] - last) <= 1e-12 * max(1.0, abs(last)), f"traces.csv ends at {times[-1]}, summary.json at {last}"
 if not command.endswith("mpiexec"):

@@ -62,7 +62,7 @@ std::map<double, ActivationRow> activation(const std::filesystem::path &dir) {
   std::ifstream in(dir / "activation.csv");
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "time,group,u,alpha,ffmr,mean_fibre_stretch,mean_contractile_stretch");
+  EXPECT_EQ(line, "time [s],group,u [-],alpha [-],ffmr [-],mean_fibre_stretch [-],mean_contractile_stretch [-]");
   std::map<double, ActivationRow> rows;
   while (std::getline(in, line)) {
     for (char &c : line)

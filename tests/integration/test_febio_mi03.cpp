@@ -24,28 +24,6 @@ TEST(FebioMi03, LateralStretchAndVolumeRatioMatchFebio) {
   EXPECT_NEAR(0.2 * lateral * lateral, 0.40136462, 1e-6);
 }
 
-namespace {
-// Rows "time,face_set,value..." of a KeyedCsvWriter file at the last time.
-std::map<std::string, std::vector<double>> lastRows(const std::filesystem::path &file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::pair<std::string, std::vector<double>>> rows;
-  while (std::getline(in, line)) {
-    std::stringstream s(line);
-    std::string cell, name;
-    std::getline(s, cell, ',');
-    std::getline(s, name, ',');
-    std::vector<double> v;
-    while (std::getline(s, cell, ',')) v.push_back(std::stod(cell));
-    rows.emplace_back(name, v);
-  }
-  std::map<std::string, std::vector<double>> last;
-  for (const auto &[name, v] : rows) last[name] = v; // later rows replace earlier ones
-  return last;
-}
-} // namespace
-
 // The volume enclosed by the whole boundary is the body's, J V0 = 0.40136462 (FEBio's J), and
 // the resultant on a face set with a Dirichlet condition is that condition's reaction: the
 // compressed face z = 1 and the fixed plane z = 0 carry opposite forces (no body force).
@@ -53,13 +31,13 @@ TEST(FebioMi03, EnclosedVolumeAndFaceResultants) {
   const auto output = test::scratchDirectory("febio_mi03_outputs");
   const auto s = test::runDeck(test::inputPath("verification/febio_mi03.xml"), {}, output);
   ASSERT_TRUE(s.at("converged").get<bool>());
-  const auto volumes = lastRows(output / "volumes.csv");
+  const auto volumes = test::readKeyedCsv(output / "volumes.csv");
   ASSERT_EQ(volumes.count("boundary"), 1u);
-  EXPECT_NEAR(volumes.at("boundary")[0], 0.40136462, 1e-6);
-  const auto resultants = lastRows(output / "resultants.csv");
+  EXPECT_NEAR(volumes.at("boundary").back().values[0], 0.40136462, 1e-6);
+  const auto resultants = test::readKeyedCsv(output / "resultants.csv");
   const auto reactions = s.at("steps").back().at("reactions");
   const auto compression = reactions.at("compression").get<std::vector<double>>();
-  const auto zmax = resultants.at("zmax"), zmin = resultants.at("zmin");
+  const auto zmax = resultants.at("zmax").back().values, zmin = resultants.at("zmin").back().values;
   ASSERT_GT(std::abs(compression[2]), 1e-2); // a real force (moduli of order 1-100, 80 % compression)
   EXPECT_NEAR(zmax[2], compression[2], 1e-12 * std::abs(compression[2]));
   EXPECT_NEAR(zmin[2], -zmax[2], 1e-9 * std::abs(zmax[2]));

@@ -33,7 +33,8 @@ Table runPoint(const std::vector<std::string> &overrides, const std::string &tag
   std::getline(in, line);
   std::vector<std::string> names;
   std::stringstream header(line);
-  for (std::string c; std::getline(header, c, ',');) names.push_back(c);
+  // Columns are "name [unit]"; the table is keyed by the name.
+  for (std::string c; std::getline(header, c, ',');) names.push_back(c.substr(0, c.find(" [")));
   Table table;
   while (std::getline(in, line)) {
     std::stringstream s(line);

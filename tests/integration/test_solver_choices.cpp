@@ -19,8 +19,8 @@ double topCentre(const nlohmann::json &summary) {
 
 TEST(SolverChoices, MueLuIfpack2AndDirectAgree) {
   const std::string deck = test::inputPath("verification/step44_block.xml");
-  for (const std::string &choice : {"Linear solver/preconditioner=MueLu", "Linear solver/preconditioner=Ifpack2",
-                                    "Linear solver/type=direct"}) {
+  for (const char *choice : {"Linear solver/preconditioner=MueLu", "Linear solver/preconditioner=Ifpack2",
+                             "Linear solver/type=direct"}) {
     const auto s = test::runDeck(deck, {"Mesh/Box/cells=4,4,4", choice}, test::scratchDirectory("choice"));
     ASSERT_TRUE(s.at("converged").get<bool>()) << choice;
     EXPECT_NEAR(topCentre(s), kDealII4, 1e-5 * std::abs(kDealII4)) << choice;

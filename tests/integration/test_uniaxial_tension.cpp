@@ -91,22 +91,8 @@ TEST(UniaxialTension, ProbeAndFaceResultants) {
   EXPECT_NEAR(inside[1], lateral * 0.61e-3, 1e-12);
   EXPECT_NEAR(inside[2], lateral * 0.23e-3, 1e-12);
   // resultants.csv, last row per face set.
-  std::ifstream in(output / "resultants.csv");
-  std::string line, header;
-  std::getline(in, header);
-  std::map<std::string, std::array<double, 3>> last;
-  while (std::getline(in, line)) {
-    std::stringstream row(line);
-    std::string cell, name;
-    std::getline(row, cell, ',');
-    std::getline(row, name, ',');
-    std::array<double, 3> f{};
-    for (double &v : f) {
-      std::getline(row, cell, ',');
-      v = std::stod(cell);
-    }
-    last[name] = f;
-  }
+  std::map<std::string, std::vector<double>> last;
+  for (const auto &[name, rows] : test::readKeyedCsv(output / "resultants.csv")) last[name] = rows.back().values;
   const double load = 1000.0 * L * L; // P11 times the reference area of the x = 1 mm face
   EXPECT_NEAR(last.at("xmax")[0], load, 1e-9 * load);
   EXPECT_NEAR(last.at("xmin")[0], -load, 1e-6 * load);

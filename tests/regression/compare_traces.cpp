@@ -27,8 +27,15 @@ Trace read(const std::string &file) {
   if (!in) throw std::runtime_error("cannot read " + file);
   std::string line;
   std::getline(in, line);
-  // The reference's first five columns; later columns (dx, dy, dz) are not compared here.
-  if (line.rfind("time,point,ux,uy,uz", 0) != 0) throw std::runtime_error(file + ": not a traces.csv (header '" + line + "')");
+  // The reference's first five columns; later columns (dx, dy, dz) are not compared here. Column
+  // names carry their unit ("ux [m]"); traces written before the units were added have none.
+  std::string names;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (line.compare(i, 2, " [") == 0) i = line.find(']', i);
+    else names += line[i];
+    if (i == std::string::npos) break;
+  }
+  if (names.rfind("time,point,ux,uy,uz", 0) != 0) throw std::runtime_error(file + ": not a traces.csv (header '" + line + "')");
   Trace t;
   for (int n = 2; std::getline(in, line); ++n) {
     std::stringstream s(line);

@@ -12,7 +12,7 @@ KeyedCsvWriter::KeyedCsvWriter(const std::filesystem::path &file, const std::str
     : file_(file), keyColumn_(keyColumn), width_(valueColumns.size()) {
   if (file_.has_parent_path()) std::filesystem::create_directories(file_.parent_path());
   out_.open(file_, std::ios::out | std::ios::trunc);
-  std::string header = "time," + keyColumn;
+  std::string header = "time [s]," + keyColumn;
   for (const auto &c : valueColumns) header += ',' + c;
   out_ << header << '\n' << std::flush;
   if (!out_) throw OutputError("cannot write " + file_.string());

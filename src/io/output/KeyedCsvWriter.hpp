@@ -1,5 +1,5 @@
 #pragma once
-// A CSV time series keyed by name: "time,<key>,<value columns...>", one row per key per call
+// A CSV time series keyed by name: "time [s],<key>,<value columns...>", one row per key per call
 // (traces.csv keys by point, activation.csv by muscle group). Numbers with 17 significant digits
 // (they read back bit-exactly, which the regression suite relies on). Rank 0 writes.
 //
@@ -17,7 +17,8 @@ namespace glossa::io {
 
 class KeyedCsvWriter {
 public:
-  // Creates (or empties) `file` and writes the header "time,<keyColumn>,<valueColumns>"; creates
+  // Creates (or empties) `file` and writes the header "time [s],<keyColumn>,<valueColumns>"
+  // (value columns named with their unit, "ux [m]"); creates
   // the parent directory if missing. Throws std::runtime_error if the file cannot be written.
   KeyedCsvWriter(const std::filesystem::path &file, const std::string &keyColumn,
                  const std::vector<std::string> &valueColumns);

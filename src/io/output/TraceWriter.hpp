@@ -1,7 +1,7 @@
 #pragma once
-// traces.csv: the displacement of named points over time, "time,point,ux,uy,uz,dx,dy,dz", one
-// row per point per call (a KeyedCsvWriter: round-trip numbers, each call's rows on disk when it
-// returns). u is the displacement from the reference configuration; d = x - X_img the offset of
+// traces.csv: the displacement of named points over time, "time [s],point,ux [m],uy [m],uz [m],
+// dx [m],dy [m],dz [m]", one row per point per call (a KeyedCsvWriter: round-trip numbers, each
+// call's rows on disk when it returns). u is the displacement from the reference configuration; d = x - X_img the offset of
 // the current position from the point's imaged position, which differs from u only when a
 // zero-strain configuration replaced the imaged one (§8.1): it is the controlled runs' goal, so
 // passive and controlled runs compare directly whatever their reference configuration.
@@ -22,7 +22,7 @@ public:
   // Creates (or empties) `file` and writes the header; creates the parent directory if missing.
   // Throws std::runtime_error if the file cannot be written.
   explicit TraceWriter(const std::filesystem::path &file)
-      : csv_(file, "point", {"ux", "uy", "uz", "dx", "dy", "dz"}) {}
+      : csv_(file, "point", {"ux [m]", "uy [m]", "uz [m]", "dx [m]", "dy [m]", "dz [m]"}) {}
 
   struct Point {
     std::string name;

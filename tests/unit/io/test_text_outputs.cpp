@@ -60,7 +60,7 @@ TEST(TraceWriter, RowsRoundTripExactlyAndAreOnDiskAfterEachCall) {
       {"tip", {1e-17, std::nextafter(1.0, 2.0), -0.0}}, {"corner_A", {123456789.123456789, 0.0, 5e-324}}};
 
   TraceWriter traces(file);
-  EXPECT_EQ(lines(file), std::vector<std::string>{"time,point,ux,uy,uz,dx,dy,dz"});
+  EXPECT_EQ(lines(file), std::vector<std::string>{"time [s],point,ux [m],uy [m],uz [m],dx [m],dy [m],dz [m]"});
   traces.append(0.1, first);
   EXPECT_EQ(parseTraces(file).size(), 2u); // flushed: readable while the writer is alive
   traces.append(2.0 / 3.0, second);
