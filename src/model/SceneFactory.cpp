@@ -477,6 +477,9 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     if (std::find(scene.tracedPoints.begin(), scene.tracedPoints.end(), name) == scene.tracedPoints.end())
       scene.tracedPoints.push_back(name);
   }
+  if (scene.tracedPoints.empty())
+    scene.meshNotes.push_back("no named points: traces.csv and final_displacement will be empty; name points "
+                              "in the deck's 'Named points' (any position inside the mesh) to trace them");
   replaceReferenceCoordinates(deck, m);
   // External muscles keep their bony origins; their insertions are the nodes' reference positions.
   for (auto &muscle : scene.muscles.external)
