@@ -438,8 +438,22 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
   model_->setLambda(nullptr);
   // The history at the converged state: lambda_c of every point with this step's activation.
   if (out.uzawa.converged) out.muscle = assembler_->updateMuscleHistory(state.u);
-  out.ok = out.uzawa.converged && out.muscle.valid;
-  if (!out.ok) {
+  // A converged state can still be inside out where the Gauss points cannot see it: an element
+  // whose corner turned over (past a limit point Newton may land on such a state with every
+  // Gauss-point J positive). It is refused like a failed solve, so the step is cut back.
+  bool turnedOver = false;
+  if (out.uzawa.converged) {
+    const auto worst = assembler_->worstCorner(state.u);
+    if (!(worst.J > 0.0)) {
+      turnedOver = true;
+      char detF[32];
+      std::snprintf(detF, sizeof detF, "%.3g", worst.J);
+      out.why = "element " + std::to_string(worst.element) + " turned inside out at a corner (det F = " + detF +
+                ") although Newton converged";
+    }
+  }
+  out.ok = out.uzawa.converged && out.muscle.valid && !turnedOver;
+  if (!out.ok && !turnedOver) {
     const UzawaResult &r = out.uzawa;
     const NewtonResult &last = r.newton.back();
     out.why = !out.muscle.valid ? "a contractile-stretch solve failed at the converged state"

@@ -305,6 +305,26 @@ ElementFields Assembler::elementFields(const Vector &u, const std::vector<double
   return out;
 }
 
+Assembler::WorstCorner Assembler::worstCorner(const Vector &u) const {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  Vector uOverlap(overlapMap_);
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  WorstCorner local{std::numeric_limits<double>::infinity(), std::numeric_limits<mesh::ElementId>::max()};
+  for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+    const auto e = layout_.localElements[i];
+    const double J = fem::minCornerJacobian(mesh.elementCoordinates(e), elementDisplacement(i, uData));
+    if (J < local.J || (J == local.J && e < local.element)) local = {J, e};
+  }
+  WorstCorner global{0.0, 0};
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, local.J, Teuchos::outArg(global.J));
+  const long long mine = local.J == global.J ? static_cast<long long>(local.element) : std::numeric_limits<long long>::max();
+  long long element = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(element));
+  global.element = static_cast<mesh::ElementId>(element);
+  return global;
+}
+
 void Assembler::scatterLoadBlock(const mesh::NodeId *nodes, int n, const double *f, const double *df,
                                  Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo) const {
   std::array<GO, 12> gids{};

@@ -101,6 +101,14 @@ public:
   // Element dilatation, pressure, stress, min J (local elements). Collective (imports u).
   ElementFields elementFields(const Vector &u, const std::vector<double> &lambda) const;
 
+  // The element of the whole mesh with the smallest corner det F at u (fem::minCornerJacobian),
+  // for the check after each converged step that Gauss-point J cannot make. Collective.
+  struct WorstCorner {
+    double J;
+    mesh::ElementId element; // lowest id among equals
+  };
+  WorstCorner worstCorner(const Vector &u) const;
+
   // The muscle history (activation per group, lambda_c per point) of this rank's elements: the
   // caller begins each step and commits it once converged; assembly reads its trial activation
   // and committed lambda_c.

@@ -1,5 +1,8 @@
 #include "fem/HexShape.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include <cmath>
 
 namespace glossa::fem {
@@ -48,6 +51,18 @@ bool hexGradients(const NodeMatrix &X, const Eigen::Vector3d &xi,
   if (!(detJ > 0.0)) return false;
   dNdX = dNdxi * jac.inverse();
   return true;
+}
+
+double minCornerJacobian(const NodeMatrix &X, const NodeMatrix &u) {
+  const NodeMatrix x = X + u;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 8; ++a) {
+    const Eigen::Matrix<double, 8, 3> dNdxi = hexShapeGradient(hexNodeXi(a));
+    const double reference = (X.transpose() * dNdxi).determinant();
+    if (!(reference > 0.0)) return -std::numeric_limits<double>::infinity();
+    smallest = std::min(smallest, (x.transpose() * dNdxi).determinant() / reference);
+  }
+  return smallest;
 }
 
 } // namespace glossa::fem

@@ -33,4 +33,10 @@ Eigen::Vector3d hexNodeXi(int a);
 bool hexGradients(const NodeMatrix &X, const Eigen::Vector3d &xi,
                   Eigen::Matrix<double, 8, 3> &dNdX, double &detJ);
 
+// The smallest det F = det(dx/dxi) / det(dX/dxi) at the eight corners of the element, x = X + u:
+// the check the Gauss points cannot make. An element folded through itself can keep J > 0 at
+// all eight Gauss points while a corner has turned over (a node pushed past the opposite face).
+// -infinity for a degenerate reference corner.
+double minCornerJacobian(const NodeMatrix &X, const NodeMatrix &u);
+
 } // namespace glossa::fem

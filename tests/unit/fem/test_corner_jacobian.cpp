@@ -1,0 +1,62 @@
+// minCornerJacobian: det F at the corners, the inside-out check after a converged step. An
+// element folded through itself (a corner node pushed to the element's centre) keeps det F > 0
+// at all eight Gauss points, so only the corners show that it turned over.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+
+#include <Eigen/LU>
+
+#include "fem/HexShape.hpp"
+
+namespace glossa::fem {
+namespace {
+
+NodeMatrix unitCube() {
+  NodeMatrix X;
+  for (int a = 0; a < 8; ++a) X.row(a) = 0.5 * (hexNodeXi(a).array() + 1.0).matrix().transpose();
+  return X;
+}
+
+double minGaussJacobian(const NodeMatrix &X, const NodeMatrix &u) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto &q : gaussHex2()) {
+    Eigen::Matrix<double, 8, 3> dNdX;
+    double detJ0 = 0.0;
+    EXPECT_TRUE(hexGradients(X, q.xi, dNdX, detJ0));
+    smallest = std::min(smallest, (Eigen::Matrix3d::Identity() + u.transpose() * dNdX).determinant());
+  }
+  return smallest;
+}
+
+TEST(CornerJacobian, AffineMapsGiveTheirDeterminantEverywhere) {
+  const NodeMatrix X = unitCube();
+  Eigen::Matrix3d A;
+  A << 1.2, 0.3, 0.0, //
+      -0.1, 0.9, 0.2, //
+      0.0, 0.4, 1.1;
+  const NodeMatrix u = X * (A - Eigen::Matrix3d::Identity()).transpose();
+  EXPECT_NEAR(minCornerJacobian(X, u), A.determinant(), 1e-14);
+  EXPECT_NEAR(minCornerJacobian(X, NodeMatrix::Zero()), 1.0, 1e-15);
+}
+
+TEST(CornerJacobian, AnElementFoldedThroughItselfIsSeenAtTheCorners) {
+  const NodeMatrix X = unitCube();
+  NodeMatrix u = NodeMatrix::Zero();
+  u.row(6) = Eigen::RowVector3d(0.5, 0.5, 0.5) - X.row(6); // node (1, 1, 1) to the centre
+  // Closed forms for this fold: the Gauss points' smallest det F is (2 - sqrt 3)/4 > 0, the corner
+  // at the moved node has det F = -1/2.
+  EXPECT_NEAR(minGaussJacobian(X, u), 0.066987298107780, 1e-12);
+  EXPECT_NEAR(minCornerJacobian(X, u), -0.5, 1e-14);
+}
+
+TEST(CornerJacobian, DegenerateReferenceIsMinusInfinity) {
+  NodeMatrix X = unitCube();
+  X.row(6) = X.row(0); // collapsed
+  EXPECT_EQ(minCornerJacobian(X, NodeMatrix::Zero()), -std::numeric_limits<double>::infinity());
+}
+
+} // namespace
+} // namespace glossa::fem
