@@ -146,6 +146,8 @@ struct Simulation::Attempt {
   assembly::MuscleFields muscle;
   bool ok = false;
   std::string why;
+  double minCornerJ = 1.0;       // the smallest corner det F of the converged state
+  mesh::ElementId cornerElement = 0; // where
 };
 
 struct Simulation::Trial {
@@ -438,22 +440,18 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
   model_->setLambda(nullptr);
   // The history at the converged state: lambda_c of every point with this step's activation.
   if (out.uzawa.converged) out.muscle = assembler_->updateMuscleHistory(state.u);
-  // A converged state can still be inside out where the Gauss points cannot see it: an element
-  // whose corner turned over (past a limit point Newton may land on such a state with every
-  // Gauss-point J positive). It is refused like a failed solve, so the step is cut back.
-  bool turnedOver = false;
+  // What the Gauss points cannot see: the smallest det F at the elements' corners. Reported per
+  // step (summary.json, and a note when a corner has turned over), not yet refused: the tongue's
+  // poorly shaped hexahedra turn corners over slightly (det F of -1e-9 to -5e-4) in runs whose
+  // Gauss points and answers are sound, so the rule that tells those from an element inside out
+  // as a whole is still to be set (issue 17).
   if (out.uzawa.converged) {
     const auto worst = assembler_->worstCorner(state.u);
-    if (!(worst.J > 0.0)) {
-      turnedOver = true;
-      char detF[32];
-      std::snprintf(detF, sizeof detF, "%.3g", worst.J);
-      out.why = "element " + std::to_string(worst.element) + " turned inside out at a corner (det F = " + detF +
-                ") although Newton converged";
-    }
+    out.minCornerJ = worst.J;
+    out.cornerElement = worst.element;
   }
-  out.ok = out.uzawa.converged && out.muscle.valid && !turnedOver;
-  if (!out.ok && !turnedOver) {
+  out.ok = out.uzawa.converged && out.muscle.valid;
+  if (!out.ok) {
     const UzawaResult &r = out.uzawa;
     const NewtonResult &last = r.newton.back();
     out.why = !out.muscle.valid ? "a contractile-stretch solve failed at the converged state"
@@ -562,6 +560,10 @@ void Simulation::record(const Trial &trial) {
   step["max_dilatation_error"] = r.dilatation.max;
   step["mean_dilatation_error"] = r.dilatation.mean;
   step["max_volume_change"] = r.dilatation.maxVolumeChange;
+  step["min_corner_J"] = trial.attempt.minCornerJ;
+  if (!(trial.attempt.minCornerJ > 0.0) && talk_)
+    std::printf("  note: element %lld has a corner turned over at t = %.6g (det F = %.3g there; its Gauss points are "
+                "not inverted)\n", static_cast<long long>(trial.attempt.cornerElement), t_, trial.attempt.minCornerJ);
   step["seconds"] = since(trial.start);
   step["assembly_seconds"] = model_->assemblySeconds() - trial.assemblyAtStart;
   nlohmann::json histories = nlohmann::json::array();
