@@ -1,7 +1,9 @@
 #include "solvers/Simulation.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sys/resource.h>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -21,8 +23,10 @@
 #include "solvers/ControlDriver.hpp"
 #include "solvers/ControlSection.hpp"
 #include "solvers/ControlSensitivity.hpp"
+#include "solvers/LimitPointMonitor.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/NewtonSolver.hpp"
+#include "solvers/PathStiffness.hpp"
 #include "solvers/StepRecorder.hpp"
 #include "solvers/StopSignals.hpp"
 #include "solvers/TimeStepping.hpp"
@@ -99,6 +103,18 @@ void prepareOutputDirectory(const std::filesystem::path &dir) {
     std::filesystem::remove(dir / file);
 }
 
+// The mesh node with the largest |v| (gathered on every rank). Collective.
+std::size_t largestMotionNode(const assembly::Assembler &assembler, const assembly::Vector &v) {
+  const std::vector<double> all = assembler.gatherDisplacement(v);
+  std::size_t best = 0;
+  double largest = -1.0;
+  for (std::size_t n = 0; 3 * n + 2 < all.size(); ++n) {
+    const double m = Eigen::Vector3d(all[3 * n], all[3 * n + 1], all[3 * n + 2]).squaredNorm();
+    if (m > largest) largest = m, best = n;
+  }
+  return best;
+}
+
 } // namespace
 
 void declareSolverParameters(Teuchos::ParameterList &schema) {
@@ -148,6 +164,8 @@ struct Simulation::Attempt {
   std::string why;
   double minCornerJ = 1.0;       // the smallest corner det F of the converged state
   mesh::ElementId cornerElement = 0; // where
+  double pathStiffness = std::numeric_limits<double>::quiet_NaN(); // S (LimitPointMonitor); NaN: not measured
+  bool unstable = false;         // converged, but past a limit point (S <= 0)
 };
 
 struct Simulation::Trial {
@@ -271,9 +289,10 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
       assembler_, mixedPressure.is_null() ? buildLinearSolver(linearSection, context)
                                           : buildMixedBlockSolver(linearSection, context, mixedPressure)));
   model_->setMixedPressure(mixedPressure);
-  double lengthScale = 0.0;
-  for (const auto &x : scene.mesh.nodes) lengthScale = std::max(lengthScale, x.norm());
-  newton_ = std::make_unique<NewtonSolver>(model_, D.sublist("Nonlinear solver"), lengthScale,
+  for (const auto &x : scene.mesh.nodes) lengthScale_ = std::max(lengthScale_, x.norm());
+  if (mixedPressure.is_null() && D.sublist("Time").get<std::string>("at a limit point") == "stop")
+    limit_ = std::make_unique<LimitPointMonitor>(steps_->nominalStep(), D.sublist("Time").get<double>("limit point tolerance"));
+  newton_ = std::make_unique<NewtonSolver>(model_, D.sublist("Nonlinear solver"), lengthScale_,
                                            linearSection.get<double>("tolerance"),
                                            linearSection.get<std::string>("MueLu reuse scope") == "run");
   uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility, physicalVolumetric);
@@ -492,8 +511,30 @@ bool Simulation::attemptStep() {
   if (detail_) std::printf("step %d  t = %.6g  dt = %.3g\n", stepNumber_ + 1, trial_->time, dt);
   if (driver_) controlledStep(*trial_);
   else trial_->attempt = solveStep(trial_->time, dt, trial_->state, false);
+  if (trial_->attempt.ok && limit_) checkPathStiffness(*trial_);
   return trial_->attempt.ok;
 }
+
+void Simulation::checkPathStiffness(Trial &trial) {
+  model_->setTime(trial.time);
+  model_->setLambda(&trial.state.lambda);
+  const PathStiffness measured =
+      pathStiffness(*assembler_, *newton_, trial.state.u, trial.time, trial.dt, trial.state.lambda);
+  model_->setLambda(nullptr);
+  if (!measured.note.empty() && talk_)
+    std::printf("  note: the stiffness along the path at t = %.6g was not measured: %s\n", trial.time, measured.note.c_str());
+  Attempt &a = trial.attempt;
+  a.pathStiffness = limit_->relativeStiffness(measured.stiffness);
+  if (!LimitPointMonitor::beyond(a.pathStiffness)) return;
+  a.ok = false;
+  a.unstable = true;
+  char why[200];
+  std::snprintf(why, sizeof why,
+                "the converged state is past a limit point (the tangent's stiffness along the path is %.3g of the "
+                "first step's: an unstable equilibrium)", a.pathStiffness);
+  a.why = why;
+}
+
 
 void Simulation::controlledStep(Trial &trial) {
   trial.control = driver_->step(stepNumber_, committedStretch_);
@@ -507,7 +548,22 @@ void Simulation::controlledStep(Trial &trial) {
 bool Simulation::rollBack() {
   const std::string &why = trial_->attempt.why;
   if (talk_) std::printf("  step failed at t = %.6g: %s; cutting back\n", trial_->time, why.c_str());
-  if (steps_->cutBack()) return true;
+  if (limit_) {
+    // Where it moves most: along the unstable step, or (Newton found nothing) in all so far.
+    assembly::Vector motion(trial_->state.u, Teuchos::Copy);
+    if (trial_->attempt.unstable) motion.update(-1.0, committed_->u, 1.0);
+    else motion.assign(committed_->u);
+    limit_->refused(t_, trial_->time, trial_->attempt.unstable, largestMotionNode(*assembler_, motion));
+  }
+  const bool stepLeft = steps_->cutBack();
+  if (limit_ && (limit_->located(steps_->stepSize()) || (!stepLeft && limit_->located(0.0)))) {
+    const Eigen::Vector3d x = scene_->mesh.nodes[limit_->node()];
+    failure_ = limit_->description(x);
+    doc_["limit_point"] = limit_->record(x);
+    converged_ = false;
+    return false;
+  }
+  if (stepLeft) return true;
   failure_ = "step to t = " + std::to_string(trial_->time) + " failed (" + why + ") below the minimum step size";
   converged_ = false;
   return false;
@@ -523,6 +579,13 @@ void Simulation::commitTrial() {
   t_ = trial.time;
   ++stepNumber_;
   steps_->accept();
+  if (limit_) {
+    limit_->accepted(t_, trial.attempt.pathStiffness);
+    if (trial.attempt.pathStiffness < LimitPointMonitor::kSoftened && !softeningSaid_ && talk_)
+      std::printf("  note: the load path has softened: the tangent's stiffness along the path is %.3g of the first "
+                  "step's (a limit point may be near)\n", trial.attempt.pathStiffness);
+    softeningSaid_ = softeningSaid_ || trial.attempt.pathStiffness < LimitPointMonitor::kSoftened;
+  }
   // The muscle history is committed after the output, whose stresses are those of the converged
   // state: this step's activation with the committed lambda_c it was solved with.
   std::unique_lock<std::recursive_mutex> output(summaryMutex_);
@@ -561,6 +624,7 @@ void Simulation::record(const Trial &trial) {
   step["mean_dilatation_error"] = r.dilatation.mean;
   step["max_volume_change"] = r.dilatation.maxVolumeChange;
   step["min_corner_J"] = trial.attempt.minCornerJ;
+  if (std::isfinite(trial.attempt.pathStiffness)) step["path_stiffness"] = trial.attempt.pathStiffness;
   if (!(trial.attempt.minCornerJ > 0.0) && talk_)
     std::printf("  note: element %lld has a corner turned over at t = %.6g (det F = %.3g there; its Gauss points are "
                 "not inverted)\n", static_cast<long long>(trial.attempt.cornerElement), t_, trial.attempt.minCornerJ);

@@ -36,6 +36,7 @@ namespace glossa::solvers {
 
 class CommControlGroups;
 class ControlDriver;
+class LimitPointMonitor;
 class NewtonSolver;
 class StepRecorder;
 class StepSizeController;
@@ -94,6 +95,9 @@ private:
   // entry); the muscle history's trial values are this step's. `quiet`: no per-iteration output
   // (a controller's candidates).
   Attempt solveStep(double time, double dt, StepState &state, bool quiet);
+  // The limit-point check of a converged trial (LimitPointMonitor): its stiffness along the step,
+  // and the trial refused when that is negative.
+  void checkPathStiffness(Trial &trial);
   void applyControlInputs(const std::vector<double> &inputs);
   void controlledStep(Trial &trial);
   // The control points' displacement (one column per point), gathered from every rank.
@@ -116,6 +120,10 @@ private:
   std::string controlLine_; // the last control step's summary, for its step's line
 
   std::unique_ptr<StepSizeController> steps_;
+  // Time/at a limit point = stop (not with the mixed method): the stiffness along each step.
+  std::unique_ptr<LimitPointMonitor> limit_;
+  double lengthScale_ = 0.0;  // the largest |X| of the mesh
+  bool softeningSaid_ = false; // the note that the path has softened, once
   std::unique_ptr<model::Scene> scene_;
   std::unique_ptr<CommControlGroups> groups_;
   Teuchos::RCP<assembly::Assembler> assembler_;

@@ -21,6 +21,18 @@ Teuchos::ParameterList timeParameters() {
                     "on the breathing tongue, +10 % Newton iterations, and on the step-44 block, where it "
                     "overshoots into cut-backs: bench/README.md)",
                     {"none", "linear extrapolation"});
+  io::declareString(p, "at a limit point", "stop",
+                    "stop: after each converged step the tangent's stiffness along the load path is measured "
+                    "(one tangent solve; a path driven by activation alone has no load rate and is not "
+                    "measured); a state past a limit point (negative stiffness: an unstable "
+                    "equilibrium, e.g. the far branch of an inflated sphere) is refused, the step is cut back "
+                    "until the limit point is bracketed to the tolerance below, and the run stops naming it "
+                    "(summary.json: limit_point); ignore: no measurement, any converged state is accepted "
+                    "(the mixed method never measures: doc/theory.md)",
+                    {"stop", "ignore"});
+  io::declareDouble(p, "limit point tolerance", 0.01, "",
+                    "a limit point is located once the bracket's step is below this fraction of the nominal "
+                    "step size", io::Range::open(0.0, 1.0));
   return p;
 }
 

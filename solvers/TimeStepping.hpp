@@ -22,6 +22,7 @@ public:
   // After a success: grow back (x2 after two successes in a row) up to the nominal step.
   void accept();
   double stepSize() const { return dt_; }
+  double nominalStep() const { return nominal_; }
 
 private:
   double endTime_, nominal_, minimum_, dt_;

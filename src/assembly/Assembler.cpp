@@ -123,6 +123,14 @@ void Assembler::applyDirichlet(Vector &u, double time) const {
   }
 }
 
+void Assembler::zeroConstrainedDofs(Vector &v) const {
+  // Owned dofs are contiguous and in the order of layout_.ownedNodes (3 per node).
+  auto data = v.getDataNonConst(0);
+  for (std::size_t k = 0; k < layout_.ownedNodes.size(); ++k)
+    for (int c = 0; c < 3; ++c)
+      if (constrained_[3 * layout_.ownedNodes[k] + c]) data[3 * k + c] = 0.0;
+}
+
 void Assembler::importToOverlap(const Vector &u, Vector &overlap) const {
   overlap.doImport(u, *importer_, Tpetra::INSERT);
 }

@@ -80,6 +80,8 @@ public:
 
   // Writes the prescribed displacements at time t into u (owned part).
   void applyDirichlet(Vector &u, double time) const;
+  // Zeroes the owned entries of v at the dofs a (non-elastic) Dirichlet condition fixes.
+  void zeroConstrainedDofs(Vector &v) const;
 
   // Residual f = f_int(u; Lambda) - f_ext(t) and, if K is given, the tangent. `lambda` is the
   // augmented Lagrange multiplier per local element. With `bases` (one per local element, Q1-P0

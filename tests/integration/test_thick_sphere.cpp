@@ -63,3 +63,39 @@ TEST(ThickSphere, InflationBelowTheMaximumMatchesTheClosedFormAndKeepsTheBodyVol
   }
   EXPECT_GT(-inner.back().values[0] / -inner.front().values[0], 2.7); // lambda_a^3 = 1.4^3
 }
+
+// Under plain load control past the maximum (p -> 0.9 mu in steps of 0.1, coarse mesh: 192
+// hexahedra): no converged state past it is accepted, and the run stops naming the limit point,
+// bracketed around the closed form's t* = 0.8164 / 0.9 (the mesh's own maximum is within 0.3 %).
+TEST(ThickSphere, PastTheMaximumTheRunStopsNamingTheLimitPoint) {
+  const auto output = test::scratchDirectory("thick_sphere_past_maximum");
+  const auto s = test::runDeck(test::inputPath("verification/thick_sphere.xml"),
+                               {"Loads/inflation/pressure=9000", "Time/step size=0.1", "Mesh/Thick sphere/radial cells=4",
+                                "Mesh/Thick sphere/cells per patch side=4"},
+                               output);
+  EXPECT_FALSE(s.at("converged").get<bool>());
+  ASSERT_TRUE(s.contains("limit_point"));
+  EXPECT_NE(s.at("failure").get<std::string>().find("limit point of the load path"), std::string::npos);
+  const double tStar = 0.8164236 / 0.9, lower = s["limit_point"]["bracket"][0], upper = s["limit_point"]["bracket"][1];
+  EXPECT_LT(upper - lower, 0.01 * 0.1 * 2.0);
+  EXPECT_NEAR(0.5 * (lower + upper) / tStar, 1.0, 3e-3);
+  // Every accepted step is on the near branch: the inner stretch below 1.828, within 1 % of the
+  // closed form up to p = 0.75 mu on this coarse mesh (nearer the maximum the stretch is
+  // ill-conditioned in p, dp/dlambda -> 0: 1.2 % at 0.79875 mu), and the stiffness along the
+  // path positive and falling.
+  double previous = 2.0;
+  for (const auto &step : s.at("steps")) {
+    const double S = step.at("path_stiffness");
+    EXPECT_GT(S, 0.0);
+    EXPECT_LT(S, previous);
+    previous = S;
+  }
+  for (const auto &[t, ux] : test::traceOf(test::readTraces(output / "traces.csv"), "inner", 0)) {
+    if (t == 0.0) continue;
+    EXPECT_LT(1.0 + ux / kA, 1.828) << "t = " << t;
+    if (9000.0 * t <= 0.75 * kMu + 1e-9) {
+      EXPECT_NEAR((1.0 + ux / kA) / closedFormStretch(9000.0 * t), 1.0, 1e-2) << "t = " << t;
+    }
+  }
+  EXPECT_LT(previous, 0.1); // softened: the last accepted step is near the maximum
+}

@@ -1,0 +1,48 @@
+#include "solvers/PathStiffness.hpp"
+
+#include <limits>
+#include <stdexcept>
+
+#include "solvers/LinearSolveFailure.hpp"
+#include "solvers/NewtonSolver.hpp"
+
+namespace glossa::solvers {
+
+PathStiffness pathStiffness(const assembly::Assembler &assembler, const NewtonSolver &newton, const assembly::Vector &u,
+                            double time, double dt, const std::vector<double> &lambda) {
+  PathStiffness out{std::numeric_limits<double>::quiet_NaN(), 0, {}};
+  // df/dt at fixed u: the loads and the prescribed displacements at t -+ h. h small against the
+  // step (a tabulated load is linear between its rows), large against round-off.
+  const double h = 1e-4 * dt;
+  assembly::Vector later(u, Teuchos::Copy), earlier(u, Teuchos::Copy), fLater(u.getMap()), fEarlier(u.getMap());
+  assembler.applyDirichlet(later, time + h);
+  assembler.applyDirichlet(earlier, time - h);
+  const auto status = assembler.assemble(later, time + h, lambda, nullptr, &fLater, nullptr);
+  if (!status.valid || !assembler.assemble(earlier, time - h, lambda, nullptr, &fEarlier, nullptr).valid) {
+    out.note = "a state a little along the path is inverted";
+    return out;
+  }
+  fLater.update(-1.0, fEarlier, 1.0); // 2h df/dt
+  // Loads that do not change with time (gravity held, activation only) give exactly zero here.
+  if (!(fLater.norm2() > 1e-13 * status.forceScale)) return out;
+  assembly::MultiVector rhs(u.getMap(), 1), tangent(u.getMap(), 1);
+  rhs.getVectorNonConst(0)->update(-1.0, fLater, 0.0);
+  try {
+    out.krylovIterations = newton.solveTangent(u, rhs, tangent);
+  } catch (const std::exception &e) {
+    // CG's p^T K p <= 0 is itself a direction along which K is not positive definite.
+    out.note = linearSolveFailure(e.what());
+    if (out.note.find("negative curvature") != std::string::npos) out.stiffness = -std::numeric_limits<double>::infinity();
+    return out;
+  }
+  const auto w = tangent.getVector(0); // 2h du/dt
+  assembly::Vector free(*w, Teuchos::Copy);
+  assembler.zeroConstrainedDofs(free);
+  const double ww = free.dot(free);
+  if (!(ww > 0.0)) return out;
+  // w^T K w = -w^T (2h df/dt) over the free dofs (K's constrained rows are the identity's).
+  out.stiffness = -free.dot(fLater) / ww;
+  return out;
+}
+
+} // namespace glossa::solvers
