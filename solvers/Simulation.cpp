@@ -249,7 +249,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
       solveAtStart_(timerSeconds("NOX Total Linear Solve")), deckFile_(deck.file()), comm_(comm), options_(options),
       root_(comm->getRank() == 0), talk_(root_ && !options.quiet), detail_(talk_ && options.verbose) {
   const auto &D = deck.root();
-  steps_ = std::make_unique<StepSizeController>(D.sublist("Time"));
+  steps_ = std::make_unique<StepSizeController>(stepSizeRule(D.sublist("Time")));
   scene_ = std::make_unique<model::Scene>(model::buildScene(deck, steps_->endTime()));
   model::Scene &scene = *scene_;
   // The summary's kappa/mu figures are the Material section's tissue's (tissues[0]).

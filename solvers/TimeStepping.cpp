@@ -1,7 +1,5 @@
 #include "solvers/TimeStepping.hpp"
 
-#include <algorithm>
-
 #include "io/deck/ParameterSpec.hpp"
 
 namespace glossa::solvers {
@@ -36,27 +34,8 @@ Teuchos::ParameterList timeParameters() {
   return p;
 }
 
-StepSizeController::StepSizeController(const Teuchos::ParameterList &s)
-    : endTime_(s.get<double>("end time")), nominal_(std::min(s.get<double>("step size"), endTime_)),
-      minimum_(s.get<double>("minimum step size")), dt_(nominal_) {}
-
-double StepSizeController::nextStep(double t) const {
-  // Land exactly on the end time instead of leaving a sliver step.
-  const double remaining = endTime_ - t;
-  return remaining < 1.0001 * dt_ ? remaining : dt_;
-}
-
-bool StepSizeController::cutBack() {
-  successes_ = 0;
-  dt_ *= 0.5;
-  return dt_ >= minimum_;
-}
-
-void StepSizeController::accept() {
-  if (++successes_ >= 2 && dt_ < nominal_) {
-    dt_ = std::min(2.0 * dt_, nominal_);
-    successes_ = 0;
-  }
+StepSizeRule stepSizeRule(const Teuchos::ParameterList &s) {
+  return {s.get<double>("end time"), s.get<double>("step size"), s.get<double>("minimum step size")};
 }
 
 } // namespace glossa::solvers
