@@ -296,6 +296,14 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                                            linearSection.get<double>("tolerance"),
                                            linearSection.get<std::string>("MueLu reuse scope") == "run");
   uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility, physicalVolumetric);
+  // A raised kappa_AL reaches the tangent through the tissue's volumetric law (the Assembler's).
+  uzawa_->onKappaRaised([this](std::size_t tissue, double kappaT) {
+    model::Tissue &t = scene_->tissues[tissue];
+    t.volumetric = t.volumetric.withKappa(kappaT);
+    if (talk_)
+      std::printf("  note: the Uzawa loop contracts slowly in tissue '%s': kappa_AL raised to %.3g mu for the rest of "
+                  "the run\n", t.name.c_str(), uzawa_->penaltyRatios()[tissue]);
+  });
 
   // Checked before the output directory is cleared: a bad deck leaves an earlier run intact.
   std::vector<std::vector<std::string>> outputSets;
@@ -378,6 +386,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                         " needs Control/type = genetic algorithm (the candidates it shares out)");
   committedStretch_ = initialMuscle.groupMeanStretch;
   if (!control_->enabled) return;
+  uzawa_->allowKappaRaises(false); // every candidate of a step must see the same kappa_AL
   if (root_)
     controls_ = std::make_unique<io::KeyedCsvWriter>(
         dir_ / "controls.csv", "group", std::vector<std::string>{"u [-]", "evaluated [-]", "objective [m]", "candidates [-]"});
@@ -624,6 +633,7 @@ void Simulation::record(const Trial &trial) {
   step["mean_dilatation_error"] = r.dilatation.mean;
   step["max_volume_change"] = r.dilatation.maxVolumeChange;
   step["min_corner_J"] = trial.attempt.minCornerJ;
+  if (r.augmentationRaises > 0) step["penalty_ratios"] = uzawa_->penaltyRatios();
   if (std::isfinite(trial.attempt.pathStiffness)) step["path_stiffness"] = trial.attempt.pathStiffness;
   if (!(trial.attempt.minCornerJ > 0.0) && talk_)
     std::printf("  note: element %lld has a corner turned over at t = %.6g (det F = %.3g there; its Gauss points are "

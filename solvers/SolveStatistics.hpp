@@ -34,6 +34,7 @@ struct UzawaResult {
   int linearIterations = 0;
   DilatationError dilatation;
   std::vector<NewtonResult> newton;
+  int augmentationRaises = 0; // times a tissue's kappa_AL was raised in this step (UzawaLoop)
 };
 
 } // namespace glossa::solvers

@@ -73,10 +73,54 @@ UzawaLoop::UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &n
       inexact_(augmented_ && s.get<std::string>("Uzawa acceleration") == "inexact"),
       innerTolerance_(s.get<double>("inner tolerance")) {
   const model::Scene &scene = assembler.scene();
-  for (std::size_t t = 0; t < scene.tissues.size(); ++t)
-    rules_.emplace_back(physical.at(t), augmentationKappa(s, scene.tissues[t].matrix->shearModulus()));
+  physical_ = physical;
+  for (std::size_t t = 0; t < scene.tissues.size(); ++t) {
+    mu_.push_back(scene.tissues[t].matrix->shearModulus());
+    ratio_.push_back(s.get<double>("penalty ratio"));
+    rules_.emplace_back(physical.at(t), ratio_.back() * mu_.back());
+  }
   for (const auto e : assembler.layout().localElements)
     localTissue_.push_back(scene.elementTissue.empty() ? 0 : scene.elementTissue[static_cast<std::size_t>(e)]);
+}
+
+std::vector<double> UzawaLoop::penaltyRatios() const { return ratio_; }
+
+std::vector<double> UzawaLoop::tissueErrors(const assembly::ElementFields &f) const {
+  std::vector<double> local(rules_.size(), 0.0), global(rules_.size(), 0.0);
+  for (std::size_t i = 0; i < f.theta.size(); ++i)
+    local[localTissue_[i]] = std::max(local[localTissue_[i]], ruleOf(i).dilatationError(f.theta[i], f.pressure[i]));
+  Teuchos::reduceAll(*assembler_.comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(), global.data());
+  return global;
+}
+
+std::vector<int> UzawaLoop::activeTissues() const {
+  const model::Scene &scene = assembler_.scene();
+  const model::MuscleHistory &history = assembler_.muscleHistory();
+  std::vector<int> local(rules_.size(), 0), global(rules_.size(), 0);
+  const auto &elements = assembler_.layout().localElements;
+  for (std::size_t i = 0; i < elements.size() && scene.muscles.hasFibres(); ++i) {
+    const int region = scene.muscles.elementRegion[static_cast<std::size_t>(elements[i])];
+    if (region < 0) continue;
+    for (int g : scene.muscles.regions[static_cast<std::size_t>(region)].familyGroup)
+      if (history.groupActivation(g) > 0.0) local[localTissue_[i]] = 1;
+  }
+  Teuchos::reduceAll(*assembler_.comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(), global.data());
+  return global;
+}
+
+bool UzawaLoop::raiseSlowTissues(const std::vector<double> &errors, const std::vector<double> &previous) const {
+  bool raised = false;
+  const std::vector<int> active = activeTissues();
+  for (std::size_t t = 0; t < rules_.size(); ++t) {
+    if (!active[t]) continue;
+    if (!(errors[t] > tolerance_) || !(errors[t] > kSlowContraction * previous[t])) continue;
+    if (ratio_[t] * kAugmentationGrowth > kMaximumPenaltyRatio) continue;
+    ratio_[t] *= kAugmentationGrowth;
+    rules_[t] = AugmentedLagrangianRule(physical_[t], ratio_[t] * mu_[t]);
+    if (onRaise_) onRaise_(t, rules_[t].tangentKappa());
+    raised = true;
+  }
+  return raised;
 }
 
 DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) const {
@@ -110,6 +154,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
   const double looseTolerance =
       std::max(residualTolerance, residualTolerance * innerTolerance_ / newton_.relativeResidualTolerance());
   bool tight = !inexact_;
+  std::vector<double> previousErrors; // after the last tight solve, per tissue
   for (int k = 1; k <= (measuresPhysicalLaw() ? maxIterations_ : 1); ++k) {
     NewtonResult n = tight ? newton_.solve(u, residualTolerance, onNewton)
                            : newton_.solve(u, looseTolerance, onNewton, innerTolerance_);
@@ -129,6 +174,13 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
         result.converged = true;
         return result;
       }
+    }
+    // A loose solve's error says nothing of the contraction; two tight ones in a row do.
+    if (augmented_ && allowRaises_) {
+      std::vector<double> errors = tissueErrors(fields);
+      if (tight && k >= kSlowSolves && !previousErrors.empty() && raiseSlowTissues(errors, previousErrors))
+        ++result.augmentationRaises;
+      if (tight) previousErrors = std::move(errors);
     }
     // Only the first solve of a step is loose: its multipliers are the previous step's, so the
     // update changes the problem by more than the tight solve would gain. Later solves are tight:

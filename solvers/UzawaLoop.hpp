@@ -6,6 +6,7 @@
 // the tangent the Krylov solves stay cheap, while the multiplier carries the pressure that a pure
 // penalty would need kappa/mu >= 1e6 to produce. In "penalty" mode the loop performs one solve.
 
+#include <functional>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
@@ -43,6 +44,26 @@ public:
 
   DilatationError dilatationError(const assembly::ElementFields &fields) const;
 
+  // Adaptive kappa_AL (augmented Lagrangian): the Uzawa update contracts the multiplier error by
+  // about S / (S + kappa_AL) per solve, S the stiffness against an element's volume change at
+  // fixed multipliers. An active fibre adds its stress to S through its isochoric stretch (669 kPa
+  // against the matrix's mu = 2 kPa at full activation), and with the default 30 mu the loop
+  // contracts by about 3/4 per solve and stalls. So in a tissue with active fibres (some family's
+  // group at alpha > 0), once a step has taken kSlowSolves solves and the tissue's largest
+  // dilatation error fell by less than kSlowContraction over the last tight one, its kappa_AL is
+  // raised by kAugmentationGrowth (up to kMaximumPenaltyRatio mu) for the rest of the run, and
+  // its tangent's kappa_t with it through `onRaise(tissue, kappa_t)`. Loops of a few solves
+  // (every stored scene) and tissues without active fibres (the thick sphere near its limit
+  // point, where Uzawa slows for another reason) are never touched. Off under a controller (set
+  // false by its owner): a raise inside one candidate's solve would change the others', and GA
+  // control groups solving different candidates would no longer agree.
+  static constexpr double kSlowContraction = 0.5, kAugmentationGrowth = 10.0, kMaximumPenaltyRatio = 1e5;
+  static constexpr int kSlowSolves = 6;
+  void onKappaRaised(std::function<void(std::size_t, double)> onRaise) { onRaise_ = std::move(onRaise); }
+  void allowKappaRaises(bool allow) { allowRaises_ = allow; }
+  // kappa_AL / mu of each tissue now.
+  std::vector<double> penaltyRatios() const;
+
 private:
   const assembly::Assembler &assembler_;
   const NewtonSolver &newton_;
@@ -51,7 +72,18 @@ private:
   // Stops on the distance from the physical law, with room for more than one Newton solve
   // (augmented Lagrangian and mixed; a penalty makes one solve and reports |theta - 1|).
   bool measuresPhysicalLaw() const { return augmented_ || mixed_; }
-  std::vector<AugmentedLagrangianRule> rules_; // per tissue
+  // Per tissue the largest dilatation error of its local elements, maximum over the ranks. Collective.
+  std::vector<double> tissueErrors(const assembly::ElementFields &fields) const;
+  // Raises kappa_AL of the tissues whose error fell by less than kSlowContraction; true if any.
+  bool raiseSlowTissues(const std::vector<double> &errors, const std::vector<double> &previous) const;
+  // Per tissue: whether a local element on any rank has a fibre family whose group is active now. Collective.
+  std::vector<int> activeTissues() const;
+  mutable std::vector<AugmentedLagrangianRule> rules_; // per tissue (kappa_AL may be raised)
+  std::vector<materials::VolumetricEnergy> physical_;  // per tissue
+  std::vector<double> mu_, kappaAL_;                    // per tissue; kappaAL_ mutable through rules_
+  mutable std::vector<double> ratio_;                   // kappa_AL / mu per tissue
+  std::function<void(std::size_t, double)> onRaise_;
+  bool allowRaises_ = true;
   std::vector<int> localTissue_;               // per local element: its tissue
   const AugmentedLagrangianRule &ruleOf(std::size_t localElement) const { return rules_[localTissue_[localElement]]; }
   double tolerance_;

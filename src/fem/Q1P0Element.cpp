@@ -193,7 +193,12 @@ Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const Quadratu
     r.tangent.noalias() += (volumetric.d2U(r.theta) / V) * g * g.transpose();
   r.energy += V * (volumetric.energy(r.theta) + lambda * (r.theta - 1.0));
   r.cauchyMean /= v;
-  r.forceScale = std::hypot(r.residual.norm(), volumetric.d2U(r.theta) * std::cbrt(V * V));
+  // The pressure's nodal forces p g cancel against the deviatoric ones in the residual, so their
+  // size belongs in the round-off scale too: with the mixed method (kappa = 0 here, the pressure
+  // an unknown) the residual of a uniform active state is otherwise below its own round-off and
+  // Newton never stops (the isometric block at full activation, issue 17).
+  r.forceScale = std::hypot(std::hypot(r.residual.norm(), volumetric.d2U(r.theta) * std::cbrt(V * V)),
+                            r.pressure * g.norm());
   r.valid = true;
   return r;
 }
