@@ -1,5 +1,5 @@
 #pragma once
-// A fibre family at a material point (DESIGN.md §1, eq. 2-3): a reference unit direction N_f
+// A fibre family at a material point (doc/theory.md, eq. 2-3): a reference unit direction N_f
 // (in the zero-strain configuration) and a volume fraction phi_f. The rule of mixtures (eq. 3)
 // gives the matrix phi_M = 1 - sum_f phi_f; the paper uses a total fibre fraction of 0.7 split
 // equally among the families present at a point (§5.2).

@@ -1,5 +1,5 @@
 #pragma once
-// A one-dimensional elastic fibre law psi_f(lambda) (DESIGN.md §1, eq. 2, 11): energy per unit
+// A one-dimensional elastic fibre law psi_f(lambda) (doc/theory.md, eq. 2, 11): energy per unit
 // reference volume of the fibre constituent, its derivative, the tension T = psi_f'(lambda)
 // (the "one-dimensional tensile force" of eq. 11, a stress in Pa), and dT/dlambda.
 // Pure and const.

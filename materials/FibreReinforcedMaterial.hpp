@@ -1,5 +1,5 @@
 #pragma once
-// A fibre-reinforced isochoric material (DESIGN.md §1, eq. 2-6): a matrix law (e.g. the Fung
+// A fibre-reinforced isochoric material (doc/theory.md, eq. 2-6): a matrix law (e.g. the Fung
 // muscle matrix, eq. 10) and any number of fibre families, each a reference direction N_f with a
 // volume fraction phi_f and a passive fibre law psi_f(lambda-bar_f) (e.g. the parallel element,
 // eq. 17). Fibres resist tension only: a family with lambda-bar_f <= 1 adds nothing.

@@ -1,6 +1,6 @@
 #pragma once
 // The Gauss-mollifier curves of the Hill contractile element (paper eq. 19-21), with the closing
-// factor as DESIGN.md resolves eq. 21:
+// factor as doc/materials.md resolves eq. 21:
 //   g_n(x) = A_n exp(-B_n |x - mu_n|^p_n) (R_n^q_n - |x - mu_n|^q_n)^s_n   for |x - mu_n| < R_n,
 //   g_n(x) = 0 for |x - mu_n| >= R_n, and the closing factor is 1 where R_n = 0.
 // f(x) = sum_n g_n(x) on [lower, upper] (both included), `below` for x < lower and `above` for

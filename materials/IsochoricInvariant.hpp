@@ -1,6 +1,6 @@
 #pragma once
 // Isochoric invariants of C-bar = J^{-2/3} F^T F and their first and second derivatives with
-// respect to F (DESIGN.md §1): I1-bar = tr C-bar (the Fung laws, eq. 9-10) and
+// respect to F (doc/theory.md): I1-bar = tr C-bar (the Fung laws, eq. 9-10) and
 // I4-bar = N . C-bar N = lambda-bar_f^2 (the fibre families, eq. 2-6); and I2-bar, the second
 // invariant of C-bar (the Mooney-Rivlin laws), from I1-bar and tr(C-bar^2). I1-bar and I4-bar are
 // I_M-bar = J^{-2/3} C : M for a symmetric structural tensor M (M = 1 or M = N (x) N), so one

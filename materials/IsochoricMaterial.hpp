@@ -1,6 +1,6 @@
 #pragma once
 // The isochoric (deviatoric) part of a hyperelastic point law, in the form the Q1-P0 element
-// needs (DESIGN.md §1, eq. 2): the element adds the volumetric part itself from the
+// needs (doc/theory.md, eq. 2): the element adds the volumetric part itself from the
 // element-constant pressure, so a material writes only psi_iso(F) = psi(C-bar).
 // Pure and const: one call returns energy, first Piola stress and its derivative.
 

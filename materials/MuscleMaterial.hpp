@@ -1,5 +1,5 @@
 #pragma once
-// The active muscle point law (DESIGN.md §1, eq. 2-6, 11-18): an isochoric matrix (the Fung
+// The active muscle point law (doc/theory.md, eq. 2-6, 11-18): an isochoric matrix (the Fung
 // muscle matrix, eq. 10) and any number of Hill fibre families, each with a reference direction
 // N_f, a volume fraction phi_f and its own Hill fibre (the T0s and curve set of its muscle group).
 // Each family's fibre stretch is lambda-bar_f = sqrt(N_f . C-bar N_f) and its tension T_f comes

@@ -1,5 +1,5 @@
 #pragma once
-// The volumetric energy U(theta) of the three-field functional (DESIGN.md §1, eq. 7), a function
+// The volumetric energy U(theta) of the three-field functional (doc/theory.md, eq. 7), a function
 // of the element dilatation theta. Its own small object so that the mixed element can evaluate
 // it once per element and the augmented Lagrangian can swap kappa.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The Simulation (DESIGN.md §3): from a validated deck it builds the scene, the distributed
+// The Simulation (doc/developing.md): from a validated deck it builds the scene, the distributed
 // assembly, the linear and nonlinear solvers and the Uzawa loop, then steps through time,
 // committing each converged step (displacement and multipliers) and rolling back a failed one,
 // and writes results as it goes so a run stopped at any point leaves readable files. A

@@ -1,5 +1,5 @@
 #pragma once
-// The augmented-Lagrangian loop around each Newton solve (DESIGN.md §1, eq. 7):
+// The augmented-Lagrangian loop around each Newton solve (doc/theory.md, eq. 7):
 //   solve f(u; Lambda) = 0, then Lambda_e <- beta p_e   (AugmentedLagrangianRule)
 // until max_e |theta_e - theta_phys(p_e)| is below the tolerance: the element pressure then obeys
 // the material's physical volumetric law (theta -> 1 for nu = 0.5). With a moderate kappa_AL in
@@ -80,7 +80,7 @@ private:
   std::vector<int> activeTissues() const;
   mutable std::vector<AugmentedLagrangianRule> rules_; // per tissue (kappa_AL may be raised)
   std::vector<materials::VolumetricEnergy> physical_;  // per tissue
-  std::vector<double> mu_, kappaAL_;                    // per tissue; kappaAL_ mutable through rules_
+  std::vector<double> mu_;                              // per tissue: the matrix shear modulus
   mutable std::vector<double> ratio_;                   // kappa_AL / mu per tissue
   std::function<void(std::size_t, double)> onRaise_;
   bool allowRaises_ = true;

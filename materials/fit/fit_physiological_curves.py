@@ -6,7 +6,7 @@ Run with Debian's interpreter (numpy, scipy):  /usr/bin/python3 materials/fit/fi
 It prints the fitted parameters as C++ initialisers and the residuals recorded in doc/materials.md.
 Deterministic: fixed starting points, no random numbers.
 
-Term (eq. 21, closing factor as resolved in DESIGN.md):
+Term (eq. 21, closing factor as resolved in doc/materials.md):
     g(x) = A exp(-B |x - mu|^p) (R^q - |x - mu|^q)^s   for |x - mu| < R (0 outside), factor 1 if R = 0.
 
 Targets

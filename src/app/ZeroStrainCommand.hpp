@@ -1,5 +1,5 @@
 #pragma once
-// glossa zero-strain (DESIGN.md §8.1): the zero-strain configuration of a deck loaded by gravity,
+// glossa zero-strain (doc/tongue.md): the zero-strain configuration of a deck loaded by gravity,
 // stored as reference nodal coordinates that later runs reuse (Mesh/reference coordinates file).
 //  approximate (the paper): X0 = X_img + u, u the displacement under the deck's gravity reversed
 //              and scaled by 'gravity factor' (1.2) on the imaged geometry X_img;

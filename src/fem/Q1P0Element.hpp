@@ -1,5 +1,5 @@
 #pragma once
-// The Q1-P0 three-field element with its pressure and dilatation condensed out (DESIGN.md §1,
+// The Q1-P0 three-field element with its pressure and dilatation condensed out (doc/theory.md,
 // eq. 7). Per element, with Lambda held fixed (augmented Lagrangian):
 //   delta p:     theta = (1/V) int J dV              (current over reference volume)
 //   delta theta: p = U'(theta) + Lambda

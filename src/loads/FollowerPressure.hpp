@@ -1,5 +1,5 @@
 #pragma once
-// A follower pressure sigma = -p I on the DEFORMED bilinear quadrilateral face (DESIGN.md §1
+// A follower pressure sigma = -p I on the DEFORMED bilinear quadrilateral face (doc/theory.md
 // "Loads", paper §7.2 and §8.3, eq. 27): the external nodal forces
 //   f_a = -int p N_a n da = -int_{[-1,1]^2} p N_a (x_,s x x_,t) ds dt,   x = X + u,
 // with the 2x2 Gauss rule of DeadTraction (exact for the vector area of a bilinear face), and

@@ -1,6 +1,6 @@
 #pragma once
 // The pressure of a follower load as a function of the reference position and time
-// (DESIGN.md §1 "Loads", paper §7.2, §8.3, §8.5):
+// (doc/theory.md "Loads", paper §7.2, §8.3, §8.5):
 //   p(X, t) = p_max s(X) b(t),
 // s(X) = 1 (uniform) or the linear profile of §8.3, 0 at P_A and 1 at P_P,
 //   s = clamp((X - P_A).(P_P - P_A) / |P_P - P_A|^2, 0, 1),

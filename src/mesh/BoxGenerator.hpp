@@ -1,6 +1,6 @@
 #pragma once
 // A structured hexahedral mesh of an axis-aligned box: the mesh of patch tests, uniaxial
-// tension and the cube scenes of the paper (DESIGN.md §2).
+// tension and the cube scenes of the paper (doc/meshes.md).
 
 #include <Eigen/Core>
 #include <array>

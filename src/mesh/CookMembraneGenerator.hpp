@@ -1,6 +1,6 @@
 #pragma once
 // Cook's membrane: the tapered cantilever used to verify nearly incompressible elements
-// (Cook 1974; 3-D set-up of deal.II step-44, DESIGN.md §2 item 4).
+// (Cook 1974; 3-D set-up of deal.II step-44, doc/meshes.md).
 
 #include "mesh/HexMesh.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // A hexahedral mesh with named sets: the data model every generator and importer fills.
-// No Trilinos here (DESIGN.md §3): the mesh is replicated on every rank and the assembly
+// No Trilinos here (doc/developing.md): the mesh is replicated on every rank and the assembly
 // layer decides which rank owns which element.
 
 #include <Eigen/Core>

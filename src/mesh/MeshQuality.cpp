@@ -17,7 +17,7 @@ constexpr double kZeta[8] = {-1, -1, -1, -1, +1, +1, +1, +1};
 
 // dX/dxi of the trilinear map, J_ij = sum_a X_ai dN_a/dxi_j with
 // N_a = (1 + xi_a xi)(1 + eta_a eta)(1 + zeta_a zeta) / 8. Kept here rather than taken from
-// fem/ so that the mesh layer stays below fem in the dependency order (DESIGN.md §3).
+// fem/ so that the mesh layer stays below fem in the dependency order (doc/developing.md).
 Eigen::Matrix3d referenceJacobian(const Eigen::Matrix<double, 8, 3> &X, double xi, double eta,
                                   double zeta) {
   Eigen::Matrix<double, 8, 3> dN;

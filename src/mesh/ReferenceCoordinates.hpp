@@ -1,5 +1,5 @@
 #pragma once
-// Reference nodal coordinates stored in a file (DESIGN.md §8.1): the zero-strain configuration
+// Reference nodal coordinates stored in a file (doc/tongue.md): the zero-strain configuration
 // computed by `glossa zero-strain` and reused by later runs through the deck's
 // Mesh/reference coordinates file. The mesh keeps its connectivity, sets and labels; only the
 // node positions change, so F_RI (eq. 1) is implied by the change of coordinates.

@@ -1,5 +1,5 @@
 #pragma once
-// Where the fibres are and which muscle drives them (DESIGN.md §1, §2): the muscle groups with
+// Where the fibres are and which muscle drives them (doc/theory.md, §2): the muscle groups with
 // their activation dynamics and neural input, and, per element, the fibre families present with
 // their reference directions. Elements with the same families share one point law
 // (materials::MuscleMaterial), whose families' volume fractions split the total fibre fraction

@@ -1,5 +1,5 @@
 #pragma once
-// The scene: what is simulated, independent of how it is solved (DESIGN.md §3). The mesh, the
+// The scene: what is simulated, independent of how it is solved (doc/developing.md). The mesh, the
 // material with its fibres and muscle groups, boundary conditions and loads with their time
 // functions, and the named points whose displacement is traced. No Trilinos.
 

@@ -6,7 +6,7 @@
 
 using namespace glossa::materials;
 
-// DESIGN.md's closed forms for u = 1 and u = 0, and the backward-Euler equation for any u.
+// doc/materials.md's closed forms for u = 1 and u = 0, and the backward-Euler equation for any u.
 TEST(ActivationDynamics, BackwardEulerClosedForms) {
   const ActivationDynamics a;  // tau_R = tau_F = 150 ms, alpha_min = 0
   EXPECT_EQ(a.parameters().tauR, 0.150);

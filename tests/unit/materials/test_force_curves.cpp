@@ -32,13 +32,13 @@ TEST(PaperTableII, ForceLengthAtHandComputedPoints) {
   const double at08 = 0.475 + 0.1 * std::exp(-10 * 0.25) * std::pow(1 - 0.25, 8) +
                       4830.635 * std::exp(-3 * 0.525) * std::pow(std::pow(0.75, 4) - std::pow(0.525, 4), 8);
   EXPECT_NEAR(fL(c, 0.8), at08, 1e-14);
-  EXPECT_NEAR(fL(c, 0.8), 0.48699, 1e-5);  // DESIGN.md: 0.49 at 0.8
+  EXPECT_NEAR(fL(c, 0.8), 0.48699, 1e-5);  // doc/materials.md: 0.49 at 0.8
   // lambda_c = 1: d = 0.2, -0.3, -0.325.
   const double at1 = 0.475 * std::exp(-90 * 0.04) * std::pow(1 - 0.0016, 8) +
                      0.1 * std::exp(-10 * 0.09) * std::pow(1 - 0.09, 8) +
                      4830.635 * std::exp(-3 * 0.325) * std::pow(std::pow(0.75, 4) - std::pow(0.325, 4), 8);
   EXPECT_NEAR(fL(c, 1.0), at1, 1e-14);
-  EXPECT_NEAR(fL(c, 1.0), 0.169, 1e-3);  // DESIGN.md: only 0.17 at lambda_c = 1
+  EXPECT_NEAR(fL(c, 1.0), 0.169, 1e-3);  // doc/materials.md: only 0.17 at lambda_c = 1
   // The cusp of term 3 (p = 1) at 1.325: 4830.635 * 0.75^32 = 0.485 plus term 2.
   EXPECT_NEAR(fL(c, 1.325),
               4830.635 * std::pow(0.75, 32) +
@@ -57,10 +57,10 @@ TEST(PaperTableII, ForceVelocityAtHandComputedPoints) {
                      0.3 * std::exp(-0.25 * 0.36) + 0.425 * std::exp(-0.7 * 0.3025) +
                      0.1 * std::exp(-0.3 * std::pow(1.4, 4)) + 0.525 * std::exp(-15 * std::pow(0.75, 8));
   EXPECT_NEAR(fV(c, 0.0), at0, 1e-14);
-  EXPECT_NEAR(fV(c, 0.0), 1.01, 5e-3);  // DESIGN.md: f_cV(0) = 1.01
+  EXPECT_NEAR(fV(c, 0.0), 1.01, 5e-3);  // doc/materials.md: f_cV(0) = 1.01
   // Term 1's peak 2.5e-5 * 10^4 = 0.25 (the printed "2.5105" is 2.5e-5).
   EXPECT_NEAR(2.5e-5 * std::pow(10.0, 4), 0.25, 1e-15);
-  // Rises to 1.49 near 0.47 and falls back to ~0 by 3 (DESIGN.md).
+  // Rises to 1.49 near 0.47 and falls back to ~0 by 3 (doc/materials.md).
   EXPECT_NEAR(fV(c, 0.47), 1.492, 1e-3);
   EXPECT_LT(fV(c, 3.0), 0.2);
   EXPECT_LT(fV(c, 9.9), 1e-10);
