@@ -49,6 +49,12 @@ public:
   // x_p = X_p + d_p: where the control points are, from their displacement.
   Eigen::Matrix3Xd positions(const Eigen::Matrix3Xd &pointDisplacement) const;
 
+  // What a checkpoint keeps: the inputs of the last two found steps (both controllers start from
+  // them). The GA's random stream needs nothing more: it is seeded afresh every step from the
+  // parameters' seed and the number of committed steps.
+  std::pair<control::Genome, control::Genome> memory() const { return {previousBest_, olderBest_}; }
+  void restoreMemory(const std::pair<control::Genome, control::Genome> &m) { previousBest_ = m.first, olderBest_ = m.second; }
+
 private:
   struct Search; // the step's result so far, with the rank of its best candidate
 

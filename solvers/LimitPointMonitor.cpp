@@ -56,4 +56,19 @@ nlohmann::json LimitPointMonitor::record(const Eigen::Vector3d &x) const {
           {"reference_position", {x.x(), x.y(), x.z()}}};
 }
 
+nlohmann::json LimitPointMonitor::state() const {
+  nlohmann::json s = {{"reference", reference_}, {"last", lastS_}};
+  if (bracket_) s["bracket"] = {bracket_->lower, bracket_->upper, bracket_->unstable ? 1.0 : 0.0, static_cast<double>(bracket_->node)};
+  return s;
+}
+
+void LimitPointMonitor::restore(const nlohmann::json &s) {
+  reference_ = s.at("reference").get<double>();
+  lastS_ = s.at("last").get<double>();
+  bracket_.reset();
+  if (!s.contains("bracket")) return;
+  const auto b = s.at("bracket").get<std::vector<double>>();
+  bracket_ = Bracket{b.at(0), b.at(1), b.at(2) != 0.0, static_cast<std::size_t>(b.at(3))};
+}
+
 } // namespace glossa::solvers

@@ -47,6 +47,10 @@ public:
   // An accepted step with S below this has the path near its maximum: a failure there is a limit point.
   static constexpr double kSoftened = 0.1;
 
+  // What a checkpoint keeps (s_1, the last S, an open bracket) and its restoration.
+  nlohmann::json state() const;
+  void restore(const nlohmann::json &state);
+
 private:
   struct Bracket {
     double lower, upper; // the last accepted time, the earliest refused one

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
+#include <sstream>
 #include <sys/resource.h>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -14,11 +16,14 @@
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "io/deck/NameList.hpp"
+#include "io/output/CheckpointStore.hpp"
 #include "io/output/KeyedCsvWriter.hpp"
+#include "io/output/OutputError.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "io/output/SummaryWriter.hpp"
 #include "io/output/TraceWriter.hpp"
 #include "model/SceneFactory.hpp"
+#include "solvers/CheckpointContents.hpp"
 #include "solvers/CommControlGroups.hpp"
 #include "solvers/ControlDriver.hpp"
 #include "solvers/ControlSection.hpp"
@@ -59,6 +64,10 @@ Teuchos::ParameterList outputParameters() {
                     "face sets whose resultant force goes to resultants.csv every step: the sum over the set's "
                     "nodes of internal less body forces, i.e. a support's reaction or a load's resultant "
                     "(comma separated)");
+  io::declareInt(p, "checkpoint every", 10,
+                 "write the state to <directory>/checkpoint every this many converged steps (and when a signal "
+                 "stops the run), for glossa run --restart; 0: never",
+                 io::Range::atLeast(0));
   io::declareString(p, "volume face sets", "",
                     "face sets whose enclosed volume goes to volumes.csv every step: 1/3 of the integral of "
                     "x . n over the deformed faces (n the body's outward normal), the body's volume for its "
@@ -98,6 +107,7 @@ void markInterrupted(nlohmann::json &summary, int signal) {
 // activation.csv must not stand beside a later passive run's traces). Rank 0 only.
 void prepareOutputDirectory(const std::filesystem::path &dir) {
   std::filesystem::create_directories(dir);
+  std::filesystem::remove_all(dir / "checkpoint"); // an earlier run's: --restart must not continue it
   for (const char *file : {"results.xdmf", "results.h5", "traces.csv", "reactions.csv", "resultants.csv",
                            "volumes.csv", "activation.csv", "controls.csv", "summary.json"})
     std::filesystem::remove(dir / file);
@@ -115,6 +125,33 @@ std::size_t largestMotionNode(const assembly::Assembler &assembler, const assemb
   return best;
 }
 
+// The deck as "Section/sub/name = value" lines (every default filled in, doubles to 17 digits): a
+// restart must be given the same.
+void listParameters(const Teuchos::ParameterList &list, const std::string &path, std::ostringstream &out) {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string name = path + list.name(it);
+    const Teuchos::ParameterEntry &entry = list.entry(it);
+    if (entry.isList()) listParameters(Teuchos::getValue<Teuchos::ParameterList>(entry), name + "/", out);
+    else out << name << " = " << entry.getAny(false) << '\n';
+  }
+}
+std::string parameterListing(const Teuchos::ParameterList &deck) {
+  std::ostringstream out;
+  out.precision(17);
+  listParameters(deck, "", out);
+  return out.str();
+}
+
+// The first parameter where two listings differ, for the message that a restart's deck is not the run's.
+std::string firstDifference(const std::string &run, const std::string &now) {
+  std::istringstream a(run), b(now);
+  std::string l1, l2;
+  while (true) {
+    const bool more1 = static_cast<bool>(std::getline(a, l1)), more2 = static_cast<bool>(std::getline(b, l2));
+    if (!more1 && !more2) return "";
+    if (!more1 || !more2 || l1 != l2) return "the run's " + (more1 ? l1 : "end") + ", now " + (more2 ? l2 : "end");
+  }
+}
 } // namespace
 
 void declareSolverParameters(Teuchos::ParameterList &schema) {
@@ -155,6 +192,13 @@ struct Simulation::StepState {
   }
   assembly::Vector u;
   std::vector<double> lambda; // Lambda_e, per local element
+};
+
+struct Simulation::Restart {
+  int step = 0;
+  nlohmann::json run;  // rank 0's part: the scalars, the monitors' and controller's state, the summary, the files' lengths
+  nlohmann::json part; // this rank's: displacement, multipliers, muscle history
+  OutputMark outputs;
 };
 
 struct Simulation::Attempt {
@@ -315,10 +359,20 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   }
   dir_ = options.outputDirectory.empty() ? std::filesystem::path(D.sublist("Output").get<std::string>("directory"))
                                          : options.outputDirectory;
-  if (root_) prepareOutputDirectory(dir_);
+  deckListing_ = parameterListing(D);
+  std::unique_ptr<Restart> restart;
+  if (!options.restartDirectory.empty()) {
+    if (!options.outputDirectory.empty())
+      throw io::DeckError("--restart continues in the directory it names; leave out --output");
+    dir_ = options.restartDirectory;
+    restart = readRestart(deck, dir_);
+  }
+  if (root_ && !restart) prepareOutputDirectory(dir_);
   comm->barrier();
   recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_,
-                                             outputSets[0], outputSets[1]);
+                                             outputSets[0], outputSets[1], restart ? &restart->outputs : nullptr);
+  checkpoints_ = std::make_unique<io::CheckpointStore>(dir_);
+  checkpointEvery_ = D.sublist("Output").get<int>("checkpoint every");
   every_ = D.sublist("Output").get<int>("every");
 
   doc_["deck"] = deck.file();
@@ -370,8 +424,10 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   std::vector<double> initialInputs;
   for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g)
     initialInputs.push_back(assembler_->muscleHistory().input(static_cast<int>(g), 0.0));
-  recorder_->record(0.0, committed_->u, committed_->lambda, true, initialMuscle, initialInputs);
-  writeSummary();
+  if (!restart) {
+    recorder_->record(0.0, committed_->u, committed_->lambda, true, initialMuscle, initialInputs);
+    writeSummary();
+  }
   stepsStart_ = Clock::now();
   installStopSignalHandlers();
   if (root_) onStopSignal([this](int signal) { writeInterruptedSummary(signal); });
@@ -385,11 +441,19 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
     throw io::DeckError("--control-groups " + std::to_string(controlGroups) +
                         " needs Control/type = genetic algorithm (the candidates it shares out)");
   committedStretch_ = initialMuscle.groupMeanStretch;
-  if (!control_->enabled) return;
+  if (control_->enabled) setUpController(restart ? &restart->outputs : nullptr);
+  if (restart) restoreState(*restart);
+}
+
+void Simulation::setUpController(const OutputMark *resume) {
+  const model::Scene &scene = *scene_;
   uzawa_->allowKappaRaises(false); // every candidate of a step must see the same kappa_AL
+  std::optional<std::uintmax_t> resumeAt;
+  if (resume && resume->csvBytes.count("controls.csv")) resumeAt = resume->csvBytes.at("controls.csv");
   if (root_)
     controls_ = std::make_unique<io::KeyedCsvWriter>(
-        dir_ / "controls.csv", "group", std::vector<std::string>{"u [-]", "evaluated [-]", "objective [m]", "candidates [-]"});
+        dir_ / "controls.csv", "group", std::vector<std::string>{"u [-]", "evaluated [-]", "objective [m]", "candidates [-]"},
+        resumeAt);
   ControlDriverSetup setup;
   setup.parameters = control_->parameters;
   for (const auto &g : scene.muscles.groups) setup.groupNames.push_back(g.name);
@@ -426,6 +490,136 @@ void Simulation::writeSummary() {
   // The watcher wrote "interrupted" already; a step committed since keeps saying so.
   if (interruptedBy_ != 0 && !doc_.contains("interrupted")) markInterrupted(summary_->root(), interruptedBy_);
   summary_->write();
+}
+
+namespace {
+std::vector<double> ownedValues(const assembly::Vector &v) {
+  const auto data = v.getData();
+  return std::vector<double>(data.begin(), data.end());
+}
+
+void assignOwnedValues(assembly::Vector &v, const nlohmann::json &values, const char *what) {
+  const auto x = values.get<std::vector<double>>();
+  auto data = v.getDataNonConst();
+  if (x.size() != static_cast<std::size_t>(data.size()))
+    throw io::OutputError(std::string("the checkpoint's ") + what + " has " + std::to_string(x.size()) + " values here, " +
+                          std::to_string(data.size()) + " expected (another mesh or partition)");
+  std::copy(x.begin(), x.end(), data.begin());
+}
+
+std::vector<double> elementValues(const nlohmann::json &values, std::size_t expected, const char *what) {
+  auto x = values.get<std::vector<double>>();
+  if (x.size() != expected)
+    throw io::OutputError(std::string("the checkpoint's ") + what + " has " + std::to_string(x.size()) +
+                          " element values here, " + std::to_string(expected) + " expected (another mesh or partition)");
+  return x;
+}
+
+} // namespace
+
+nlohmann::json Simulation::runState() {
+  nlohmann::json run;
+  run["deck"] = deckListing_;
+  run["ranks"] = comm_->getSize();
+  run["control_groups"] = options_.controlGroups;
+  run["step"] = stepNumber_;
+  run["time"] = t_;
+  run["previous_dt"] = previousDt_;
+  const StepSizeController::State steps = steps_->state();
+  run["step_size"] = {steps.stepSize, steps.successes};
+  if (limit_) run["limit_point"] = limit_->state();
+  run["softening_said"] = softeningSaid_;
+  run["penalty_ratios"] = uzawa_->penaltyRatios();
+  run["committed_stretch"] = committedStretch_;
+  if (driver_) {
+    const auto memory = driver_->memory();
+    run["control_memory"] = {memory.first, memory.second};
+  }
+  OutputMark outputs = recorder_->mark();
+  if (controls_) outputs.csvBytes["controls.csv"] = controls_->bytes();
+  run["outputs"] = toJson(outputs);
+  run["summary"] = doc_;
+  return run;
+}
+
+void Simulation::writeCheckpoint() {
+  if (checkpointedStep_ == stepNumber_) return;
+  nlohmann::json part;
+  part["u"] = ownedValues(committed_->u);
+  part["lambda"] = committed_->lambda;
+  if (extrapolate_) {
+    part["previous_u"] = ownedValues(previous_->u);
+    part["previous_lambda"] = previous_->lambda;
+  }
+  part["muscle"] = toJson(assembler_->muscleHistory().snapshot());
+  if (root_) part["run"] = runState();
+  // Published only once every rank's part is on disk; a rank that cannot write stops them all.
+  std::string error;
+  try {
+    checkpoints_->writePart(stepNumber_, comm_->getRank(), part);
+  } catch (const std::exception &e) {
+    error = e.what();
+  }
+  int failed = error.empty() ? 0 : 1, anyFailed = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, failed, Teuchos::outArg(anyFailed));
+  if (anyFailed) throw io::OutputError(error.empty() ? "another rank could not write its checkpoint part" : error);
+  if (root_) checkpoints_->publish(stepNumber_);
+  comm_->barrier();
+  checkpointedStep_ = stepNumber_;
+}
+
+std::unique_ptr<Simulation::Restart> Simulation::readRestart(const io::Deck &deck, const std::filesystem::path &dir) const {
+  const io::CheckpointStore store(dir);
+  const std::optional<int> step = store.latestStep();
+  if (!step)
+    throw io::DeckError("--restart " + dir.string() + ": no checkpoint there (" + (store.directory() / "latest").string() +
+                        " is missing); a run writes one every Output/checkpoint every steps and when a signal stops it");
+  auto restart = std::make_unique<Restart>();
+  restart->step = *step;
+  restart->part = store.readPart(*step, comm_->getRank());
+  restart->run = (comm_->getRank() == 0 ? restart->part : store.readPart(*step, 0)).at("run");
+  const nlohmann::json &run = restart->run;
+  const std::string difference = firstDifference(run.at("deck").get<std::string>(), parameterListing(deck.root()));
+  if (!difference.empty())
+    throw io::DeckError("--restart " + dir.string() + ": the deck is not the one the run was started with (" + difference +
+                        "); a restart continues the same run, with the same deck and --set values");
+  if (run.at("ranks").get<int>() != comm_->getSize() || run.at("control_groups").get<int>() != options_.controlGroups)
+    throw io::DeckError("--restart " + dir.string() + ": the run was made on " + std::to_string(run.at("ranks").get<int>()) +
+                        " rank(s) in " + std::to_string(run.at("control_groups").get<int>()) +
+                        " control group(s); restart it on as many (its checkpoint is split by rank)");
+  restart->outputs = outputMarkFromJson(run.at("outputs"));
+  return restart;
+}
+
+void Simulation::restoreState(const Restart &restart) {
+  const nlohmann::json &part = restart.part, &run = restart.run;
+  assignOwnedValues(committed_->u, part.at("u"), "displacement");
+  committed_->lambda = elementValues(part.at("lambda"), committed_->lambda.size(), "multipliers");
+  if (extrapolate_) {
+    assignOwnedValues(previous_->u, part.at("previous_u"), "previous displacement");
+    previous_->lambda = elementValues(part.at("previous_lambda"), previous_->lambda.size(), "previous multipliers");
+  }
+  assembler_->muscleHistory().restore(muscleSnapshotFromJson(part.at("muscle")));
+  stepNumber_ = run.at("step").get<int>();
+  t_ = run.at("time").get<double>();
+  previousDt_ = run.at("previous_dt").get<double>();
+  steps_->restore({run.at("step_size").at(0).get<double>(), run.at("step_size").at(1).get<int>()});
+  if (limit_ && run.contains("limit_point")) limit_->restore(run.at("limit_point"));
+  softeningSaid_ = run.at("softening_said").get<bool>();
+  uzawa_->restorePenaltyRatios(run.at("penalty_ratios").get<std::vector<double>>());
+  committedStretch_ = run.at("committed_stretch").get<std::vector<double>>();
+  if (driver_ && run.contains("control_memory"))
+    driver_->restoreMemory({run.at("control_memory").at(0).get<control::Genome>(),
+                            run.at("control_memory").at(1).get<control::Genome>()});
+  doc_ = run.at("summary");
+  if (!doc_.contains("restarts")) doc_["restarts"] = nlohmann::json::array();
+  doc_["restarts"].push_back({{"after_step", stepNumber_}, {"time", t_}});
+  checkpointedStep_ = stepNumber_;
+  stepsStartTime_ = t_;
+  if (talk_)
+    std::printf("glossa: restarting after step %d (t = %.6g s) from %s\n", stepNumber_, t_,
+                (checkpoints_->directory()).c_str());
+  writeSummary();
 }
 
 void Simulation::writeInterruptedSummary(int signal) {
@@ -607,7 +801,7 @@ void Simulation::commitTrial() {
     // the time left from the wall time per simulated second so far.
     const double end = steps_->endTime(), elapsed = since(stepsStart_);
     const long left = t_ < end ? std::lround(std::ceil((end - t_) / trial.dt - 1e-9)) : 0;
-    const double remaining = t_ > 0.0 ? elapsed * (end - t_) / t_ : 0.0;
+    const double remaining = t_ > stepsStartTime_ ? elapsed * (end - t_) / (t_ - stepsStartTime_) : 0.0;
     std::printf("step %d/%ld  t = %.6g of %.6g s  newton %d  krylov %d  uzawa %d  dilatation error %.1e%s  "
                 "[%s elapsed, about %s left]\n",
                 stepNumber_, stepNumber_ + left, t_, end, r.newtonIterations, r.linearIterations, r.solves,
@@ -615,6 +809,7 @@ void Simulation::commitTrial() {
   }
   writeSummary();
   output.unlock();
+  if (checkpointEvery_ > 0 && stepNumber_ % checkpointEvery_ == 0) writeCheckpoint();
 }
 
 void Simulation::record(const Trial &trial) {
@@ -696,6 +891,8 @@ nlohmann::json Simulation::controlJson(const Trial &trial) {
 }
 
 void Simulation::finish() {
+  // Stopped by a signal: the committed state is sound, so it is kept for --restart.
+  if (stoppedBy_ != 0 && checkpointEvery_ > 0) writeCheckpoint();
   const std::vector<double> uAll = assembler_->gatherDisplacement(committed_->u);
   if (options_.finalDisplacement) *options_.finalDisplacement = uAll;
   nlohmann::json finals = nlohmann::json::object();

@@ -25,6 +25,7 @@ class Assembler;
 class ModelEvaluator;
 } // namespace glossa::assembly
 namespace glossa::io {
+class CheckpointStore;
 class KeyedCsvWriter;
 class SummaryWriter;
 } // namespace glossa::io
@@ -42,6 +43,7 @@ class StepRecorder;
 class StepSizeController;
 class UzawaLoop;
 struct ControlSetup;
+struct OutputMark;
 
 // Parameters of the sections the solver side owns ("Time", "Incompressibility",
 // "Nonlinear solver", "Linear solver", "Output"), to be merged into the deck schema.
@@ -57,6 +59,9 @@ struct RunOptions {
   // If set, receives the last converged displacement of every node (3 per node, by mesh node),
   // on every rank (glossa zero-strain).
   std::vector<double> *finalDisplacement = nullptr;
+  // glossa run --restart DIR: continue the run whose output directory is DIR from its latest
+  // checkpoint (the deck must be the one it was started with); empty: a new run.
+  std::filesystem::path restartDirectory = {};
 };
 
 class Simulation {
@@ -98,6 +103,8 @@ private:
   // The limit-point check of a converged trial (LimitPointMonitor): its stiffness along the step,
   // and the trial refused when that is negative.
   void checkPathStiffness(Trial &trial);
+  // The controller, its plant and controls.csv (resumed from `resume` on a restart).
+  void setUpController(const OutputMark *resume);
   void applyControlInputs(const std::vector<double> &inputs);
   void controlledStep(Trial &trial);
   // The control points' displacement (one column per point), gathered from every rank.
@@ -105,6 +112,13 @@ private:
   void record(const Trial &trial);
   nlohmann::json controlJson(const Trial &trial);
   void writeSummary();
+  // The committed state to <output>/checkpoint (io::CheckpointStore), unless this step has one. Collective.
+  void writeCheckpoint();
+  nlohmann::json runState(); // rank 0's part of a checkpoint
+  // A restart: the latest checkpoint's state (every rank's part and rank 0's run part).
+  struct Restart;
+  std::unique_ptr<Restart> readRestart(const io::Deck &deck, const std::filesystem::path &dir) const;
+  void restoreState(const Restart &restart);
   void finish();
   // On the stop-signal watcher thread (rank 0): summary.json says at once why the run ends.
   void writeInterruptedSummary(int signal);
@@ -117,6 +131,7 @@ private:
   bool root_, talk_;
   bool detail_ = false; // talk_ and --verbose: the per-iteration lines
   std::chrono::steady_clock::time_point stepsStart_; // after set-up: the time per simulated second
+  double stepsStartTime_ = 0.0; // the simulated time then (a restart's)
   std::string controlLine_; // the last control step's summary, for its step's line
 
   std::unique_ptr<StepSizeController> steps_;
@@ -134,6 +149,10 @@ private:
   std::unique_ptr<StepRecorder> recorder_;
   int every_ = 1;
   std::unique_ptr<io::SummaryWriter> summary_;
+  std::unique_ptr<io::CheckpointStore> checkpoints_;
+  int checkpointEvery_ = 0;  // Output/checkpoint every (0: never)
+  int checkpointedStep_ = -1; // the step of the latest checkpoint written
+  std::string deckListing_;       // the validated deck, a parameter a line: a restart must be given the same
   nlohmann::json doc_;
   // summary_ and interruptedBy_, shared with the signal watcher; held over a commit's whole
   // output so that an interrupted summary.json never lags a step behind traces.csv.

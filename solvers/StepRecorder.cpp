@@ -1,22 +1,36 @@
 #include "solvers/StepRecorder.hpp"
 
+#include "io/output/OutputError.hpp"
 #include "materials/ActivationDynamics.hpp"
 
 namespace glossa::solvers {
 
 StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields,
-                           bool writer, std::vector<std::string> resultantSets, std::vector<std::string> volumeSets)
+                           bool writer, std::vector<std::string> resultantSets, std::vector<std::string> volumeSets,
+                           const OutputMark *resume)
     : assembler_(assembler), root_(writer), fields_(fields), resultantSets_(std::move(resultantSets)),
       volumeSets_(std::move(volumeSets)) {
   if (!root_) return;
+  // A restart's files are kept and cut back to the checkpoint's lengths.
+  auto resumeAt = [&](const char *file) -> std::optional<std::uintmax_t> {
+    if (!resume) return std::nullopt;
+    const auto at = resume->csvBytes.find(file);
+    if (at == resume->csvBytes.end()) throw io::OutputError(std::string("the checkpoint does not record ") + file);
+    return at->second;
+  };
   if (!resultantSets_.empty())
     resultants_ = std::make_unique<io::KeyedCsvWriter>(dir / "resultants.csv", "face_set",
-                                                       std::vector<std::string>{"fx [N]", "fy [N]", "fz [N]"});
+                                                       std::vector<std::string>{"fx [N]", "fy [N]", "fz [N]"},
+                                                       resumeAt("resultants.csv"));
   if (!volumeSets_.empty())
-    volumes_ = std::make_unique<io::KeyedCsvWriter>(dir / "volumes.csv", "face_set", std::vector<std::string>{"volume [m^3]"});
+    volumes_ = std::make_unique<io::KeyedCsvWriter>(dir / "volumes.csv", "face_set",
+                                                    std::vector<std::string>{"volume [m^3]"}, resumeAt("volumes.csv"));
   const auto &mesh = assembler.scene().mesh;
-  if (fields_) results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.nodes, mesh.elements);
-  traces_ = std::make_unique<io::TraceWriter>(dir / "traces.csv");
+  if (fields_ && resume)
+    results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.numNodes(), mesh.numElements(), resume->fieldSteps);
+  else if (fields_)
+    results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.nodes, mesh.elements);
+  traces_ = std::make_unique<io::TraceWriter>(dir / "traces.csv", resumeAt("traces.csv"));
   // Reference fibre directions per family (zero where the family is absent), for ParaView's
   // glyphs; they do not change, and the mesh is replicated, so rank 0 builds them once.
   const auto &muscles = assembler.scene().muscles;
@@ -38,10 +52,23 @@ StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::file
   }
   if (!assembler.scene().dirichlet.empty())
     reactions_ = std::make_unique<io::KeyedCsvWriter>(dir / "reactions.csv", "condition",
-                                                      std::vector<std::string>{"fx [N]", "fy [N]", "fz [N]"});
+                                                      std::vector<std::string>{"fx [N]", "fy [N]", "fz [N]"},
+                                                      resumeAt("reactions.csv"));
   if (!assembler.scene().muscles.groups.empty())
     activation_ = std::make_unique<io::KeyedCsvWriter>(
-        dir / "activation.csv", "group", std::vector<std::string>{"u [-]", "alpha [-]", "ffmr [-]", "mean_fibre_stretch [-]", "mean_contractile_stretch [-]"});
+        dir / "activation.csv", "group",
+        std::vector<std::string>{"u [-]", "alpha [-]", "ffmr [-]", "mean_fibre_stretch [-]", "mean_contractile_stretch [-]"},
+        resumeAt("activation.csv"));
+}
+
+OutputMark StepRecorder::mark() const {
+  OutputMark m;
+  if (!root_) return m;
+  m.csvBytes["traces.csv"] = traces_->bytes();
+  for (const auto *csv : {resultants_.get(), volumes_.get(), reactions_.get(), activation_.get()})
+    if (csv) m.csvBytes[csv->file().filename().string()] = csv->bytes();
+  if (results_) m.fieldSteps = results_->steps();
+  return m;
 }
 
 std::vector<std::pair<std::string, Eigen::Vector3d>> StepRecorder::pointDisplacements(const std::vector<double> &u) const {

@@ -22,6 +22,13 @@
 
 namespace glossa::solvers {
 
+// How far every file had got when a checkpoint was made (the writer rank's): a restart cuts each
+// back to it, so the files end as an uninterrupted run's would.
+struct OutputMark {
+  std::map<std::string, std::uintmax_t> csvBytes; // by file name
+  std::vector<io::XdmfStep> fieldSteps;           // the steps results.h5 holds
+};
+
 class StepRecorder {
 public:
   // `writer`: this rank writes the files (rank 0 of the world; with control groups every group
@@ -29,7 +36,11 @@ public:
   // `resultantSets`, `volumeSets`: face sets (existing) whose resultant force and enclosed volume
   // are written every step to resultants.csv and volumes.csv.
   StepRecorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields, bool writer,
-               std::vector<std::string> resultantSets = {}, std::vector<std::string> volumeSets = {});
+               std::vector<std::string> resultantSets = {}, std::vector<std::string> volumeSets = {},
+               const OutputMark *resume = nullptr);
+
+  // Where the files are now (empty on the ranks that do not write).
+  OutputMark mark() const;
 
   // Displacement of every traced point (on every rank).
   std::vector<std::pair<std::string, Eigen::Vector3d>> pointDisplacements(const std::vector<double> &u) const;

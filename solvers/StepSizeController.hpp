@@ -30,6 +30,14 @@ public:
   double stepSize() const { return dt_; }
   double nominalStep() const { return rule_.nominal; }
 
+  // What a checkpoint keeps: the step size and the successes since the last change.
+  struct State {
+    double stepSize;
+    int successes;
+  };
+  State state() const { return {dt_, successes_}; }
+  void restore(const State &s) { dt_ = s.stepSize, successes_ = s.successes; }
+
 private:
   StepSizeRule rule_;
   double dt_;

@@ -123,6 +123,18 @@ bool UzawaLoop::raiseSlowTissues(const std::vector<double> &errors, const std::v
   return raised;
 }
 
+void UzawaLoop::restorePenaltyRatios(const std::vector<double> &ratios) {
+  if (ratios.size() != ratio_.size())
+    throw std::invalid_argument("UzawaLoop::restorePenaltyRatios: " + std::to_string(ratios.size()) + " ratios for " +
+                                std::to_string(ratio_.size()) + " tissues");
+  for (std::size_t t = 0; t < ratio_.size(); ++t) {
+    if (ratios[t] == ratio_[t]) continue;
+    ratio_[t] = ratios[t];
+    rules_[t] = AugmentedLagrangianRule(physical_[t], ratio_[t] * mu_[t]);
+    if (onRaise_) onRaise_(t, rules_[t].tangentKappa());
+  }
+}
+
 DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) const {
   double local[2] = {0.0, 0.0}, volume = 0.0, maxErr = 0.0, maxChange = 0.0;
   for (std::size_t i = 0; i < f.theta.size(); ++i) {

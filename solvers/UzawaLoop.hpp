@@ -63,6 +63,9 @@ public:
   void allowKappaRaises(bool allow) { allowRaises_ = allow; }
   // kappa_AL / mu of each tissue now.
   std::vector<double> penaltyRatios() const;
+  // A restart's: the ratios a checkpoint kept; a tissue whose kappa_AL had been raised gets it
+  // again, with its kappa_t through onKappaRaised. Throws std::invalid_argument for a wrong count.
+  void restorePenaltyRatios(const std::vector<double> &ratios);
 
 private:
   const assembly::Assembler &assembler_;

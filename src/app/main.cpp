@@ -31,7 +31,7 @@ const char *kUsage = R"(glossa - finite elements for nearly incompressible, fibr
 
 usage:
   glossa run DECK.xml [--output DIR] [--set path/to/parameter=value ...] [--quiet | --verbose]
-             [--timers] [--control-groups G]
+             [--timers] [--control-groups G] [--restart DIR]
       run a deck; results (results.xdmf/.h5, traces.csv, summary.json) go to DIR
       (default: the deck's Output/directory). Under mpiexec -np N it runs on N ranks.
       It prints a line per step (step k/N, time, iterations, elapsed and estimated time left);
@@ -39,6 +39,10 @@ usage:
       --timers prints Trilinos' timers (MueLu set-up, Belos solve) at the end.
       --control-groups G splits the N ranks into G groups that solve the genetic
       algorithm's candidates concurrently, N/G ranks each (G must divide N).
+      --restart DIR continues the run whose results are in DIR from its latest checkpoint
+      (written every Output/checkpoint every steps and when the run is stopped by a signal),
+      with the same deck and --set values and on as many ranks; its files end as an
+      uninterrupted run's would.
   glossa validate DECK.xml [--set path=value ...]
       check a deck (parameters, and the mesh sets and points it names) and print it with
       every default filled in
@@ -73,7 +77,7 @@ written; 5 an internal error. Errors go to stderr, with --quiet too.
 )";
 
 struct Arguments {
-  std::string command, deck, output;
+  std::string command, deck, output, restart;
   std::vector<std::string> overrides;
   bool quiet = false, verbose = false, markdown = false, timers = false, json = false;
   std::string format = "auto";
@@ -94,6 +98,7 @@ Arguments parse(int argc, char **argv) {
       return args[++i];
     };
     if (s == "--output") a.output = value("--output");
+    else if (s == "--restart") a.restart = value("--restart");
     else if (s == "--set") a.overrides.push_back(value("--set"));
     else if (s == "--quiet") a.quiet = true;
     else if (s == "--verbose") a.verbose = true;
@@ -183,6 +188,8 @@ int main(int argc, char **argv) {
       return 0;
     }
     const Arguments a = parse(argc, argv);
+    if (!a.restart.empty() && a.command != "run")
+      throw glossa::io::DeckError("--restart belongs to glossa run; see glossa --help");
     const Teuchos::ParameterList schema = glossa::app::deckSchema();
     if (a.command == "schema") {
       if (root) {
@@ -238,7 +245,9 @@ int main(int argc, char **argv) {
     if (a.command == "run") {
       const auto deck = loadDeck(a, schema);
       stage = Stage::Running;
-      const auto summary = glossa::solvers::runSimulation(deck, comm, {a.output, a.quiet, a.verbose, a.controlGroups});
+      glossa::solvers::RunOptions options{a.output, a.quiet, a.verbose, a.controlGroups};
+      options.restartDirectory = a.restart;
+      const auto summary = glossa::solvers::runSimulation(deck, comm, options);
       if (a.timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
       if (summary.contains("interrupted")) return kInterrupted;
       return summary.value("converged", false) ? 0 : kNotConverged;

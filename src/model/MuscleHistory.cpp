@@ -96,4 +96,23 @@ void MuscleHistory::commit() {
   time_ = timeTrial_;
 }
 
+MuscleHistory::Snapshot MuscleHistory::snapshot() const {
+  return {lambdaC_, alpha_, inputTrial_, externalLambdaC_, override_, time_, dt_};
+}
+
+void MuscleHistory::restore(const Snapshot &state) {
+  bool fits = state.lambdaC.size() == lambdaC_.size() && state.alpha.size() == alpha_.size() &&
+              state.overrides.size() == override_.size() && state.externalLambdaC.size() == externalLambdaC_.size();
+  for (std::size_t m = 0; fits && m < externalLambdaC_.size(); ++m)
+    fits = state.externalLambdaC[m].size() == externalLambdaC_[m].size();
+  if (!fits) throw std::invalid_argument("MuscleHistory::restore: the state is another mesh's or partition's");
+  lambdaC_ = lambdaCTrial_ = state.lambdaC;
+  alpha_ = alphaTrial_ = state.alpha;
+  inputTrial_ = state.input;
+  externalLambdaC_ = externalLambdaCTrial_ = state.externalLambdaC;
+  override_ = state.overrides;
+  time_ = timeTrial_ = state.time;
+  dt_ = state.dt;
+}
+
 } // namespace glossa::model

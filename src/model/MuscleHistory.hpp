@@ -57,6 +57,18 @@ public:
 
   void commit();
 
+  // The committed state, for a checkpoint (glossa run --restart), and its restoration: the trial
+  // values become the committed ones, as after commit().
+  struct Snapshot {
+    std::vector<double> lambdaC, alpha, input;
+    std::vector<std::vector<double>> externalLambdaC;
+    std::vector<std::optional<double>> overrides;
+    double time = 0.0, dt = 1.0;
+  };
+  Snapshot snapshot() const;
+  // Throws std::invalid_argument if its sizes are not this history's (another mesh or partition).
+  void restore(const Snapshot &state);
+
 private:
   const MuscleArchitecture *architecture_ = nullptr;
   std::vector<int> region_;         // per local element

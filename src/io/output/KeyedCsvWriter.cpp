@@ -8,13 +8,26 @@
 namespace glossa::io {
 
 KeyedCsvWriter::KeyedCsvWriter(const std::filesystem::path &file, const std::string &keyColumn,
-                               const std::vector<std::string> &valueColumns)
+                               const std::vector<std::string> &valueColumns, std::optional<std::uintmax_t> resumeAt)
     : file_(file), keyColumn_(keyColumn), width_(valueColumns.size()) {
+  if (resumeAt) {
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(file_, error);
+    if (error || size < *resumeAt)
+      throw OutputError("cannot resume " + file_.string() + ": it is " + (error ? "missing" : "shorter than at the checkpoint"));
+    std::filesystem::resize_file(file_, *resumeAt);
+    out_.open(file_, std::ios::out | std::ios::app);
+    bytes_ = *resumeAt;
+    if (!out_) throw OutputError("cannot write " + file_.string());
+    return;
+  }
   if (file_.has_parent_path()) std::filesystem::create_directories(file_.parent_path());
   out_.open(file_, std::ios::out | std::ios::trunc);
   std::string header = "time [s]," + keyColumn;
   for (const auto &c : valueColumns) header += ',' + c;
-  out_ << header << '\n' << std::flush;
+  header += '\n';
+  out_ << header << std::flush;
+  bytes_ = header.size();
   if (!out_) throw OutputError("cannot write " + file_.string());
 }
 
@@ -37,6 +50,7 @@ void KeyedCsvWriter::append(double time, const std::vector<std::pair<std::string
   out_.write(text.data(), static_cast<std::streamsize>(text.size()));
   out_.flush();
   if (!out_) throw OutputError("cannot write " + file_.string());
+  bytes_ += text.size();
 }
 
 } // namespace glossa::io

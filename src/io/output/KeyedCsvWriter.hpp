@@ -7,8 +7,10 @@
 // run killed between calls leaves every earlier row complete; a kill during a call can at worst
 // cut its last row short, which a reader recognises by the missing fields.
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,8 +22,11 @@ public:
   // Creates (or empties) `file` and writes the header "time [s],<keyColumn>,<valueColumns>"
   // (value columns named with their unit, "ux [m]"); creates
   // the parent directory if missing. Throws std::runtime_error if the file cannot be written.
+  // `resumeAt` (a restart): the file is kept, cut back to that many bytes (what bytes() said at
+  // the checkpoint: rows written after it, perhaps cut short by a kill, go), and appended to;
+  // std::runtime_error if it is shorter than that.
   KeyedCsvWriter(const std::filesystem::path &file, const std::string &keyColumn,
-                 const std::vector<std::string> &valueColumns);
+                 const std::vector<std::string> &valueColumns, std::optional<std::uintmax_t> resumeAt = std::nullopt);
 
   // Each row: a key and one value per value column. Throws std::invalid_argument (before writing
   // anything) for a key that CSV cannot carry unquoted (empty, or containing ',', '"', '\n' or
@@ -29,11 +34,14 @@ public:
   void append(double time, const std::vector<std::pair<std::string, std::vector<double>>> &rows);
 
   const std::filesystem::path &file() const { return file_; }
+  // The file's length so far: every complete row.
+  std::uintmax_t bytes() const { return bytes_; }
 
 private:
   std::filesystem::path file_;
   std::string keyColumn_;
   std::size_t width_;
+  std::uintmax_t bytes_ = 0;
   std::ofstream out_;
 };
 

@@ -112,6 +112,24 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
   writeXdmf();
 }
 
+ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::string &baseName, std::size_t numNodes,
+                           std::size_t numCells, std::vector<XdmfStep> resumeSteps)
+    : directory_(directory), baseName_(baseName),
+      mesh_{baseName + ".h5", numNodes, numCells, "/mesh/coordinates", "/mesh/topology"}, steps_(std::move(resumeSteps)) {
+  checkBaseName(baseName_);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const Hdf5Handle file(H5Fopen(hdf5Path().c_str(), H5F_ACC_RDWR, unlockedAccess().get()), H5Fclose,
+                        "opening " + hdf5Path().string() + " to resume it");
+  // Steps written after the checkpoint are written again by the restarted run.
+  for (std::size_t k = steps_.size();; ++k) {
+    const std::string group = stepGroupName(k);
+    if (H5Lexists(file.get(), group.c_str(), H5P_DEFAULT) <= 0) break;
+    checkHdf5(H5Ldelete(file.get(), group.c_str(), H5P_DEFAULT), "removing /" + group);
+  }
+  checkHdf5(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing " + hdf5Path().string());
+  writeXdmf();
+}
+
 ResultWriter::~ResultWriter() = default;
 
 void ResultWriter::checkStep(double time, const std::vector<Field> &nodeFields,

@@ -39,6 +39,12 @@ public:
   ResultWriter(const std::filesystem::path &directory, const std::string &baseName,
                const std::vector<Eigen::Vector3d> &nodes,
                const std::vector<std::array<std::int64_t, 8>> &hexes);
+  // A restart's: keeps the existing <baseName>.h5, drops its steps after the first
+  // `resumeSteps.size()` (written after the checkpoint) and carries on from `resumeSteps` (what
+  // steps() said at the checkpoint). Throws std::runtime_error if the file cannot be opened (a
+  // kill during an HDF5 flush can damage it).
+  ResultWriter(const std::filesystem::path &directory, const std::string &baseName, std::size_t numNodes,
+               std::size_t numCells, std::vector<XdmfStep> resumeSteps);
   ~ResultWriter();
   ResultWriter(const ResultWriter &) = delete;
   ResultWriter &operator=(const ResultWriter &) = delete;
@@ -49,6 +55,7 @@ public:
   // repeats another field's; also when `time` is not finite or not after the previous step's.
   void writeStep(double time, const std::vector<Field> &nodeFields, const std::vector<Field> &cellFields);
   std::size_t stepsWritten() const { return steps_.size(); }
+  const std::vector<XdmfStep> &steps() const { return steps_; }
 
   std::filesystem::path hdf5Path() const { return directory_ / (baseName_ + ".h5"); }
   std::filesystem::path xdmfPath() const { return directory_ / (baseName_ + ".xdmf"); }

@@ -21,8 +21,10 @@ class TraceWriter {
 public:
   // Creates (or empties) `file` and writes the header; creates the parent directory if missing.
   // Throws std::runtime_error if the file cannot be written.
-  explicit TraceWriter(const std::filesystem::path &file)
-      : csv_(file, "point", {"ux [m]", "uy [m]", "uz [m]", "dx [m]", "dy [m]", "dz [m]"}) {}
+  // `resumeAt`: a restart's (KeyedCsvWriter).
+  explicit TraceWriter(const std::filesystem::path &file, std::optional<std::uintmax_t> resumeAt = std::nullopt)
+      : csv_(file, "point", {"ux [m]", "uy [m]", "uz [m]", "dx [m]", "dy [m]", "dz [m]"}, resumeAt) {}
+  std::uintmax_t bytes() const { return csv_.bytes(); }
 
   struct Point {
     std::string name;

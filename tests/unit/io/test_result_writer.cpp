@@ -303,6 +303,42 @@ TEST(ResultWriter, KilledProcessLeavesWrittenStepReadable) {
   EXPECT_EQ(xdmfTimes(dir / "killed.xdmf"), std::vector<double>{0.25});
 }
 
+// A restart (glossa run --restart) resumes the files from a checkpoint made after two steps: the
+// third step, written before the run was killed, goes, and the steps written after the restart
+// follow the first two as if the run had never stopped.
+TEST(ResultWriter, ResumedAtACheckpointDropsTheLaterStepsAndCarriesOn) {
+  ScratchDirectory dir;
+  const TwoHexMesh mesh;
+  const StepData s0 = makeStep(0.1, 3.0, mesh), s1 = makeStep(0.2, 5.0, mesh), s2 = makeStep(0.3, 7.0, mesh),
+                 again = makeStep(0.3, 13.0, mesh), s3 = makeStep(0.4, 17.0, mesh);
+  std::vector<XdmfStep> atCheckpoint;
+  {
+    ResultWriter writer(dir.path(), "results", mesh.nodes, mesh.hexes);
+    write(writer, s0);
+    write(writer, s1);
+    atCheckpoint = writer.steps();
+    write(writer, s2);
+  }
+  {
+    ResultWriter writer(dir.path(), "results", mesh.nodes.size(), mesh.hexes.size(), atCheckpoint);
+    EXPECT_EQ(xdmfTimes(dir / "results.xdmf"), (std::vector<double>{0.1, 0.2}));
+    write(writer, again);
+    write(writer, s3);
+  }
+  EXPECT_EQ(xdmfTimes(dir / "results.xdmf"), (std::vector<double>{0.1, 0.2, 0.3, 0.4}));
+  const Hdf5File file(dir / "results.h5");
+  expectMeshReadsBack(file, mesh);
+  expectStepReadsBack(file, "/step_000001", s1);
+  expectStepReadsBack(file, "/step_000002", again);
+  expectStepReadsBack(file, "/step_000003", s3);
+  expectXdmfMatchesHdf5(dir / "results.xdmf", file, "results.h5");
+}
+
+TEST(ResultWriter, ResumingAMissingFileIsAnOutputError) {
+  ScratchDirectory dir;
+  EXPECT_THROW(ResultWriter(dir.path(), "results", 12, 2, {}), std::runtime_error);
+}
+
 TEST(ResultWriter, NewRunReplacesEarlierFiles) {
   ScratchDirectory dir;
   const TwoHexMesh mesh;
