@@ -208,6 +208,8 @@ struct Simulation::Attempt {
   std::string why;
   double minCornerJ = 1.0;       // the smallest corner det F of the converged state
   mesh::ElementId cornerElement = 0; // where
+  double minRegularCornerJ = 1.0; // the same over regular corners (Assembler::WorstCorner)
+  mesh::ElementId regularCornerElement = 0;
   double pathStiffness = std::numeric_limits<double>::quiet_NaN(); // S (LimitPointMonitor); NaN: not measured
   bool unstable = false;         // converged, but past a limit point (S <= 0)
 };
@@ -671,6 +673,8 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
     const auto worst = assembler_->worstCorner(state.u);
     out.minCornerJ = worst.J;
     out.cornerElement = worst.element;
+    out.minRegularCornerJ = worst.regularJ;
+    out.regularCornerElement = worst.regularElement;
   }
   out.ok = out.uzawa.converged && out.muscle.valid;
   if (!out.ok) {
@@ -828,6 +832,7 @@ void Simulation::record(const Trial &trial) {
   step["mean_dilatation_error"] = r.dilatation.mean;
   step["max_volume_change"] = r.dilatation.maxVolumeChange;
   step["min_corner_J"] = trial.attempt.minCornerJ;
+  step["min_regular_corner_J"] = trial.attempt.minRegularCornerJ;
   if (r.augmentationRaises > 0) step["penalty_ratios"] = uzawa_->penaltyRatios();
   if (std::isfinite(trial.attempt.pathStiffness)) step["path_stiffness"] = trial.attempt.pathStiffness;
   if (!(trial.attempt.minCornerJ > 0.0) && talk_)
@@ -839,7 +844,7 @@ void Simulation::record(const Trial &trial) {
   for (const auto &n : r.newton) histories.push_back({{"residual_norms", n.residualNorms}, {"krylov", n.linearIterationsPerStep}});
   step["newton_solves"] = histories;
   nlohmann::json reactionJson = nlohmann::json::object();
-  for (const auto &[name, force] : reactions) reactionJson[name] = force;
+  for (const auto &[name, row] : reactions) reactionJson[name] = std::vector<double>(row.begin(), row.begin() + 3); // the force
   step["reactions"] = reactionJson;
   if (!scene_->muscles.groups.empty()) {
     nlohmann::json activation = nlohmann::json::object();

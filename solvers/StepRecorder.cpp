@@ -52,7 +52,7 @@ StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::file
   }
   if (!assembler.scene().dirichlet.empty())
     reactions_ = std::make_unique<io::KeyedCsvWriter>(dir / "reactions.csv", "condition",
-                                                      std::vector<std::string>{"fx [N]", "fy [N]", "fz [N]"},
+                                                      std::vector<std::string>{"fx [N]", "fy [N]", "fz [N]", "power [W]"},
                                                       resumeAt("reactions.csv"));
   if (!assembler.scene().muscles.groups.empty())
     activation_ = std::make_unique<io::KeyedCsvWriter>(
@@ -94,10 +94,12 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::activatio
 
 std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::reactionRows(const assembly::Vector &u, double time,
                                                                       const std::vector<double> &lambda) const {
-  const auto forces = assembler_.reactions(u, time, lambda);
+  const auto reactions = assembler_.reactions(u, time, lambda);
   std::vector<std::pair<std::string, std::vector<double>>> rows;
-  for (std::size_t b = 0; b < forces.size(); ++b)
-    rows.push_back({assembler_.scene().dirichlet[b].name, {forces[b].x(), forces[b].y(), forces[b].z()}});
+  for (std::size_t b = 0; b < reactions.size(); ++b) {
+    const Eigen::Vector3d &f = reactions[b].force;
+    rows.push_back({assembler_.scene().dirichlet[b].name, {f.x(), f.y(), f.z(), reactions[b].power}});
+  }
   return rows;
 }
 

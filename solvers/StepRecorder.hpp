@@ -51,7 +51,7 @@ public:
   std::vector<std::pair<std::string, std::vector<double>>> activationRows(const assembly::MuscleFields &muscle,
                                                                           const std::vector<double> &input) const;
 
-  // The reaction of every Dirichlet condition [N] (collective).
+  // The reaction of every Dirichlet condition: fx, fy, fz [N] and its power [W] (collective).
   std::vector<std::pair<std::string, std::vector<double>>> reactionRows(const assembly::Vector &u, double time,
                                                                         const std::vector<double> &lambda) const;
 

@@ -114,11 +114,10 @@ Teuchos::RCP<FEMatrix> Assembler::createMatrix() const { return Teuchos::rcp(new
 void Assembler::applyDirichlet(Vector &u, double time) const {
   for (const auto &bc : scene_.dirichlet) {
     if (bc.elastic()) continue;
-    const double s = bc.scale(time);
     for (mesh::NodeId n : bc.nodes) {
       if (layout_.nodeOwner[n] != layout_.rank) continue;
       for (int c = 0; c < 3; ++c)
-        if (bc.fixed[c]) u.replaceGlobalValue(layout_.dof(n, c), bc.value[c] * s);
+        if (bc.fixed[c]) u.replaceGlobalValue(layout_.dof(n, c), bc.prescribed(c, scene_.mesh.nodes[n], time));
     }
   }
 }
@@ -318,19 +317,28 @@ Assembler::WorstCorner Assembler::worstCorner(const Vector &u) const {
   Vector uOverlap(overlapMap_);
   importToOverlap(u, uOverlap);
   auto uData = uOverlap.getData(0);
-  WorstCorner local{std::numeric_limits<double>::infinity(), std::numeric_limits<mesh::ElementId>::max()};
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  constexpr auto none = std::numeric_limits<mesh::ElementId>::max();
+  std::array<std::pair<double, mesh::ElementId>, 2> local{{{inf, none}, {inf, none}}}; // all corners, regular ones
   for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
     const auto e = layout_.localElements[i];
-    const double J = fem::minCornerJacobian(mesh.elementCoordinates(e), elementDisplacement(i, uData));
-    if (J < local.J || (J == local.J && e < local.element)) local = {J, e};
+    const auto X = mesh.elementCoordinates(e);
+    const auto ue = elementDisplacement(i, uData);
+    const double J[2] = {fem::minCornerJacobian(X, ue), fem::minRegularCornerJacobian(X, ue, kRegularCorner)};
+    for (int k = 0; k < 2; ++k)
+      if (J[k] < local[k].first || (J[k] == local[k].first && e < local[k].second)) local[k] = {J[k], e};
   }
-  WorstCorner global{0.0, 0};
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, local.J, Teuchos::outArg(global.J));
-  const long long mine = local.J == global.J ? static_cast<long long>(local.element) : std::numeric_limits<long long>::max();
-  long long element = 0;
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(element));
-  global.element = static_cast<mesh::ElementId>(element);
-  return global;
+  // The smallest over the ranks, and the lowest element id among equals.
+  std::array<std::pair<double, mesh::ElementId>, 2> global{};
+  for (int k = 0; k < 2; ++k) {
+    double J = 0.0;
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, local[k].first, Teuchos::outArg(J));
+    const long long mine = local[k].first == J ? static_cast<long long>(local[k].second) : std::numeric_limits<long long>::max();
+    long long element = 0;
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(element));
+    global[k] = {J, static_cast<mesh::ElementId>(element)};
+  }
+  return {global[0].first, global[0].second, global[1].first, global[1].second};
 }
 
 void Assembler::scatterLoadBlock(const mesh::NodeId *nodes, int n, const double *f, const double *df,
@@ -378,14 +386,14 @@ void Assembler::addElasticSupports(const Teuchos::ArrayRCP<const double> &uData,
   // k (u - g) and the tangent k on the diagonal (scatterLoadBlock subtracts f and df).
   for (const auto &bc : scene_.dirichlet) {
     if (!bc.elastic()) continue;
-    const double s = bc.scale(time), k = bc.nodeStiffness;
+    const double k = bc.nodeStiffness;
     for (mesh::NodeId n : bc.nodes) {
       if (layout_.nodeOwner[n] != layout_.rank) continue;
       Eigen::Vector3d f = Eigen::Vector3d::Zero();
       Eigen::Matrix3d df = Eigen::Matrix3d::Zero();
       for (int c = 0; c < 3; ++c) {
         if (!bc.fixed[c]) continue;
-        f(c) = -k * (uData[overlapMap_->getLocalElement(layout_.dof(n, c))] - bc.value[c] * s);
+        f(c) = -k * (uData[overlapMap_->getLocalElement(layout_.dof(n, c))] - bc.prescribed(c, scene_.mesh.nodes[n], time));
         df(c, c) = -k;
       }
       scatterLoadBlock(&n, 1, f.data(), df.data(), fData, K, /*constrainedToo=*/false);
@@ -553,32 +561,37 @@ Vector Assembler::nodalForces(const Teuchos::ArrayRCP<const double> &uData, doub
   return f;
 }
 
-std::vector<Eigen::Vector3d> Assembler::reactions(const Vector &u, double time, const std::vector<double> &lambda) const {
+std::vector<Reaction> Assembler::reactions(const Vector &u, double time, const std::vector<double> &lambda) const {
   Vector uOverlap(overlapMap_);
   importToOverlap(u, uOverlap);
   auto uData = uOverlap.getData(0);
   const Vector f = nodalForces(uData, time, lambda, /*surfaceLoads=*/true);
   auto fOwned = f.getData(0);
-  std::vector<double> local(3 * scene_.dirichlet.size(), 0.0), global(local.size(), 0.0);
+  // Per condition: the force (3) and its power (1), the sum of R . du/dt over its components.
+  std::vector<double> local(4 * scene_.dirichlet.size(), 0.0), global(local.size(), 0.0);
   for (std::size_t b = 0; b < scene_.dirichlet.size(); ++b) {
     const auto &bc = scene_.dirichlet[b];
     for (mesh::NodeId n : bc.nodes) {
       if (layout_.nodeOwner[n] != layout_.rank) continue;
       for (int c = 0; c < 3; ++c) {
         if (!bc.fixed[c]) continue;
+        double force = 0.0;
         if (!bc.elastic()) {
-          local[3 * b + c] += fOwned[ownedMap_->getLocalElement(layout_.dof(n, c))];
+          force = fOwned[ownedMap_->getLocalElement(layout_.dof(n, c))];
         } else if (!constrained_[3 * n + c]) { // the spring's force on the body
           const double u = uData[overlapMap_->getLocalElement(layout_.dof(n, c))];
-          local[3 * b + c] -= bc.nodeStiffness * (u - bc.value[c] * bc.scale(time));
+          force = -bc.nodeStiffness * (u - bc.prescribed(c, scene_.mesh.nodes[n], time));
         }
+        local[4 * b + c] += force;
+        if (force != 0.0) local[4 * b + 3] += force * bc.prescribedRate(c, scene_.mesh.nodes[n], time);
       }
     }
   }
   if (!local.empty())
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
-  std::vector<Eigen::Vector3d> out;
-  for (std::size_t b = 0; b < scene_.dirichlet.size(); ++b) out.emplace_back(global[3 * b], global[3 * b + 1], global[3 * b + 2]);
+  std::vector<Reaction> out;
+  for (std::size_t b = 0; b < scene_.dirichlet.size(); ++b)
+    out.push_back({Eigen::Vector3d(global[4 * b], global[4 * b + 1], global[4 * b + 2]), global[4 * b + 3]});
   return out;
 }
 

@@ -65,6 +65,12 @@ struct PressureCoupling {
   std::vector<double> referenceVolume, currentVolume; // per local element
 };
 
+// A Dirichlet condition's reaction: the force the support exerts on the body [N], and its power [W].
+struct Reaction {
+  Eigen::Vector3d force;
+  double power;
+};
+
 class Assembler {
 public:
   Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm);
@@ -108,7 +114,11 @@ public:
   struct WorstCorner {
     double J;
     mesh::ElementId element; // lowest id among equals
+    // The same over regular corners (fem::minRegularCornerJacobian with kRegularCorner).
+    double regularJ = 0.0;
+    mesh::ElementId regularElement = 0;
   };
+  static constexpr double kRegularCorner = 0.2;
   WorstCorner worstCorner(const Vector &u) const;
 
   // The muscle history (activation per group, lambda_c per point) of this rank's elements: the
@@ -123,8 +133,10 @@ public:
   // The reaction of every Dirichlet condition (scene order): the sum over its nodes of the
   // internal minus external force in its fixed components, i.e. the force the support exerts.
   // A node in several conditions counts in each. For an elastic support: the sum of its springs'
-  // forces on the body, -k (u - g), over the components no other condition fixes. Collective.
-  std::vector<Eigen::Vector3d> reactions(const Vector &u, double time, const std::vector<double> &lambda) const;
+  // forces on the body, -k (u - g), over the components no other condition fixes. With it its
+  // power, sum over the nodes and fixed components of R . du_prescribed/dt: with a displacement
+  // driven cavity wall, the pressure it holds is that power over the cavity's volume rate. Collective.
+  std::vector<Reaction> reactions(const Vector &u, double time, const std::vector<double> &lambda) const;
   // Per face set named: the force the world exerts on the body through it, sum over the set's
   // nodes of f_int - f_body (internal forces less body forces): a support's reaction, a load's
   // resultant. A node shared by two sets counts in both.

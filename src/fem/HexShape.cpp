@@ -1,5 +1,7 @@
 #include "fem/HexShape.hpp"
 
+#include <array>
+
 #include <algorithm>
 #include <limits>
 
@@ -62,6 +64,22 @@ double minCornerJacobian(const NodeMatrix &X, const NodeMatrix &u) {
     if (!(reference > 0.0)) return -std::numeric_limits<double>::infinity();
     smallest = std::min(smallest, (x.transpose() * dNdxi).determinant() / reference);
   }
+  return smallest;
+}
+
+double minRegularCornerJacobian(const NodeMatrix &X, const NodeMatrix &u, double regularity) {
+  const NodeMatrix x = X + u;
+  std::array<double, 8> reference{}, deformed{};
+  double mean = 0.0;
+  for (int a = 0; a < 8; ++a) {
+    const Eigen::Matrix<double, 8, 3> dNdxi = hexShapeGradient(hexNodeXi(a));
+    reference[a] = (X.transpose() * dNdxi).determinant();
+    deformed[a] = (x.transpose() * dNdxi).determinant();
+    mean += reference[a] / 8.0;
+  }
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 8; ++a)
+    if (reference[a] > 0.0 && reference[a] >= regularity * mean) smallest = std::min(smallest, deformed[a] / reference[a]);
   return smallest;
 }
 

@@ -38,5 +38,10 @@ bool hexGradients(const NodeMatrix &X, const Eigen::Vector3d &xi,
 // all eight Gauss points while a corner has turned over (a node pushed past the opposite face).
 // -infinity for a degenerate reference corner.
 double minCornerJacobian(const NodeMatrix &X, const NodeMatrix &u);
+// The same over the element's regular corners only: those whose reference det dX/dxi is at least
+// `regularity` times the mean of its eight (a poorly shaped hexahedron's near-degenerate corner
+// amplifies any motion into a large det F there; a regular corner turned over means the element
+// is folded through itself). +infinity if no corner is regular.
+double minRegularCornerJacobian(const NodeMatrix &X, const NodeMatrix &u, double regularity);
 
 } // namespace glossa::fem

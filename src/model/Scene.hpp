@@ -3,7 +3,10 @@
 // material with its fibres and muscle groups, boundary conditions and loads with their time
 // functions, and the named points whose displacement is traced. No Trilinos.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +35,20 @@ struct DirichletCondition {
   TimeFunction scale = TimeFunction::constant();
   double nodeStiffness = 0.0; // [N/m] per node and component; 0: fixed
   bool elastic() const { return nodeStiffness > 0.0; }
+  // Per component, a prescribed displacement as an expression of the reference position and time
+  // (Boundary conditions/<name>/ux, uy, uz); where empty, value * scale(t).
+  std::array<std::function<double(const Eigen::Vector3d &, double)>, 3> expression;
+  // The prescribed displacement of component c at a node of reference position X at time t.
+  double prescribed(int c, const Eigen::Vector3d &X, double t) const {
+    return expression[c] ? expression[c](X, t) : value[c] * scale(t);
+  }
+  // Its rate d/dt, for the power of the condition's reaction: a central difference (forward at
+  // t = 0, where a time function starts).
+  double prescribedRate(int c, const Eigen::Vector3d &X, double t) const {
+    const double h = 1e-7 * std::max(1.0, std::abs(t));
+    if (t < h) return (prescribed(c, X, t + h) - prescribed(c, X, t)) / h;
+    return (prescribed(c, X, t + h) - prescribed(c, X, t - h)) / (2.0 * h);
+  }
 };
 
 // A dead traction (force per reference area) on a face set, scaled in time.

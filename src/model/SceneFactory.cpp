@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "io/deck/DeckError.hpp"
+#include "io/deck/SpaceTimeExpression.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "loads/BodyForce.hpp"
 #include "mesh/AnsysReader.hpp"
@@ -133,6 +134,12 @@ ParameterList dirichletParameters() {
                     {"x", "y", "z", "x,y", "x,z", "y,z", "x,y,z"});
   io::declareDoubleArray(p, "value", Array<double>(3, 0.0), "m",
                          "prescribed displacement (entries of free components ignored)", 3);
+  for (const char *c : {"ux", "uy", "uz"})
+    io::declareString(p, c, "",
+                      std::string("the prescribed ") + c + " [m] of a constrained component as an expression of the "
+                      "reference position X, Y, Z [m] and the time t [s], e.g. '1.2 * t * X' (+ - * / ^, sqrt, exp, "
+                      "log, sin, cos, abs, a < b ? c : d); replaces value and time function for that component; "
+                      "empty: value x time function");
   p.set("time function", TimeFunction::validParameters(), "scales the value in time");
   p.sublist("time function").set("type", std::string("constant"));
   return p;
@@ -389,6 +396,21 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     for (int i = 0; i < 3; ++i) bc.fixed[i] = comps.find("xyz"[i]) != std::string::npos;
     bc.value = vec3(b.get<Array<double>>("value"));
     bc.scale = timeFunction(deck, {"Boundary conditions", name, "time function"}, endTime);
+    for (int c = 0; c < 3; ++c) {
+      const char *key = c == 0 ? "ux" : c == 1 ? "uy" : "uz";
+      const std::string text = b.get<std::string>(key);
+      if (text.find_first_not_of(" \t") == std::string::npos) continue;
+      if (!bc.fixed[c])
+        throw io::DeckError(deck.where({"Boundary conditions", name, key}) + ": component " + std::string(1, "xyz"[c]) +
+                            " is not among the condition's components '" + comps + "'");
+      std::shared_ptr<const io::SpaceTimeExpression> expression;
+      try {
+        expression = std::make_shared<const io::SpaceTimeExpression>(text);
+      } catch (const std::invalid_argument &e) {
+        throw io::DeckError(deck.where({"Boundary conditions", name, key}) + ": " + e.what());
+      }
+      bc.expression[c] = [expression](const Eigen::Vector3d &X, double t) { return (*expression)(X.x(), X.y(), X.z(), t); };
+    }
     if (b.get<std::string>("type") == "elastic") {
       const double k = b.get<double>("stiffness");
       if (!(k > 0.0))
