@@ -52,6 +52,30 @@ TEST(CornerJacobian, AnElementFoldedThroughItselfIsSeenAtTheCorners) {
   EXPECT_NEAR(minCornerJacobian(X, u), -0.5, 1e-14);
 }
 
+// A poorly shaped hexahedron (one corner pushed nearly into the plane of its neighbours) has a
+// near-degenerate corner where any motion makes a large det F; the regular corners leave it out.
+TEST(CornerJacobian, RegularCornersLeaveOutANearlyDegenerateOne) {
+  NodeMatrix X = unitCube();
+  // Node (1, 1, 1) at (0.7, 0.7, 0.7), near the plane x + y + z = 2 of its three neighbours: its
+  // corner's reference det is 0.129 of the mean. Moving it by -0.1 in each direction takes it
+  // across that plane: det F = -2 there, 6/7 at the neighbours' corners, 1 at the others.
+  X.row(6) = Eigen::RowVector3d(0.7, 0.7, 0.7);
+  NodeMatrix u = NodeMatrix::Zero();
+  u.row(6) = Eigen::RowVector3d(-0.1, -0.1, -0.1);
+  EXPECT_NEAR(minCornerJacobian(X, u), -2.0, 1e-12);
+  EXPECT_NEAR(minRegularCornerJacobian(X, u, 0.2), 6.0 / 7.0, 1e-12);
+  // Every corner counts at regularity 0; none at a regularity above their largest ratio.
+  EXPECT_EQ(minRegularCornerJacobian(X, u, 0.0), minCornerJacobian(X, u));
+  EXPECT_EQ(minRegularCornerJacobian(X, u, 10.0), std::numeric_limits<double>::infinity());
+}
+
+TEST(CornerJacobian, AFoldAtARegularCornerIsSeenByBoth) {
+  const NodeMatrix X = unitCube();
+  NodeMatrix u = NodeMatrix::Zero();
+  u.row(6) = Eigen::RowVector3d(0.5, 0.5, 0.5) - X.row(6);
+  EXPECT_NEAR(minRegularCornerJacobian(X, u, 0.2), -0.5, 1e-14);
+}
+
 TEST(CornerJacobian, DegenerateReferenceIsMinusInfinity) {
   NodeMatrix X = unitCube();
   X.row(6) = X.row(0); // collapsed
