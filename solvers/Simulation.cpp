@@ -23,6 +23,7 @@
 #include "io/output/SummaryWriter.hpp"
 #include "io/output/TraceWriter.hpp"
 #include "model/SceneFactory.hpp"
+#include "model/SymmetryPlanes.hpp"
 #include "solvers/CheckpointContents.hpp"
 #include "solvers/CommControlGroups.hpp"
 #include "solvers/ControlDriver.hpp"
@@ -212,6 +213,7 @@ struct Simulation::Attempt {
   mesh::ElementId regularCornerElement = 0;
   double pathStiffness = std::numeric_limits<double>::quiet_NaN(); // S (LimitPointMonitor); NaN: not measured
   bool unstable = false;         // converged, but past a limit point (S <= 0)
+  nlohmann::json insideOut;      // converged inside out: where (SymmetryPlanes.hpp)
 };
 
 struct Simulation::Trial {
@@ -336,6 +338,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                                           : buildMixedBlockSolver(linearSection, context, mixedPressure)));
   model_->setMixedPressure(mixedPressure);
   for (const auto &x : scene.mesh.nodes) lengthScale_ = std::max(lengthScale_, x.norm());
+  planes_ = model::findSymmetryPlanes(scene.mesh, scene.dirichlet);
   if (mixedPressure.is_null() && D.sublist("Time").get<std::string>("at a limit point") == "stop")
     limit_ = std::make_unique<LimitPointMonitor>(steps_->nominalStep(), D.sublist("Time").get<double>("limit point tolerance"));
   newton_ = std::make_unique<NewtonSolver>(model_, D.sublist("Nonlinear solver"), lengthScale_,
@@ -678,7 +681,8 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
     out.regularCornerElement = worst.regularElement;
   }
   out.ok = out.uzawa.converged && out.muscle.valid;
-  if (!out.ok) {
+  if (out.ok) refuseInsideOut(state, out);
+  if (!out.ok && out.why.empty()) {
     const UzawaResult &r = out.uzawa;
     const NewtonResult &last = r.newton.back();
     out.why = !out.muscle.valid ? "a contractile-stretch solve failed at the converged state"
@@ -688,6 +692,26 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
                                 : "Uzawa did not reach the dilatation tolerance";
   }
   return out;
+}
+
+void Simulation::refuseInsideOut(const StepState &state, Attempt &attempt) const {
+  if (planes_.empty()) return;
+  const model::PlaneCrossing deepest = model::deepestCrossing(planes_, scene_->mesh, assembler_->gatherDisplacement(state.u));
+  // Material across a symmetry plane overlaps its mirror image. A node next to a plane but not
+  // on it (on another plane's edge) may sit a little across in a sound state (2.6e-9 m, 1.3e-6 of
+  // the thick sphere's size, at p = 0.72 mu): 1e-3 of the body's size is the threshold.
+  if (!(deepest.distance < -1e-3 * lengthScale_)) return;
+  const model::SymmetryPlane &plane = planes_[deepest.plane];
+  const std::string &name = scene_->dirichlet[plane.condition].name;
+  const char axis = "xyz"[plane.axis];
+  char why[400];
+  std::snprintf(why, sizeof why,
+                "the converged state is inside out: the body has passed through its symmetry plane '%s' (%c = %.6g m), "
+                "node %zu lying %.3g m on the far side, where its mirror image is",
+                name.c_str(), axis, plane.position, static_cast<std::size_t>(deepest.node), -deepest.distance);
+  attempt.ok = false; // on a softened path the monitor counts it as a failure past the maximum
+  attempt.why = why;
+  attempt.insideOut = {{"condition", name}, {"node", deepest.node}, {"distance", -deepest.distance}};
 }
 
 void Simulation::applyControlInputs(const std::vector<double> &inputs) {
@@ -756,6 +780,11 @@ void Simulation::controlledStep(Trial &trial) {
 bool Simulation::rollBack() {
   const std::string &why = trial_->attempt.why;
   if (talk_) std::printf("  step failed at t = %.6g: %s; cutting back\n", trial_->time, why.c_str());
+  if (!trial_->attempt.insideOut.is_null()) {
+    nlohmann::json refusal = trial_->attempt.insideOut;
+    refusal["time"] = trial_->time;
+    doc_["inside_out_refusals"].push_back(refusal);
+  }
   if (limit_) {
     // Where it moves most: along the unstable step, or (Newton found nothing) in all so far.
     assembly::Vector motion(trial_->state.u, Teuchos::Copy);

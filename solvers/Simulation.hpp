@@ -31,6 +31,7 @@ class SummaryWriter;
 } // namespace glossa::io
 namespace glossa::model {
 struct Scene;
+struct SymmetryPlane;
 }
 
 namespace glossa::solvers {
@@ -103,6 +104,8 @@ private:
   // The limit-point check of a converged trial (LimitPointMonitor): its stiffness along the step,
   // and the trial refused when that is negative.
   void checkPathStiffness(Trial &trial);
+  // A converged state in which material has crossed a symmetry plane is refused (model/SymmetryPlanes.hpp). Collective.
+  void refuseInsideOut(const StepState &state, Attempt &attempt) const;
   // The controller, its plant and controls.csv (resumed from `resume` on a restart).
   void setUpController(const OutputMark *resume);
   void applyControlInputs(const std::vector<double> &inputs);
@@ -138,6 +141,7 @@ private:
   // Time/at a limit point = stop (not with the mixed method): the stiffness along each step.
   std::unique_ptr<LimitPointMonitor> limit_;
   double lengthScale_ = 0.0;  // the largest |X| of the mesh
+  std::vector<model::SymmetryPlane> planes_; // the inside-out check (model/SymmetryPlanes.hpp)
   bool softeningSaid_ = false; // the note that the path has softened, once
   std::unique_ptr<model::Scene> scene_;
   std::unique_ptr<CommControlGroups> groups_;

@@ -138,3 +138,20 @@ TEST(ThickSphere, DrivenByItsWallTheSphereFollowsTheFallingBranchOfTheClosedForm
   EXPECT_LT(std::abs(largest / closedMax - 1.0), 1e-2) << "the maximum";
   EXPECT_LT(worstFalling, 1e-2) << "the falling branch";
 }
+
+// An inside-out state built directly (inputs/verification/half_turned_block.xml): every node of
+// a unit block with the symmetry plane x = 0 is prescribed half a turn about the z axis in one
+// step, so J = 1 at every Gauss point and corner, the plane's nodes stay on it, and Newton has
+// nothing to solve; but the block now lies on the far side of its plane, over its mirror image.
+// The state is refused, and the run never reports it converged.
+TEST(InsideOut, ABodyTurnedThroughItsSymmetryPlaneIsRefused) {
+  const auto output = test::scratchDirectory("half_turned_block");
+  const auto s = test::runDeck(test::inputPath("verification/half_turned_block.xml"), {}, output);
+  EXPECT_FALSE(s.at("converged").get<bool>());
+  ASSERT_TRUE(s.contains("inside_out_refusals"));
+  const auto &refusal = s.at("inside_out_refusals").front();
+  EXPECT_EQ(refusal.at("time").get<double>(), 1.0);
+  EXPECT_EQ(refusal.at("condition").get<std::string>(), "symmetry x");
+  EXPECT_NEAR(refusal.at("distance").get<double>(), 1e-3, 1e-15); // the far face, at x = -1 mm
+  for (const auto &step : s.at("steps")) EXPECT_LT(step.at("time").get<double>(), 0.5);
+}
