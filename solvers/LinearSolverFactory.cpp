@@ -93,7 +93,7 @@ ParameterList mueluParameters(const ParameterList &s, const LinearSolverContext 
   int coarseSize = s.get<int>("coarse size");
   if (c.ranks > 1 && c.globalRows > 0) {
     // A one-level hierarchy would hand the whole distributed matrix to KLU2, whose multi-rank
-    // path is wrong here (TRILINOS-NOTES): make sure there is a coarse level to gather.
+    // path is wrong here (doc/developing.md, measured Trilinos facts): make sure there is a coarse level to gather.
     coarseSize = static_cast<int>(std::min<long long>(coarseSize, std::max<long long>(c.globalRows / 8, 3)));
   }
   m.set("coarse: max size", coarseSize);
@@ -144,7 +144,7 @@ ParameterList mueluParameters(const ParameterList &s, const LinearSolverContext 
     sp.set("relaxation: sweeps", degree);
   }
   if (c.ranks > 1) {
-    // KLU2's multi-process path is wrong here (TRILINOS-NOTES): gather the coarse levels onto
+    // KLU2's multi-process path is wrong here (doc/developing.md, measured Trilinos facts): gather the coarse levels onto
     // one rank by repartitioning instead.
     m.set("repartition: enable", true);
     m.set("repartition: partitioner", "zoltan2");
@@ -177,7 +177,7 @@ ParameterList froschParameters(const ParameterList &s, const LinearSolverContext
   ParameterList &co = f.sublist(coarse);
   co.sublist("Blocks").sublist("1").set("Use For Coarse Space", true).set("Rotations", true).set("Verbosity", "None");
   co.sublist("ExtensionSolver").set("SolverType", "Amesos2").set("Solver", "Klu");
-  // The coarse problem on one rank: KLU2's multi-process path is wrong here (TRILINOS-NOTES).
+  // The coarse problem on one rank: KLU2's multi-process path is wrong here (doc/developing.md, measured Trilinos facts).
   co.sublist("Distribution").set("Type", "linear").set("NumProcs", 1);
   co.sublist("CoarseSolver").set("SolverType", "Amesos2").set("Solver", "Klu");
   co.set("Verbosity", "None");

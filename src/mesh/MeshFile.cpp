@@ -34,7 +34,7 @@ ImportedMesh readAnsysPair(const std::string &path) {
   throw MeshError(path + ": an ANSYS mesh is named by its .node or .elem file");
 }
 
-// The explicit factory map (STYLE.md): format name -> reader.
+// The explicit factory map (doc/developing.md, style): format name -> reader.
 const std::map<std::string, std::function<ImportedMesh(const std::string &)>> &readers() {
   static const std::map<std::string, std::function<ImportedMesh(const std::string &)>> map = {
       {"abaqus", readAbaqus}, {"ansys", readAnsysPair}, {"gmsh", readGmsh}};

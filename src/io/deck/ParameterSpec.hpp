@@ -1,7 +1,8 @@
 #pragma once
 // Declaring deck parameters: every object states its parameters with a default, a unit, a doc
-// string and an allowed range (STYLE.md: "decks validate, never guess"). The declarations are
-// the single source of the validation, of `glossa validate` and of doc/deck-reference.md.
+// string and an allowed range (doc/developing.md: values are validated, never guessed). The
+// declarations are the single source of the validation, of `glossa validate` and of
+// doc/deck-reference.md.
 
 #include <limits>
 #include <string>

@@ -1,5 +1,6 @@
 #pragma once
-// The conformance checks every isochoric material passes (STYLE.md): P = d psi/dF and
+// The conformance checks every isochoric material passes (doc/developing.md: every material
+// has a finite-difference tangent test): P = d psi/dF and
 // dP/dF by central finite differences at random deformation gradients, a stress-free
 // reference, objectivity, and no response to pure dilatation. Helpers: centralDifferenceTangent
 // (any stress function, also the history-dependent muscle law), expectConformanceAtScale
