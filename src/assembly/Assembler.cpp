@@ -324,7 +324,8 @@ Assembler::WorstCorner Assembler::worstCorner(const Vector &u) const {
     const auto e = layout_.localElements[i];
     const auto X = mesh.elementCoordinates(e);
     const auto ue = elementDisplacement(i, uData);
-    const double J[2] = {fem::minCornerJacobian(X, ue), fem::minRegularCornerJacobian(X, ue, kRegularCorner)};
+    const fem::CornerJacobians corners = fem::cornerJacobians(X, ue, kRegularCorner);
+    const double J[2] = {corners.all, corners.regular};
     for (int k = 0; k < 2; ++k)
       if (J[k] < local[k].first || (J[k] == local[k].first && e < local[k].second)) local[k] = {J[k], e};
   }

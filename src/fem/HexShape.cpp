@@ -55,19 +55,7 @@ bool hexGradients(const NodeMatrix &X, const Eigen::Vector3d &xi,
   return true;
 }
 
-double minCornerJacobian(const NodeMatrix &X, const NodeMatrix &u) {
-  const NodeMatrix x = X + u;
-  double smallest = std::numeric_limits<double>::infinity();
-  for (int a = 0; a < 8; ++a) {
-    const Eigen::Matrix<double, 8, 3> dNdxi = hexShapeGradient(hexNodeXi(a));
-    const double reference = (X.transpose() * dNdxi).determinant();
-    if (!(reference > 0.0)) return -std::numeric_limits<double>::infinity();
-    smallest = std::min(smallest, (x.transpose() * dNdxi).determinant() / reference);
-  }
-  return smallest;
-}
-
-double minRegularCornerJacobian(const NodeMatrix &X, const NodeMatrix &u, double regularity) {
+CornerJacobians cornerJacobians(const NodeMatrix &X, const NodeMatrix &u, double regularity) {
   const NodeMatrix x = X + u;
   std::array<double, 8> reference{}, deformed{};
   double mean = 0.0;
@@ -77,10 +65,24 @@ double minRegularCornerJacobian(const NodeMatrix &X, const NodeMatrix &u, double
     deformed[a] = (x.transpose() * dNdxi).determinant();
     mean += reference[a] / 8.0;
   }
-  double smallest = std::numeric_limits<double>::infinity();
-  for (int a = 0; a < 8; ++a)
-    if (reference[a] > 0.0 && reference[a] >= regularity * mean) smallest = std::min(smallest, deformed[a] / reference[a]);
-  return smallest;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  CornerJacobians out{inf, inf};
+  for (int a = 0; a < 8; ++a) {
+    if (!(reference[a] > 0.0)) {
+      out.all = -inf;
+      continue;
+    }
+    const double J = deformed[a] / reference[a];
+    out.all = std::min(out.all, J);
+    if (reference[a] >= regularity * mean) out.regular = std::min(out.regular, J);
+  }
+  return out;
+}
+
+double minCornerJacobian(const NodeMatrix &X, const NodeMatrix &u) { return cornerJacobians(X, u, 0.0).all; }
+
+double minRegularCornerJacobian(const NodeMatrix &X, const NodeMatrix &u, double regularity) {
+  return cornerJacobians(X, u, regularity).regular;
 }
 
 } // namespace glossa::fem

@@ -43,5 +43,10 @@ double minCornerJacobian(const NodeMatrix &X, const NodeMatrix &u);
 // amplifies any motion into a large det F there; a regular corner turned over means the element
 // is folded through itself). +infinity if no corner is regular.
 double minRegularCornerJacobian(const NodeMatrix &X, const NodeMatrix &u, double regularity);
+// Both in one pass over the corners (the Assembler's check after each converged step).
+struct CornerJacobians {
+  double all, regular;
+};
+CornerJacobians cornerJacobians(const NodeMatrix &X, const NodeMatrix &u, double regularity);
 
 } // namespace glossa::fem
