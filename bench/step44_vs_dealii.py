@@ -27,6 +27,7 @@ RESULTS = os.path.join(ROOT, "bench", "results")
 DECK = os.path.join(ROOT, "inputs", "verification", "step44_block.xml")
 CONFIGS = {
     "default": [],
+    "iterative": ["Linear solver/type=iterative"],
     # What this scene needs of the smoother: MueLu keeps its coarse levels between Newton iterations
     # (only the finest smoother is rebuilt) and the Chebyshev eigenvalue estimate takes 20 power
     # iterations (the default 50 guards the active-muscle scenes, doc/incompressibility.md).

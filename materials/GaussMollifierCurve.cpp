@@ -9,20 +9,30 @@
 namespace glossa::materials {
 
 namespace {
-// x^e, by repeated squaring when e is a small non-negative integer (all of Table II's and the
-// fitted exponents): std::pow dominated the cost of the local contractile solve.
-double power(double x, double e) {
-  if (e >= 0.0 && e <= 64.0 && e == std::floor(e)) {
-    auto n = static_cast<unsigned>(e);
-    double result = 1.0;
-    while (n) {
-      if (n & 1u) result *= x;
-      x *= x;
-      n >>= 1u;
-    }
-    return result;
+// x^n for a small non-negative integer n, by repeated squaring: std::pow dominated the cost of
+// the local contractile solve.
+double integerPower(double x, int n) {
+  double result = 1.0;
+  while (n) {
+    if (n & 1) result *= x;
+    x *= x;
+    n >>= 1;
   }
-  return std::pow(x, e);
+  return result;
+}
+
+int smallInteger(double e) { return e >= 0.0 && e <= 64.0 && e == std::floor(e) ? static_cast<int>(e) : -1; }
+
+// x^(e-1) and x^e (x >= 0, e >= 1): the pair each term's value and slope need.
+struct PowerPair {
+  double belowOne, full;
+};
+PowerPair powers(double x, double e, int eInt) {
+  if (eInt >= 1) {
+    const double below = integerPower(x, eInt - 1);
+    return {below, below * x};
+  }
+  return {std::pow(x, e - 1.0), std::pow(x, e)};
 }
 }  // namespace
 
@@ -42,6 +52,9 @@ GaussMollifierCurve::GaussMollifierCurve(std::vector<GaussMollifierTerm> terms, 
     bound += std::max(t.A, 0.0) * closing;
   }
   upperBound_ = std::max({bound, below_, above_});
+  for (const GaussMollifierTerm &t : terms_)
+    prepared_.push_back({t.mu, t.A, t.B, t.R, t.R > 0.0 ? std::pow(t.R, t.q) : 0.0, t.p, t.q, t.s, smallInteger(t.p),
+                         smallInteger(t.q), smallInteger(t.s)});
 }
 
 double GaussMollifierCurve::zeroBelow() const {
@@ -52,22 +65,22 @@ CurveValue GaussMollifierCurve::evaluate(double x) const {
   if (x < lower_) return {below_, 0.0};
   if (x > upper_) return {above_, 0.0};
   CurveValue f;
-  for (const GaussMollifierTerm &t : terms_) {
+  for (const PreparedTerm &t : prepared_) {
     const double d = x - t.mu;
     const double ad = std::abs(d);
+    if (t.R > 0.0 && ad >= t.R) continue;  // outside the closing factor's support: no exp needed
     const double sign = d > 0.0 ? 1.0 : (d < 0.0 ? -1.0 : 0.0);
     // Gauss part G = A exp(-B |d|^p), dG/dx = -G B p |d|^(p-1) sign(d).
-    const double G = t.A * std::exp(-t.B * power(ad, t.p));
-    const double dG = ad > 0.0 ? -G * t.B * t.p * power(ad, t.p - 1.0) * sign : 0.0;
+    const PowerPair dp = powers(ad, t.p, t.pInt);
+    const double G = t.A * std::exp(-t.B * dp.full);
+    const double dG = -G * t.B * t.p * dp.belowOne * sign;
     if (t.R > 0.0) {
-      if (ad >= t.R) continue;
       // closing factor M = (R^q - |d|^q)^s, dM/dx = -s q (R^q - |d|^q)^(s-1) |d|^(q-1) sign(d).
-      const double base = power(t.R, t.q) - power(ad, t.q);
-      const double M = power(base, t.s);
-      const double dM =
-          ad > 0.0 ? -t.s * t.q * power(base, t.s - 1.0) * power(ad, t.q - 1.0) * sign : 0.0;
-      f.value += G * M;
-      f.slope += dG * M + G * dM;
+      const PowerPair dq = powers(ad, t.q, t.qInt);
+      const PowerPair m = powers(t.Rq - dq.full, t.s, t.sInt);
+      const double dM = -t.s * t.q * m.belowOne * dq.belowOne * sign;
+      f.value += G * m.full;
+      f.slope += dG * m.full + G * dM;
     } else {
       f.value += G;
       f.slope += dG;

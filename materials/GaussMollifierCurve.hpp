@@ -39,7 +39,14 @@ class GaussMollifierCurve final : public ForceCurve {
   double upper() const { return upper_; }
 
  private:
+  // A term as evaluate() uses it: R^q once, and the exponents as integers where they are (every
+  // exponent of both parameter sets), so that |d|^p and |d|^(p-1) come from one product chain.
+  struct PreparedTerm {
+    double mu, A, B, R, Rq, p, q, s;
+    int pInt, qInt, sInt;  // -1: not a small non-negative integer, std::pow
+  };
   std::vector<GaussMollifierTerm> terms_;
+  std::vector<PreparedTerm> prepared_;
   double lower_, upper_, below_, above_;
   double upperBound_;
 };

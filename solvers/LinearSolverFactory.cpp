@@ -10,6 +10,7 @@
 
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
+#include "solvers/MumpsPreconditioner.hpp"
 
 namespace glossa::solvers {
 
@@ -17,10 +18,18 @@ using Teuchos::ParameterList;
 
 ParameterList linearSolverParameters() {
   ParameterList p;
-  io::declareString(p, "type", "iterative",
-                    "iterative: Belos Krylov solver with a preconditioner; direct: Amesos2 KLU2 "
-                    "(for comparison on small problems)",
-                    {"iterative", "direct"});
+  io::declareString(p, "type", "auto",
+                    "auto: direct on one rank up to 'direct up to' unknowns, iterative otherwise; iterative: Belos Krylov "
+                    "solver with the 'preconditioner'; direct: the 'direct solver'",
+                    {"auto", "iterative", "direct"});
+  io::declareString(p, "direct solver", "MUMPS",
+                    "MUMPS: multifrontal LU (LDL^T for a symmetric tangent), analysed once per run and "
+                    "refactored every Newton iteration, inside one Krylov iteration (MPI-parallel); KLU2: "
+                    "Amesos2 KLU2 (slow on 3D meshes, kept for comparison; one rank)",
+                    {"MUMPS", "KLU2"});
+  io::declareInt(p, "direct up to", 30000,
+                 "type = auto: the largest number of unknowns solved directly (measured crossover with "
+                 "MueLu, doc/incompressibility.md)", io::Range::atLeast(0));
   io::declareString(p, "Krylov method", "auto",
                     "auto: CG while the tangent is symmetric, GMRES otherwise", {"auto", "cg", "gmres"});
   io::declareString(p, "preconditioner", "MueLu",
@@ -204,9 +213,19 @@ ParameterList ifpack2Parameters(const ParameterList &s) {
 }
 } // namespace
 
+bool usesDirectSolve(const ParameterList &s, const LinearSolverContext &c) {
+  const std::string type = s.get<std::string>("type");
+  // auto is direct on one rank only: MUMPS schedules its parallel factorisation dynamically, so on
+  // several ranks the last bits of an answer may differ from run to run (restart would not end
+  // bit for bit as an uninterrupted run), and small problems need no second rank.
+  if (type == "auto") return c.ranks == 1 && c.globalRows > 0 && c.globalRows <= s.get<int>("direct up to");
+  return type == "direct";
+}
+
 Teuchos::RCP<ParameterList> stratimikosParameters(const ParameterList &s, const LinearSolverContext &c) {
   auto p = Teuchos::rcp(new ParameterList("Linear solver"));
-  if (s.get<std::string>("type") == "direct") {
+  const bool direct = usesDirectSolve(s, c);
+  if (direct && s.get<std::string>("direct solver") == "KLU2") {
     p->set("Linear Solver Type", "Amesos2");
     p->sublist("Linear Solver Types").sublist("Amesos2").set("Solver Type", "KLU2");
     p->set("Preconditioner Type", "None");
@@ -227,8 +246,12 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const ParameterList &s, const 
     solver.set("Output Frequency", 10);
     belos.sublist("VerboseObject").set("Verbosity Level", "medium");
   }
-  const std::string prec = s.get<std::string>("preconditioner");
-  if (prec == "MueLu") {
+  const std::string prec = direct ? std::string("MUMPS") : s.get<std::string>("preconditioner");
+  if (prec == "MUMPS") {
+    // The exact inverse inside the Krylov method: one iteration, with its residual check.
+    p->set("Preconditioner Type", "MUMPS");
+    p->sublist("Preconditioner Types").sublist("MUMPS").set("symmetric", c.symmetric);
+  } else if (prec == "MueLu") {
     p->set("Preconditioner Type", "MueLu");
     p->sublist("Preconditioner Types").set("MueLu", mueluParameters(s, c));
   } else if (prec == "FROSch") {
@@ -250,6 +273,7 @@ void registerPreconditioners(Stratimikos::DefaultLinearSolverBuilder &builder) {
   using Base = Thyra::PreconditionerFactoryBase<double>;
   using Impl = Thyra::Ifpack2PreconditionerFactory<assembly::CrsMatrix>;
   builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, Impl>(), "Ifpack2");
+  builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, MumpsPreconditionerFactory>(), "MUMPS");
 }
 } // namespace
 
@@ -267,7 +291,9 @@ buildDisplacementPreconditioner(const ParameterList &section, const LinearSolver
   registerPreconditioners(builder);
   LinearSolverContext displacementBlock = context;
   displacementBlock.symmetric = true; // K at fixed pressure is the symmetric part of a symmetric tangent
-  builder.setParameterList(stratimikosParameters(section, displacementBlock));
+  ParameterList block = section;
+  block.set("direct solver", "MUMPS"); // a preconditioner, which KLU2 through Amesos2 is not
+  builder.setParameterList(stratimikosParameters(block, displacementBlock));
   return builder.createPreconditioningStrategy("");
 }
 

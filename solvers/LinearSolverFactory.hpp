@@ -2,7 +2,8 @@
 // The linear solver of every Newton step, chosen in the deck's "Linear solver" section and built
 // through Stratimikos: Belos CG (symmetric tangent) or GMRES, preconditioned by MueLu smoothed
 // aggregation (rigid-body modes and coordinates supplied), FROSch two-level Schwarz, Ifpack2 alone,
-// or none; or a direct solve with Amesos2 for comparison. This unit holds the expensive template
+// or none; or a direct solve: MUMPS as an exact preconditioner (solvers/MumpsPreconditioner), or
+// Amesos2 KLU2 for comparison. This unit holds the expensive template
 // instantiations (Stratimikos::enableMueLu and enableFROSch, Ifpack2 registration): edit it rarely.
 
 #include <Teuchos_ParameterList.hpp>
@@ -21,6 +22,10 @@ struct LinearSolverContext {
 };
 
 Teuchos::ParameterList linearSolverParameters();
+
+// The section chooses a direct solve: type = direct, or auto on one rank at no more than 'direct up
+// to' unknowns.
+bool usesDirectSolve(const Teuchos::ParameterList &section, const LinearSolverContext &context);
 
 // The Stratimikos parameter list the deck section stands for (exposed for tests and the docs).
 Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList &section,

@@ -173,8 +173,9 @@ void requireMixedCompatible(const Teuchos::ParameterList &D, const model::Scene 
   if (scene.formulation != model::ElementFormulation::Q1P0) throw io::DeckError(why + "Material/element = Q1P0");
   if (D.sublist("Nonlinear solver").get<std::string>("line search") != "full step")
     throw io::DeckError(why + "Nonlinear solver/line search = full step (its pressure increment is not line-searched)");
-  if (D.sublist("Linear solver").get<std::string>("type") != "iterative")
-    throw io::DeckError(why + "Linear solver/type = iterative (the block system is solved by GMRES)");
+  if (D.sublist("Linear solver").get<std::string>("type") == "direct")
+    throw io::DeckError(why + "Linear solver/type = iterative or auto (the block system is solved by GMRES; "
+                              "auto may precondition its displacement block by a direct solve)");
   if (D.sublist("Control").get<std::string>("type") != "none")
     throw io::DeckError(why + "Control/type = none (the controllers' sensitivities use the condensed tangent)");
   if (scene.tissues.size() > 1)
@@ -396,6 +397,10 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                                                                                         : "Zoltan2 multijagged";
   }
   doc_["dofs"] = assembler_->layout().numGlobalDofs();
+  // What Linear solver/type = auto chose (the displacement block's preconditioner with mixed).
+  doc_["linear_solver"] = usesDirectSolve(linearSection, context)
+                              ? "direct (" + linearSection.get<std::string>("direct solver") + ")"
+                              : "iterative (" + linearSection.get<std::string>("preconditioner") + ")";
   doc_["elements"] = scene.mesh.numElements();
   doc_["incompressibility"] = incompressibility.get<std::string>("method");
   doc_["kappa_tangent"] = scene.tissues[0].volumetric.kappa();

@@ -178,7 +178,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
     result.newton.push_back(std::move(n));
     if (!newtonConverged) return result;
 
-    const assembly::ElementFields fields = assembler_.elementFields(u, lambda);
+    const assembly::ElementFields fields = assembler_.elementDilatations(u, lambda);
     result.dilatation = dilatationError(fields);
     if (onUzawa) onUzawa(k, result.newton.back(), result.dilatation);
     if (!measuresPhysicalLaw() || result.dilatation.max < tolerance_) {

@@ -8,11 +8,13 @@
 // columns of the element matrices zeroed and a diagonal `dirichletScale`; their residual is
 // zero because the solution vector holds the prescribed values before every solve.
 
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Teuchos_RCP.hpp>
 
+#include "assembly/ElementScatter.hpp"
 #include "assembly/DofLayout.hpp"
 #include "assembly/TpetraTypes.hpp"
 #include "fem/Q1P0Element.hpp"
@@ -95,7 +97,19 @@ public:
   // with K, the bases' own state (u is their iterate); without, the Newton update from them to
   // the trial u. Without `bases` they are condensed exactly from u. Collective.
   AssemblyStatus assemble(const Vector &u, double time, const std::vector<double> &lambda,
-                          const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K) const;
+                          const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K) const {
+    return assemble(u, time, lambda, bases, f, K, /*trialPoint=*/K == nullptr);
+  }
+  // The same with the choice explicit: trialPoint, the Newton update from the bases to u (also
+  // for the tangent: the residual and tangent of a trial point in one pass, which equal those
+  // of the next iterate's own state once the trial point is accepted).
+  AssemblyStatus assemble(const Vector &u, double time, const std::vector<double> &lambda,
+                          const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K, bool trialPoint) const;
+
+  // The element work of assemble(u, ..., f, K) alone: every local element's kernel with its
+  // point law, residual and tangent, nothing gathered into f or K (bench/assembly_cost compares
+  // the two). Returns the number of elements evaluated. Collective (imports u).
+  std::size_t evaluateElementsOnly(const Vector &u, const std::vector<double> &lambda) const;
 
   // The three-field linearisation at u for every local element (see fem::MixedBase);
   // `previous` carries the dilatation iterates forward. Collective (imports u).
@@ -108,6 +122,14 @@ public:
 
   // Element dilatation, pressure, stress, min J (local elements). Collective (imports u).
   ElementFields elementFields(const Vector &u, const std::vector<double> &lambda) const;
+  // The residual of the loads alone (assemble without the element terms): f at (u, t) minus
+  // f_int(u), for df/dt at fixed u. Collective.
+  Vector loadResidual(const Vector &u, double time) const;
+
+  // Only theta, pressure and referenceVolume of elementFields, from the kinematics and the
+  // volumetric law without the point laws (the same numbers on the Q1-P0 element; plain Q1 takes
+  // the full pass): what the Uzawa loop needs after every solve.
+  ElementFields elementDilatations(const Vector &u, const std::vector<double> &lambda) const;
 
   // The element of the whole mesh with the smallest corner det F at u (fem::minCornerJacobian),
   // for the check after each converged step that Gauss-point J cannot make. Collective.
@@ -197,6 +219,9 @@ private:
   void scatterLoadBlock(const mesh::NodeId *nodes, int n, const double *f, const double *df,
                         Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo) const;
   fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
+  // The offsets of every element entry in K's values while K is open for assembly (its
+  // owned-plus-shared pattern), found on first use for that pattern.
+  const ElementScatter &elementScatter(const FEMatrix &K, const FEMatrix::local_matrix_host_type &local) const;
 
   const model::Scene &scene_;
   Teuchos::RCP<const Comm> comm_;
@@ -210,6 +235,8 @@ private:
   std::vector<std::array<GO, 24>> elementGids_;
   std::vector<int> nodeMultiplicity_;                    // elements sharing each mesh node
   double dirichletScale_ = 1.0;
+  mutable std::shared_ptr<const ElementScatter> scatter_;
+  mutable const void *scatterPattern_ = nullptr;
   model::MuscleHistory history_;
 };
 

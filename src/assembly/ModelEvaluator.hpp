@@ -19,10 +19,16 @@ public:
   ModelEvaluator(Teuchos::RCP<const Assembler> assembler,
                  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory);
 
-  void setTime(double t) { time_ = t; }
+  void setTime(double t) {
+    time_ = t;
+    tangentCached_ = false;
+  }
   // The multipliers Lambda per local element; with element pressures as unknowns (setMixedPressure)
   // they are those pressures, updated in place by every accepted Newton iterate.
-  void setLambda(std::vector<double> *lambda) { lambda_ = lambda; }
+  void setLambda(std::vector<double> *lambda) {
+    lambda_ = lambda;
+    tangentCached_ = false;
+  }
   // Incompressibility/method = mixed: every tangent also linearises the pressure blocks, trial
   // evaluations see the block solver's pending pressure increment, and accepted iterates commit it.
   void setMixedPressure(Teuchos::RCP<MixedPressureState> state) { pressure_ = std::move(state); }
@@ -37,6 +43,8 @@ public:
   Teuchos::RCP<FEMatrix> matrix() const { return matrix_; }
   int residualEvaluations() const { return residualEvaluations_; }
   int tangentEvaluations() const { return tangentEvaluations_; }
+  // Tangents NOX asked for that the residual pass at the same point had already assembled.
+  int tangentsFromResidualPass() const { return tangentsFromResidualPass_; }
   double assemblySeconds() const { return assemblySeconds_; }
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }
@@ -67,7 +75,17 @@ private:
   mutable std::vector<double> zeroLambda_;
   bool mixed_ = false;
   mutable AssemblyStatus lastStatus_;
-  mutable int residualEvaluations_ = 0, tangentEvaluations_ = 0;
+  mutable int residualEvaluations_ = 0, tangentEvaluations_ = 0, tangentsFromResidualPass_ = 0;
+  // The residual pass also assembles the tangent into matrix_ (most of an element's cost, the
+  // point laws, is shared) and remembers where: NOX's next request, the tangent at the accepted
+  // iterate, is then served without a second pass. Valid for this x only, and only until the
+  // time, the multipliers or the iterates are reset (resetIterates: also where the muscle
+  // history or the neural inputs change, before every Newton solve).
+  bool tangentIsCachedAt(const Vector &x) const;
+  mutable bool tangentCached_ = false;
+  mutable Teuchos::RCP<Vector> tangentPoint_;
+  mutable std::vector<double> tangentLambda_;
+  mutable AssemblyStatus tangentStatus_;
   mutable double assemblySeconds_ = 0.0;
 };
 

@@ -46,7 +46,7 @@ std::string instance() {
 } // namespace
 
 TEST_P(LinearStrategy, SolvesTheBlockToTheDealIIReference) {
-  std::vector<std::string> o = {"Mesh/Box/cells=4,4,4", "Linear solver/coarse size=50",
+  std::vector<std::string> o = {"Mesh/Box/cells=4,4,4", "Linear solver/type=iterative", "Linear solver/coarse size=50",
                                 "Output/fields=false"};
   for (const auto &x : GetParam()) o.push_back(x);
   const auto s =

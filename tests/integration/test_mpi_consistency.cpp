@@ -50,19 +50,19 @@ void expectSameOnOneAndTwoRanks(const std::vector<std::string> &overrides, const
 } // namespace
 
 TEST(MpiConsistency, PenaltyOneAndTwoRanksAgree) {
-  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/tolerance=1e-10", "Nonlinear solver/forcing term=constant"},
+  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/type=iterative", "Linear solver/tolerance=1e-10", "Nonlinear solver/forcing term=constant"},
                              "penalty");
 }
 
 TEST(MpiConsistency, AugmentedLagrangianOneAndTwoRanksAgree) {
-  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/tolerance=1e-10",
+  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/type=iterative", "Linear solver/tolerance=1e-10",
                               "Nonlinear solver/forcing term=constant", "Incompressibility/method=augmented Lagrangian"},
                              "al");
 }
 
 // The mixed block solve (pressures as unknowns) at exact incompressibility, nu = 0.5.
 TEST(MpiConsistency, MixedOneAndTwoRanksAgree) {
-  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/tolerance=1e-10",
+  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/type=iterative", "Linear solver/tolerance=1e-10",
                               "Nonlinear solver/forcing term=constant", "Incompressibility/method=mixed",
                               "Material/Poisson's ratio=0.5"},
                              "mixed");
@@ -71,16 +71,25 @@ TEST(MpiConsistency, MixedOneAndTwoRanksAgree) {
 // FROSch: one subdomain per rank, so 1 and 2 ranks are different preconditioners (a direct solve
 // against two-level additive Schwarz); converged to 1e-10 they must still give the same field.
 TEST(MpiConsistency, FroschOneAndTwoRanksAgree) {
-  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/tolerance=1e-10",
+  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/type=iterative", "Linear solver/tolerance=1e-10",
                               "Nonlinear solver/forcing term=constant", "Linear solver/preconditioner=FROSch"},
                              "frosch");
+}
+
+// The MUMPS direct solve with each rank's rows given distributed (ICNTL(18) = 3) and the
+// right-hand side gathered on rank 0: the same field as on one rank.
+TEST(MpiConsistency, DirectOneAndTwoRanksAgree) {
+  expectSameOnOneAndTwoRanks({"Mesh/Box/cells=6,6,6", "Linear solver/type=direct", "Nonlinear solver/forcing term=constant",
+                              "Incompressibility/method=augmented Lagrangian"},
+                             "direct");
 }
 
 // The vertex-patch smoother is refused on more than one rank (its patches are cut at the partition
 // boundary and CG broke down: 8,067 Krylov iterations and a failed step at t = 0.59 on 6^3).
 TEST(MpiConsistency, VertexPatchIsRefusedOnTwoRanks) {
   EXPECT_THROW(test::runDeck(test::inputPath("verification/step44_block.xml"),
-                             {"Mesh/Box/cells=2,2,2", "Linear solver/MueLu smoother=vertex-patch"},
+                             {"Mesh/Box/cells=2,2,2", "Linear solver/type=iterative",
+                              "Linear solver/MueLu smoother=vertex-patch"},
                              test::scratchDirectory("mpi_patch_refused"), Tpetra::getDefaultComm()),
                io::DeckError);
 }

@@ -1,4 +1,5 @@
-// The deck's solver choices give the same answer (MueLu, Ifpack2 alone, Amesos2 direct), and a
+// The deck's solver choices give the same answer (MueLu, Ifpack2 alone, MUMPS and Amesos2 KLU2
+// direct, and auto, which solves this small block directly), and a
 // step that fails (the whole 400 MPa load in one step) is cut back and recovered, never a crash.
 #include <cmath>
 
@@ -19,12 +20,39 @@ double topCentre(const nlohmann::json &summary) {
 
 TEST(SolverChoices, MueLuIfpack2AndDirectAgree) {
   const std::string deck = test::inputPath("verification/step44_block.xml");
-  for (const char *choice : {"Linear solver/preconditioner=MueLu", "Linear solver/preconditioner=Ifpack2",
-                             "Linear solver/type=direct"}) {
+  for (const char *choice : {"Linear solver/type=iterative", "Linear solver/preconditioner=Ifpack2",
+                             "Linear solver/type=direct", "Linear solver/direct solver=KLU2", "Linear solver/type=auto"}) {
     const auto s = test::runDeck(deck, {"Mesh/Box/cells=4,4,4", choice}, test::scratchDirectory("choice"));
     ASSERT_TRUE(s.at("converged").get<bool>()) << choice;
     EXPECT_NEAR(topCentre(s), kDealII4, 1e-5 * std::abs(kDealII4)) << choice;
   }
+}
+
+// auto: a direct solve (one Krylov iteration per Newton iteration: the factorisation is the exact
+// inverse inside the Krylov method) up to 'direct up to' unknowns (375 here), the iterative solver
+// above (MueLu with a coarse size of 50, so that it is not itself a direct solve of 375 rows); the
+// same answer either way.
+TEST(SolverChoices, AutoSolvesSmallSystemsDirectlyAndLargerOnesIteratively) {
+  const std::string deck = test::inputPath("verification/step44_block.xml");
+  auto krylovPerNewton = [](const nlohmann::json &s) {
+    double newton = 0.0, krylov = 0.0;
+    for (const auto &step : s.at("steps")) {
+      newton += step.at("newton_iterations").get<double>();
+      krylov += step.at("linear_iterations").get<double>();
+    }
+    return krylov / newton;
+  };
+  const auto direct = test::runDeck(deck, {"Mesh/Box/cells=4,4,4", "Linear solver/direct up to=375"},
+                                    test::scratchDirectory("auto_direct"));
+  const auto iterative = test::runDeck(deck, {"Mesh/Box/cells=4,4,4", "Linear solver/direct up to=374",
+                                                  "Linear solver/coarse size=50"},
+                                       test::scratchDirectory("auto_iterative"));
+  ASSERT_TRUE(direct.at("converged").get<bool>());
+  ASSERT_TRUE(iterative.at("converged").get<bool>());
+  EXPECT_EQ(krylovPerNewton(direct), 1.0);
+  EXPECT_GT(krylovPerNewton(iterative), 3.0);
+  EXPECT_NEAR(topCentre(direct), kDealII4, 1e-5 * std::abs(kDealII4));
+  EXPECT_NEAR(topCentre(iterative), kDealII4, 1e-5 * std::abs(kDealII4));
 }
 
 TEST(TimeStepping, AFailedStepIsCutBackAndRecovered) {

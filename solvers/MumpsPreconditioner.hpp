@@ -1,0 +1,54 @@
+#pragma once
+// A sparse direct factorisation of the tangent (MUMPS, the multifrontal solver Debian ships with
+// Trilinos; MPI-parallel) offered to Stratimikos as a preconditioner, "MUMPS". Inside the Krylov
+// solver it is an exact inverse: CG or GMRES stop after one iteration, and the Krylov method's own
+// residual check still stands behind the answer. Below some thousands of unknowns this beats any
+// multigrid set-up (doc/incompressibility.md, "Direct solves"), and it does not care how close
+// to incompressible the tangent is.
+//
+// The analysis (ordering and symbolic factorisation) is done once per sparsity pattern and kept
+// by the factory for the whole run: every Newton iteration and load step refactors numerically
+// only. The entries go to MUMPS as each rank's owned rows (distributed assembled input); the
+// right-hand side and the solution pass through rank 0.
+
+#include <memory>
+
+#include <Thyra_PreconditionerFactoryBase.hpp>
+
+#include "assembly/TpetraTypes.hpp"
+
+namespace glossa::solvers {
+
+class MumpsFactorization;
+
+class MumpsPreconditionerFactory : public Thyra::PreconditionerFactoryBase<double> {
+public:
+  MumpsPreconditionerFactory();
+  ~MumpsPreconditionerFactory() override;
+
+  bool isCompatible(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const override;
+  Teuchos::RCP<Thyra::PreconditionerBase<double>> createPrec() const override;
+  void initializePrec(const Teuchos::RCP<const Thyra::LinearOpSourceBase<double>> &fwdOpSrc,
+                      Thyra::PreconditionerBase<double> *prec, const Thyra::ESupportSolveUse supportSolveUse) const override;
+  void uninitializePrec(Thyra::PreconditionerBase<double> *prec,
+                        Teuchos::RCP<const Thyra::LinearOpSourceBase<double>> *fwdOpSrc,
+                        Thyra::ESupportSolveUse *supportSolveUse) const override;
+
+  void setParameterList(const Teuchos::RCP<Teuchos::ParameterList> &paramList) override;
+  Teuchos::RCP<Teuchos::ParameterList> getNonconstParameterList() override { return params_; }
+  Teuchos::RCP<Teuchos::ParameterList> unsetParameterList() override;
+  Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override { return params_; }
+  Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override;
+
+  // Factorisations and analyses so far (for the tests and the summary).
+  static int factorisations();
+  static int analyses();
+
+private:
+  Teuchos::RCP<Teuchos::ParameterList> params_;
+  // Shared by every preconditioner this factory made: a stale one still preconditions, and the
+  // analysis outlives the Newton solves.
+  mutable std::shared_ptr<MumpsFactorization> factorization_;
+};
+
+} // namespace glossa::solvers
