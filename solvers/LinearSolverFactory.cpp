@@ -31,6 +31,11 @@ ParameterList linearSolverParameters() {
                  "type = auto: the largest number of unknowns solved directly (the measured crossover with "
                  "MueLu on the step-44 block lies between 6,591 and 14,739; doc/incompressibility.md)",
                  io::Range::atLeast(0));
+  io::declareInt(p, "direct reuse iterations", 10,
+                 "MUMPS: 0 refactors the tangent at every Newton iteration; k > 0 factors at the first "
+                 "iteration of each Newton solve and keeps the factors as the Krylov method's preconditioner "
+                 "while a solve takes at most k iterations (measured: doc/incompressibility.md)",
+                 io::Range::atLeast(0));
   io::declareString(p, "Krylov method", "auto",
                     "auto: CG while the tangent is symmetric, GMRES otherwise", {"auto", "cg", "gmres"});
   io::declareString(p, "preconditioner", "MueLu",
@@ -251,7 +256,9 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const ParameterList &s, const 
   if (prec == "MUMPS") {
     // The exact inverse inside the Krylov method: one iteration, with its residual check.
     p->set("Preconditioner Type", "MUMPS");
-    p->sublist("Preconditioner Types").sublist("MUMPS").set("symmetric", c.symmetric);
+    auto &mumps = p->sublist("Preconditioner Types").sublist("MUMPS");
+    mumps.set("symmetric", c.symmetric);
+    mumps.set("reuse iterations", s.get<int>("direct reuse iterations"));
   } else if (prec == "MueLu") {
     p->set("Preconditioner Type", "MueLu");
     p->sublist("Preconditioner Types").set("MueLu", mueluParameters(s, c));

@@ -17,7 +17,7 @@
 namespace glossa::solvers {
 
 namespace {
-std::atomic<int> factorisationCount{0}, analysisCount{0};
+std::atomic<int> factorisationCount{0}, analysisCount{0}, newtonSolveEpoch{0};
 
 MPI_Comm rawComm(const Teuchos::Comm<int> &comm) {
   const auto *mpi = dynamic_cast<const Teuchos::MpiComm<int> *>(&comm);
@@ -103,6 +103,21 @@ public:
     }
     check("factorisation");
     ++factorisationCount;
+    factoredMatrix_ = &A;
+    factoredEpoch_ = newtonSolveEpoch;
+    negativePivots_ = symmetric_ ? id_.infog[11] : 0; // INFOG(12): negative pivots of LDL^T
+    appliesAtInit_ = applies_;
+  }
+
+  // With reuse k > 0: the factors of an earlier tangent of this Newton solve still serve A when
+  // the last solve with them took at most k Krylov iterations (one preconditioner application each)
+  // and they had no negative pivot. An indefinite stale factor is no preconditioner for CG: at
+  // full activation CG met negative curvature through one and every step was cut back.
+  bool stillServes(const assembly::CrsMatrix &A, int k) {
+    const long long lastSolve = applies_ - appliesAtInit_;
+    appliesAtInit_ = applies_;
+    return k > 0 && factoredMatrix_ == &A && factoredEpoch_ == newtonSolveEpoch && lastSolve <= k &&
+           negativePivots_ == 0 && static_cast<long long>(A.getGlobalNumRows()) == n_;
   }
 
   // x = A^-1 b (or A^-T b), the columns of b and x in the distribution of `map`.
@@ -127,6 +142,7 @@ public:
       id_.nrhs = static_cast<MUMPS_INT>(nrhs);
       id_.lrhs = static_cast<MUMPS_INT>(n_);
     }
+    ++applies_;
     id_.icntl[8] = transpose ? 0 : 1; // ICNTL(9): 1 solves A x = b, otherwise A^T x = b
     id_.job = 3;
     dmumps_c(&id_);
@@ -161,6 +177,10 @@ private:
   std::vector<double> values_;
   Teuchos::RCP<const assembly::Map> rootMap_;
   Teuchos::RCP<assembly::Import> toRoot_, fromRoot_;
+  const assembly::CrsMatrix *factoredMatrix_ = nullptr;
+  int factoredEpoch_ = -1;
+  int negativePivots_ = 0;
+  long long applies_ = 0, appliesAtInit_ = 0;
 };
 
 namespace {
@@ -191,6 +211,7 @@ MumpsPreconditionerFactory::~MumpsPreconditionerFactory() = default;
 
 int MumpsPreconditionerFactory::factorisations() { return factorisationCount; }
 int MumpsPreconditionerFactory::analyses() { return analysisCount; }
+void MumpsPreconditionerFactory::beginNewtonSolve() { ++newtonSolveEpoch; }
 
 bool MumpsPreconditionerFactory::isCompatible(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const {
   using ThyraOp = Thyra::TpetraLinearOp<double, assembly::LO, assembly::GO, assembly::Node>;
@@ -211,8 +232,9 @@ void MumpsPreconditionerFactory::initializePrec(const Teuchos::RCP<const Thyra::
   auto *defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double> *>(prec);
   TEUCHOS_TEST_FOR_EXCEPTION(defaultPrec == nullptr, std::logic_error, "MUMPS: not a DefaultPreconditioner");
   const bool symmetric = params_.is_null() || params_->get<bool>("symmetric", true);
+  const int reuse = params_.is_null() ? 0 : params_->get<int>("reuse iterations", 0);
   if (!factorization_) factorization_ = std::make_shared<MumpsFactorization>(A->getComm(), symmetric);
-  factorization_->factor(*A);
+  if (!factorization_->stillServes(*A, reuse)) factorization_->factor(*A);
   auto inverse = Teuchos::rcp(new MumpsInverse(factorization_, A->getDomainMap(), A->getRangeMap()));
   const Teuchos::RCP<Thyra::LinearOpBase<double>> inverseOp =
       Thyra::tpetraLinearOp<double, assembly::LO, assembly::GO, assembly::Node>(
@@ -245,6 +267,9 @@ Teuchos::RCP<const Teuchos::ParameterList> MumpsPreconditionerFactory::getValidP
   static const auto valid = [] {
     auto p = Teuchos::rcp(new Teuchos::ParameterList("MUMPS"));
     p->set("symmetric", true, "the tangent is symmetric: LDL^T of one triangle (else LU)");
+    p->set("reuse iterations", 0,
+           "0: refactor for every tangent; k > 0: keep the factors within a Newton solve while a solve "
+           "takes at most k Krylov iterations");
     return p;
   }();
   return valid;

@@ -10,6 +10,12 @@
 // by the factory for the whole run: every Newton iteration and load step refactors numerically
 // only. The entries go to MUMPS as each rank's owned rows (distributed assembled input); the
 // right-hand side and the solution pass through rank 0.
+//
+// "reuse iterations" k > 0 keeps a factorisation through the Newton iterations of one Newton
+// solve (a stale factor of a nearby tangent is a very good preconditioner): it is refactored at
+// the first linear solve of every Newton solve (beginNewtonSolve) and whenever the previous
+// solve took more than k Krylov iterations. So the sequence of factorisations is a function of
+// the Newton solve alone, and a restarted run repeats it.
 
 #include <memory>
 
@@ -43,6 +49,8 @@ public:
   // Factorisations and analyses so far (for the tests and the summary).
   static int factorisations();
   static int analyses();
+  // A Newton solve begins: with reuse, the next preconditioner is a fresh factorisation.
+  static void beginNewtonSolve();
 
 private:
   Teuchos::RCP<Teuchos::ParameterList> params_;

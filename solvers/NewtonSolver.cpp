@@ -11,6 +11,7 @@
 
 #include "io/deck/ParameterSpec.hpp"
 #include "solvers/LinearSolveFailure.hpp"
+#include "solvers/MumpsPreconditioner.hpp"
 
 namespace glossa::solvers {
 
@@ -104,6 +105,7 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, 
   NewtonResult result;
 
   model_->resetIterates(u);
+  MumpsPreconditionerFactory::beginNewtonSolve();
   auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
   auto xThyra = Thyra::createVector(RCP<assembly::Vector>(uCopy), model_->get_x_space());
   NOX::Thyra::Vector initialGuess(xThyra);

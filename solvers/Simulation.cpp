@@ -487,6 +487,11 @@ bool Simulation::finished() const { return !(t_ < steps_->endTime() * (1.0 - 1e-
 void Simulation::writeSummary() {
   doc_["wall_seconds"] = since(start_);
   doc_["assembly_seconds"] = model_->assemblySeconds();
+  // Element passes NOX asked for: residuals (each also assembles the tangent where it can), the
+  // tangents among them, and the tangent requests the residual pass had already served.
+  doc_["residual_evaluations"] = model_->residualEvaluations();
+  doc_["tangent_evaluations"] = model_->tangentEvaluations();
+  doc_["tangents_from_residual_pass"] = model_->tangentsFromResidualPass();
   // NOX's own timers split the linear solves into preconditioner set-up and Krylov iterations.
   doc_["preconditioner_setup_seconds"] = timerSeconds("NOX Total Preconditioner Construction") - setupAtStart_;
   doc_["linear_solve_seconds"] = timerSeconds("NOX Total Linear Solve") - solveAtStart_;

@@ -28,8 +28,8 @@ TEST(SolverChoices, MueLuIfpack2AndDirectAgree) {
   }
 }
 
-// auto: a direct solve (one Krylov iteration per Newton iteration: the factorisation is the exact
-// inverse inside the Krylov method) up to 'direct up to' unknowns (375 here), the iterative solver
+// auto: a direct solve (one Krylov iteration per Newton iteration when every tangent is factored:
+// the factorisation is the exact inverse inside the Krylov method) up to 'direct up to' unknowns (375 here), the iterative solver
 // above (MueLu with a coarse size of 50, so that it is not itself a direct solve of 375 rows); the
 // same answer either way.
 TEST(SolverChoices, AutoSolvesSmallSystemsDirectlyAndLargerOnesIteratively) {
@@ -42,7 +42,8 @@ TEST(SolverChoices, AutoSolvesSmallSystemsDirectlyAndLargerOnesIteratively) {
     }
     return krylov / newton;
   };
-  const auto direct = test::runDeck(deck, {"Mesh/Box/cells=4,4,4", "Linear solver/direct up to=375"},
+  const auto direct = test::runDeck(deck, {"Mesh/Box/cells=4,4,4", "Linear solver/direct up to=375",
+                                           "Linear solver/direct reuse iterations=0"},
                                     test::scratchDirectory("auto_direct"));
   const auto iterative = test::runDeck(deck, {"Mesh/Box/cells=4,4,4", "Linear solver/direct up to=374",
                                                   "Linear solver/coarse size=50"},
@@ -53,6 +54,22 @@ TEST(SolverChoices, AutoSolvesSmallSystemsDirectlyAndLargerOnesIteratively) {
   EXPECT_GT(krylovPerNewton(iterative), 3.0);
   EXPECT_NEAR(topCentre(direct), kDealII4, 1e-5 * std::abs(kDealII4));
   EXPECT_NEAR(topCentre(iterative), kDealII4, 1e-5 * std::abs(kDealII4));
+}
+
+// direct reuse iterations = 10: the factors of a Newton solve's first tangent precondition its
+// later iterations (more than one Krylov iteration per solve), and the answer stays deal.II's.
+TEST(SolverChoices, AReusedFactorisationPreconditionsLaterNewtonIterations) {
+  const auto s = test::runDeck(test::inputPath("verification/step44_block.xml"),
+                               {"Mesh/Box/cells=4,4,4", "Linear solver/type=direct", "Linear solver/direct reuse iterations=10"},
+                               test::scratchDirectory("direct_reuse"));
+  ASSERT_TRUE(s.at("converged").get<bool>());
+  double newton = 0.0, krylov = 0.0;
+  for (const auto &step : s.at("steps")) {
+    newton += step.at("newton_iterations").get<double>();
+    krylov += step.at("linear_iterations").get<double>();
+  }
+  EXPECT_GT(krylov, newton);
+  EXPECT_NEAR(topCentre(s), kDealII4, 1e-5 * std::abs(kDealII4));
 }
 
 TEST(TimeStepping, AFailedStepIsCutBackAndRecovered) {
