@@ -23,7 +23,8 @@ double integerPower(double x, int n) {
 
 int smallInteger(double e) { return e >= 0.0 && e <= 64.0 && e == std::floor(e) ? static_cast<int>(e) : -1; }
 
-// x^(e-1) and x^e (x >= 0, e >= 1): the pair each term's value and slope need.
+// x^(e-1) and x^e (x >= 0): the pair each term's value and slope need. At x = 0 the slope factor
+// x^(e-1) is taken as 0 below e = 1 (it only ever multiplies sign(d) = 0 there), not as inf.
 struct PowerPair {
   double belowOne, full;
 };
@@ -32,6 +33,7 @@ PowerPair powers(double x, double e, int eInt) {
     const double below = integerPower(x, eInt - 1);
     return {below, below * x};
   }
+  if (x == 0.0 && e < 1.0) return {0.0, e == 0.0 ? 1.0 : 0.0};
   return {std::pow(x, e - 1.0), std::pow(x, e)};
 }
 }  // namespace
@@ -53,8 +55,7 @@ GaussMollifierCurve::GaussMollifierCurve(std::vector<GaussMollifierTerm> terms, 
   }
   upperBound_ = std::max({bound, below_, above_});
   for (const GaussMollifierTerm &t : terms_)
-    prepared_.push_back({t.mu, t.A, t.B, t.R, t.R > 0.0 ? std::pow(t.R, t.q) : 0.0, t.p, t.q, t.s, smallInteger(t.p),
-                         smallInteger(t.q), smallInteger(t.s)});
+    prepared_.push_back({t.R > 0.0 ? std::pow(t.R, t.q) : 0.0, smallInteger(t.p), smallInteger(t.q), smallInteger(t.s)});
 }
 
 double GaussMollifierCurve::zeroBelow() const {
@@ -65,19 +66,21 @@ CurveValue GaussMollifierCurve::evaluate(double x) const {
   if (x < lower_) return {below_, 0.0};
   if (x > upper_) return {above_, 0.0};
   CurveValue f;
-  for (const PreparedTerm &t : prepared_) {
+  for (std::size_t k = 0; k < terms_.size(); ++k) {
+    const GaussMollifierTerm &t = terms_[k];
+    const PreparedTerm &pt = prepared_[k];
     const double d = x - t.mu;
     const double ad = std::abs(d);
     if (t.R > 0.0 && ad >= t.R) continue;  // outside the closing factor's support: no exp needed
     const double sign = d > 0.0 ? 1.0 : (d < 0.0 ? -1.0 : 0.0);
     // Gauss part G = A exp(-B |d|^p), dG/dx = -G B p |d|^(p-1) sign(d).
-    const PowerPair dp = powers(ad, t.p, t.pInt);
+    const PowerPair dp = powers(ad, t.p, pt.pInt);
     const double G = t.A * std::exp(-t.B * dp.full);
     const double dG = -G * t.B * t.p * dp.belowOne * sign;
     if (t.R > 0.0) {
       // closing factor M = (R^q - |d|^q)^s, dM/dx = -s q (R^q - |d|^q)^(s-1) |d|^(q-1) sign(d).
-      const PowerPair dq = powers(ad, t.q, t.qInt);
-      const PowerPair m = powers(t.Rq - dq.full, t.s, t.sInt);
+      const PowerPair dq = powers(ad, t.q, pt.qInt);
+      const PowerPair m = powers(pt.Rq - dq.full, t.s, pt.sInt);
       const double dM = -t.s * t.q * m.belowOne * dq.belowOne * sign;
       f.value += G * m.full;
       f.slope += dG * m.full + G * dM;

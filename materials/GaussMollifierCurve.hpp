@@ -39,10 +39,11 @@ class GaussMollifierCurve final : public ForceCurve {
   double upper() const { return upper_; }
 
  private:
-  // A term as evaluate() uses it: R^q once, and the exponents as integers where they are (every
-  // exponent of both parameter sets), so that |d|^p and |d|^(p-1) come from one product chain.
+  // What evaluate() derives from each term once: R^q, and the exponents as integers where they
+  // are (every exponent of both parameter sets), so that |d|^p and |d|^(p-1) come from one
+  // product chain. prepared_[k] belongs to terms_[k].
   struct PreparedTerm {
-    double mu, A, B, R, Rq, p, q, s;
+    double Rq;
     int pInt, qInt, sInt;  // -1: not a small non-negative integer, std::pow
   };
   std::vector<GaussMollifierTerm> terms_;

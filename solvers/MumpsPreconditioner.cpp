@@ -17,7 +17,7 @@
 namespace glossa::solvers {
 
 namespace {
-std::atomic<int> factorisationCount{0}, analysisCount{0}, newtonSolveEpoch{0};
+std::atomic<int> newtonSolveEpoch{0};
 
 MPI_Comm rawComm(const Teuchos::Comm<int> &comm) {
   const auto *mpi = dynamic_cast<const Teuchos::MpiComm<int> *>(&comm);
@@ -50,35 +50,19 @@ public:
   MumpsFactorization(const MumpsFactorization &) = delete;
   MumpsFactorization &operator=(const MumpsFactorization &) = delete;
 
-  // Numerical factorisation of A, after an analysis if A's pattern is not the analysed one.
+  // Numerical factorisation of A, after an analysis if A's pattern is not the analysed one. The
+  // pattern is read once per local graph (the Assembler's graph serves the whole run); every
+  // later factorisation only gathers the values.
   void factor(const assembly::CrsMatrix &A) {
     const auto local = A.getLocalMatrixHost();
-    const auto rowMap = A.getRowMap();
-    const auto colMap = A.getColMap();
     const long long n = static_cast<long long>(A.getGlobalNumRows());
-    if (rowMap->getMinAllGlobalIndex() != 0 || rowMap->getMaxAllGlobalIndex() != n - 1)
-      throw std::logic_error("MUMPS: the row map is not 0..N-1");
-    // The pattern (with a symmetric matrix: its upper triangle, MUMPS reads one half).
-    std::vector<MUMPS_INT> rows, cols;
-    std::vector<std::size_t> take;
-    const std::size_t localRows = local.numRows();
-    for (std::size_t r = 0; r < localRows; ++r) {
-      const auto gr = rowMap->getGlobalElement(static_cast<assembly::LO>(r));
-      for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k) {
-        const auto gc = colMap->getGlobalElement(local.graph.entries(k));
-        if (symmetric_ && gc < gr) continue;
-        rows.push_back(static_cast<MUMPS_INT>(gr + 1));
-        cols.push_back(static_cast<MUMPS_INT>(gc + 1));
-        take.push_back(static_cast<std::size_t>(k));
-      }
-    }
-    int changed = rows != rows_ || cols != cols_ || n != n_ ? 1 : 0, anyChanged = 0;
+    const void *pattern = local.graph.entries.data();
+    int changed = pattern != pattern_ || n != n_ || static_cast<std::size_t>(local.nnz()) != patternEntries_ ? 1 : 0, anyChanged = 0;
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, changed, Teuchos::outArg(anyChanged));
-    values_.resize(take.size());
-    for (std::size_t k = 0; k < take.size(); ++k) values_[k] = local.values(take[k]);
     if (anyChanged) {
-      rows_ = std::move(rows);
-      cols_ = std::move(cols);
+      readPattern(A, n);
+      pattern_ = pattern;
+      patternEntries_ = static_cast<std::size_t>(local.nnz());
       n_ = n;
       id_.n = static_cast<MUMPS_INT>(n);
       id_.nnz_loc = static_cast<MUMPS_INT8>(rows_.size());
@@ -88,8 +72,8 @@ public:
       id_.job = 1;
       dmumps_c(&id_);
       check("analysis");
-      ++analysisCount;
     }
+    for (std::size_t k = 0; k < take_.size(); ++k) values_[k] = local.values(take_[k]);
     id_.a_loc = values_.data();
     for (int attempt = 0;; ++attempt) {
       id_.job = 2;
@@ -102,7 +86,6 @@ public:
       break;
     }
     check("factorisation");
-    ++factorisationCount;
     factoredMatrix_ = &A;
     factoredEpoch_ = newtonSolveEpoch;
     negativePivots_ = symmetric_ ? id_.infog[11] : 0; // INFOG(12): negative pivots of LDL^T
@@ -157,6 +140,31 @@ public:
   }
 
 private:
+  // MUMPS's 1-based coordinates of A's entries (with a symmetric matrix its upper triangle, the
+  // half MUMPS reads) and where each value sits in A's local values.
+  void readPattern(const assembly::CrsMatrix &A, long long n) {
+    const auto local = A.getLocalMatrixHost();
+    const auto rowMap = A.getRowMap();
+    const auto colMap = A.getColMap();
+    if (rowMap->getMinAllGlobalIndex() != 0 || rowMap->getMaxAllGlobalIndex() != n - 1)
+      throw std::logic_error("MUMPS: the row map is not 0..N-1");
+    rows_.clear();
+    cols_.clear();
+    take_.clear();
+    const std::size_t localRows = local.numRows();
+    for (std::size_t r = 0; r < localRows; ++r) {
+      const auto gr = rowMap->getGlobalElement(static_cast<assembly::LO>(r));
+      for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k) {
+        const auto gc = colMap->getGlobalElement(local.graph.entries(k));
+        if (symmetric_ && gc < gr) continue;
+        rows_.push_back(static_cast<MUMPS_INT>(gr + 1));
+        cols_.push_back(static_cast<MUMPS_INT>(gc + 1));
+        take_.push_back(static_cast<std::size_t>(k));
+      }
+    }
+    values_.resize(take_.size());
+  }
+
   Teuchos::RCP<const assembly::Map> rootMapFor(const Teuchos::RCP<const assembly::Map> &map) const {
     const auto n = map->getGlobalNumElements();
     return Teuchos::rcp(new assembly::Map(n, comm_->getRank() == 0 ? n : 0, 0, comm_));
@@ -174,7 +182,10 @@ private:
   DMUMPS_STRUC_C id_{};
   long long n_ = -1;
   std::vector<MUMPS_INT> rows_, cols_;
+  std::vector<std::size_t> take_;
   std::vector<double> values_;
+  const void *pattern_ = nullptr;
+  std::size_t patternEntries_ = 0;
   Teuchos::RCP<const assembly::Map> rootMap_;
   Teuchos::RCP<assembly::Import> toRoot_, fromRoot_;
   const assembly::CrsMatrix *factoredMatrix_ = nullptr;
@@ -209,8 +220,6 @@ private:
 MumpsPreconditionerFactory::MumpsPreconditionerFactory() = default;
 MumpsPreconditionerFactory::~MumpsPreconditionerFactory() = default;
 
-int MumpsPreconditionerFactory::factorisations() { return factorisationCount; }
-int MumpsPreconditionerFactory::analyses() { return analysisCount; }
 void MumpsPreconditionerFactory::beginNewtonSolve() { ++newtonSolveEpoch; }
 
 bool MumpsPreconditionerFactory::isCompatible(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const {

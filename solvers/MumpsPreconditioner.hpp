@@ -46,9 +46,6 @@ public:
   Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override { return params_; }
   Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override;
 
-  // Factorisations and analyses so far (for the tests and the summary).
-  static int factorisations();
-  static int analyses();
   // A Newton solve begins: with reuse, the next preconditioner is a fresh factorisation.
   static void beginNewtonSolve();
 
