@@ -24,6 +24,7 @@
 #include "io/output/TraceWriter.hpp"
 #include "model/SceneFactory.hpp"
 #include "model/SymmetryPlanes.hpp"
+#include "solvers/ArcLengthContinuation.hpp"
 #include "solvers/CheckpointContents.hpp"
 #include "solvers/CommControlGroups.hpp"
 #include "solvers/ControlDriver.hpp"
@@ -181,6 +182,48 @@ void requireMixedCompatible(const Teuchos::ParameterList &D, const model::Scene 
   if (scene.tissues.size() > 1)
     throw io::DeckError(why + "one tissue (its pressure state holds one volumetric law); use the augmented Lagrangian "
                               "for Material/Tissues");
+}
+
+// Time/path following = arc length makes the time an unknown of each step (ArcLengthContinuation):
+// nothing else may depend on the time in a way the path cannot follow back.
+void requireArcLengthCompatible(const io::Deck &deck, const model::Scene &scene, const RunOptions &options) {
+  const Teuchos::ParameterList &D = deck.root();
+  const std::string why = deck.where({"Time", "path following"}) + ": arc length needs ";
+  if (D.sublist("Incompressibility").get<std::string>("method") != "penalty")
+    throw io::DeckError(why + "Incompressibility/method = penalty (the augmented Lagrangian's multipliers and the "
+                              "mixed method's pressures would change within a continuation step; a penalty with nu "
+                              "= 0.49999 keeps the thick sphere's volume to 4e-5)");
+  if (D.sublist("Control").get<std::string>("type") != "none")
+    throw io::DeckError(why + "Control/type = none (a controller searches inputs at a given time)");
+  if (!scene.muscles.groups.empty())
+    throw io::DeckError(why + "no muscle groups (their activation is a history in time, which the path may run "
+                              "backwards)");
+  for (const auto &bc : scene.dirichlet) {
+    bool moves = !bc.value.isZero();
+    for (const auto &e : bc.expression) moves = moves || static_cast<bool>(e);
+    if (moves)
+      throw io::DeckError(why + "supports that prescribe no motion: Boundary conditions/" + bc.name +
+                          " prescribes a displacement (drive the path by its loads)");
+  }
+  if (!options.restartDirectory.empty())
+    throw io::DeckError("--restart does not continue an arc-length path (its direction and step are LOCA's own "
+                        "state); run it again");
+}
+
+ArcLengthSettings arcLengthSettings(const Teuchos::ParameterList &D, const assembly::Assembler &assembler) {
+  const Teuchos::ParameterList &time = D.sublist("Time");
+  ArcLengthSettings s;
+  s.endTime = time.get<double>("end time");
+  s.stepSize = std::min(time.get<double>("step size"), s.endTime);
+  s.minimumStepSize = time.get<double>("minimum step size");
+  s.maximumSteps = time.get<int>("arc length steps");
+  s.stopAtDisplacement = time.get<double>("stop at displacement");
+  s.maximumNewtonIterations = D.sublist("Nonlinear solver").get<int>("maximum iterations");
+  // Relative to the load at the end time: the path's loads are fractions of it.
+  const double reference = assembler.externalForceNorm(s.endTime);
+  s.residualTolerance = D.sublist("Nonlinear solver").get<double>("residual tolerance") * (reference > 0.0 ? reference : 1.0);
+  s.linearTolerance = D.sublist("Linear solver").get<double>("tolerance");
+  return s;
 }
 } // namespace
 
@@ -340,7 +383,11 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   model_->setMixedPressure(mixedPressure);
   for (const auto &x : scene.mesh.nodes) lengthScale_ = std::max(lengthScale_, x.norm());
   planes_ = model::findSymmetryPlanes(scene.mesh, scene.dirichlet);
-  if (mixedPressure.is_null() && D.sublist("Time").get<std::string>("at a limit point") == "stop")
+  if (D.sublist("Time").get<std::string>("path following") == "arc length") {
+    requireArcLengthCompatible(deck, scene, options);
+    arcLength_ = std::make_unique<ArcLengthSettings>(arcLengthSettings(D, *assembler_));
+  }
+  if (mixedPressure.is_null() && !arcLength_ && D.sublist("Time").get<std::string>("at a limit point") == "stop")
     limit_ = std::make_unique<LimitPointMonitor>(steps_->nominalStep(), D.sublist("Time").get<double>("limit point tolerance"));
   newton_ = std::make_unique<NewtonSolver>(model_, D.sublist("Nonlinear solver"), lengthScale_,
                                            linearSection.get<double>("tolerance"),
@@ -378,7 +425,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_,
                                              outputSets[0], outputSets[1], restart ? &restart->outputs : nullptr);
   checkpoints_ = std::make_unique<io::CheckpointStore>(dir_);
-  checkpointEvery_ = D.sublist("Output").get<int>("checkpoint every");
+  checkpointEvery_ = arcLength_ ? 0 : D.sublist("Output").get<int>("checkpoint every");
   every_ = D.sublist("Output").get<int>("every");
 
   doc_["deck"] = deck.file();
@@ -840,7 +887,11 @@ void Simulation::commitTrial() {
   committedStretch_ = trial.attempt.muscle.groupMeanStretch;
   assembler_->muscleHistory().commit();
   const UzawaResult &r = trial.attempt.uzawa;
-  if (talk_) {
+  if (talk_ && arcLength_) {
+    std::printf("step %d  t = %.6g (load %.4g of the end time's)  newton %d  dilatation error %.1e  [%s elapsed]\n",
+                stepNumber_, t_, t_ / steps_->endTime(), r.newtonIterations, r.dilatation.max,
+                readableDuration(since(stepsStart_)).c_str());
+  } else if (talk_) {
     // step k/N with N from the step size now (the controller may still cut back or grow it), and
     // the time left from the wall time per simulated second so far.
     const double end = steps_->endTime(), elapsed = since(stepsStart_);
@@ -861,12 +912,13 @@ void Simulation::record(const Trial &trial) {
   const UzawaResult &r = trial.attempt.uzawa;
   const assembly::MuscleFields &muscle = trial.attempt.muscle;
   const auto reactions = recorder_->record(t_, committed_->u, committed_->lambda,
-                                           finished() || stepNumber_ % every_ == 0, muscle, history.trialInput());
+                                           finished() || stepNumber_ % every_ == 0, muscle, history.trialInput(),
+                                           arcLength_ ? std::optional<double>(stepNumber_) : std::nullopt);
   nlohmann::json step;
   step["time"] = t_;
   step["dt"] = trial.dt;
   step["newton_iterations"] = r.newtonIterations;
-  step["linear_iterations"] = r.linearIterations;
+  if (!arcLength_) step["linear_iterations"] = r.linearIterations; // LOCA's bordered solves are not counted
   step["uzawa_iterations"] = r.solves;
   step["max_dilatation_error"] = r.dilatation.max;
   step["mean_dilatation_error"] = r.dilatation.mean;
@@ -954,7 +1006,70 @@ void Simulation::finish() {
   if (!converged_ && root_) std::fprintf(stderr, "glossa: stopped: %s; results so far in %s\n", failure_.c_str(), dir_.c_str());
 }
 
+void Simulation::followArcLength() {
+  ArcLengthSettings settings = *arcLength_;
+  settings.startTime = t_;
+  model_->setLambda(&committed_->lambda);
+  model_->setTime(t_);
+
+  double highest = t_; // the largest load so far, and whether the path has turned down from it
+  bool turned = false;
+  auto onPoint = [&](const ArcLengthPoint &point, const assembly::Vector &u) {
+    trial_ = std::make_unique<Trial>(point.time, point.time - t_, model_->assemblySeconds(), *committed_);
+    Attempt &a = trial_->attempt;
+    trial_->state.u.assign(u);
+    a.uzawa.converged = true;
+    a.uzawa.solves = 1;
+    a.uzawa.newtonIterations = point.newtonIterations;
+    a.uzawa.dilatation = uzawa_->dilatationError(assembler_->elementDilatations(u, committed_->lambda));
+    const auto worst = assembler_->worstCorner(u);
+    a.minCornerJ = worst.J, a.cornerElement = worst.element;
+    a.minRegularCornerJ = worst.regularJ, a.regularCornerElement = worst.regularElement;
+    a.ok = true;
+    refuseInsideOut(trial_->state, a);
+    if (!a.ok) {
+      doc_["inside_out_refusals"].push_back(a.insideOut);
+      failure_ = "arc-length step " + std::to_string(point.step) + ": " + a.why;
+      converged_ = false;
+      return false;
+    }
+    commitTrial();
+    if (point.time > highest) highest = point.time;
+    else if (!turned) {
+      // The load passed a maximum between the last two points: named once, as load control would.
+      turned = true;
+      doc_["load_maximum"] = {{"time", highest}, {"step", stepNumber_ - 1}};
+      if (talk_) std::printf("  note: the path passed a load maximum near t = %.6g and follows the falling branch\n", highest);
+    }
+    const std::vector<double> all = assembler_->gatherDisplacement(u);
+    double largest = 0.0;
+    for (std::size_t n = 0; 3 * n + 2 < all.size(); ++n)
+      largest = std::max(largest, Eigen::Vector3d(all[3 * n], all[3 * n + 1], all[3 * n + 2]).norm());
+    int signal = stopSignal(), anySignal = 0;
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, signal, Teuchos::outArg(anySignal));
+    if (anySignal != 0) {
+      stoppedBy_ = anySignal;
+      converged_ = false;
+      failure_ = interruption(anySignal, static_cast<std::size_t>(stepNumber_), t_);
+      return false;
+    }
+    return !(settings.stopAtDisplacement > 0.0 && largest >= settings.stopAtDisplacement);
+  };
+  const ArcLengthOutcome outcome = followPath(model_, committed_->u, settings, onPoint);
+  model_->setLambda(nullptr);
+  doc_["path_following"] = {{"method", "arc length (LOCA)"}, {"steps", outcome.steps}, {"largest_time", highest}};
+  if (!outcome.completed && failure_.empty()) {
+    failure_ = outcome.failure;
+    converged_ = false;
+  }
+}
+
 nlohmann::json Simulation::run() {
+  if (arcLength_) {
+    followArcLength();
+    finish();
+    return doc_;
+  }
   while (!finished()) {
     // Every rank agrees to stop at the same step boundary (a signal may reach them apart).
     int signal = stopSignal(), anySignal = 0;

@@ -37,6 +37,7 @@ struct SymmetryPlane;
 namespace glossa::solvers {
 
 class CommControlGroups;
+struct ArcLengthSettings;
 class ControlDriver;
 class LimitPointMonitor;
 class NewtonSolver;
@@ -123,6 +124,9 @@ private:
   std::unique_ptr<Restart> readRestart(const io::Deck &deck, const std::filesystem::path &dir) const;
   void restoreState(const Restart &restart);
   void finish();
+  // Time/path following = arc length: the whole run along the path (ArcLengthContinuation), each
+  // converged point committed and recorded as a step.
+  void followArcLength();
   // On the stop-signal watcher thread (rank 0): summary.json says at once why the run ends.
   void writeInterruptedSummary(int signal);
 
@@ -138,6 +142,7 @@ private:
   std::string controlLine_; // the last control step's summary, for its step's line
 
   std::unique_ptr<StepSizeController> steps_;
+  std::unique_ptr<ArcLengthSettings> arcLength_; // Time/path following = arc length; null: load control
   // Time/at a limit point = stop (not with the mixed method): the stiffness along each step.
   std::unique_ptr<LimitPointMonitor> limit_;
   double lengthScale_ = 0.0;  // the largest |X| of the mesh

@@ -106,7 +106,8 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::reactionR
 std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(double time, const assembly::Vector &u,
                                                                 const std::vector<double> &lambda, bool writeFields,
                                                                 const assembly::MuscleFields &muscle,
-                                                                const std::vector<double> &input) {
+                                                                const std::vector<double> &input,
+                                                                std::optional<double> fieldsTime) {
   const std::vector<double> uAll = assembler_.gatherDisplacement(u);
   const auto reactions = reactionRows(u, time, lambda);
   if (root_) {
@@ -177,7 +178,7 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(do
       cells.push_back({"contractile_stretch_" + groups[g].name, 1, b});
     }
   }
-  if (root_) results_->writeStep(time, {{"displacement", 3, uAll}}, cells);
+  if (root_) results_->writeStep(fieldsTime.value_or(time), {{"displacement", 3, uAll}}, cells);
   return reactions;
 }
 

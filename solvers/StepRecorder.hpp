@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,10 +57,13 @@ public:
                                                                         const std::vector<double> &lambda) const;
 
   // Records one converged step (collective); returns the reactions it wrote (for the summary).
+  // `fieldsTime`: the fields' time in results.xdmf if not `time`, which ParaView needs increasing
+  // (an arc-length path's time falls past a load maximum: its fields are stamped with the step).
   std::vector<std::pair<std::string, std::vector<double>>> record(double time, const assembly::Vector &u,
                                                                   const std::vector<double> &lambda, bool writeFields,
                                                                   const assembly::MuscleFields &muscle,
-                                                                  const std::vector<double> &input);
+                                                                  const std::vector<double> &input,
+                                                                  std::optional<double> fieldsTime = std::nullopt);
 
 private:
   const assembly::Assembler &assembler_;

@@ -28,6 +28,20 @@ Teuchos::ParameterList timeParameters() {
                     "(summary.json: limit_point); ignore: no measurement, any converged state is accepted "
                     "(the mixed method never measures: doc/theory.md)",
                     {"stop", "ignore"});
+  io::declareString(p, "path following", "load control",
+                    "load control: the time advances by the step size and every load follows it; arc length: "
+                    "the time, which scales every load, becomes an unknown beside the displacement and each "
+                    "step has a set length along the path (Trilinos LOCA's pseudo arc length, tangent "
+                    "predictor, adaptive step up to 'step size', down to 'minimum step size'), so the path "
+                    "passes a load maximum and follows the falling branch (doc/theory.md); needs "
+                    "Incompressibility/method = penalty, no muscle groups, no controller and supports "
+                    "that prescribe no motion; a run is not restarted",
+                    {"load control", "arc length"});
+  io::declareInt(p, "arc length steps", 200, "arc length: the most continuation steps before the run stops",
+                 io::Range::closed(1, 100000));
+  io::declareDouble(p, "stop at displacement", 0.0, "m",
+                    "arc length: the path ends once some node has moved this far (0: only at the end time or "
+                    "back at t = 0)", io::Range::atLeast(0.0));
   io::declareDouble(p, "limit point tolerance", 0.01, "",
                     "a limit point is located once the bracket's step is below this fraction of the nominal "
                     "step size", io::Range::open(0.0, 1.0));

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Thyra_DefaultSpmdVectorSpace.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
@@ -21,7 +22,10 @@ ModelEvaluator::ModelEvaluator(Teuchos::RCP<const Assembler> assembler,
   MEB::InArgsSetup<double> in;
   in.setModelEvalDescription("Glossa Q1-P0 residual");
   in.setSupports(MEB::IN_ARG_x);
+  in.set_Np(1);
   prototypeInArgs_ = in;
+  timeSpace_ = Thyra::locallyReplicatedDefaultSpmdVectorSpace<double>(
+      Thyra::convertTpetraToThyraComm(assembler_->ownedMap()->getComm()), 1);
   nominal_ = in;
 
   auto x0 = Thyra::createMember(space_);
@@ -30,9 +34,28 @@ ModelEvaluator::ModelEvaluator(Teuchos::RCP<const Assembler> assembler,
 
   MEB::OutArgsSetup<double> out;
   out.setModelEvalDescription("Glossa Q1-P0 residual");
+  out.set_Np_Ng(1, 0);
   out.setSupports(MEB::OUT_ARG_f);
   out.setSupports(MEB::OUT_ARG_W_op);
   prototypeOutArgs_ = out;
+}
+
+MEB::InArgs<double> ModelEvaluator::getNominalValues() const {
+  MEB::InArgs<double> nominal = nominal_;
+  auto p = Thyra::createMember(timeSpace_);
+  Thyra::set_ele(0, time_, p.ptr());
+  nominal.set_p(0, p);
+  return nominal;
+}
+
+Teuchos::RCP<const Thyra::VectorSpaceBase<double>> ModelEvaluator::get_p_space(int l) const {
+  TEUCHOS_TEST_FOR_EXCEPTION(l != 0, std::out_of_range, "the model has one parameter, the time");
+  return timeSpace_;
+}
+
+Teuchos::RCP<const Teuchos::Array<std::string>> ModelEvaluator::get_p_names(int l) const {
+  TEUCHOS_TEST_FOR_EXCEPTION(l != 0, std::out_of_range, "the model has one parameter, the time");
+  return Teuchos::rcp(new Teuchos::Array<std::string>(1, "time"));
 }
 
 const std::vector<double> &ModelEvaluator::lambdaOrZero() const {
@@ -66,6 +89,8 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
   const Teuchos::RCP<Thyra::VectorBase<double>> fThyra = out.get_f();
   const Teuchos::RCP<Thyra::LinearOpBase<double>> W = out.get_W_op();
   Teuchos::RCP<Vector> f = fThyra.is_null() ? Teuchos::null : Extract::getTpetraVector(fThyra);
+  const Teuchos::RCP<const Thyra::VectorBase<double>> p = in.get_p(0);
+  const double time = p.is_null() ? time_ : Thyra::get_ele(*p, 0);
   FEMatrix *K = nullptr;
   if (!W.is_null()) {
     auto op = Extract::getTpetraOperator(W);
@@ -79,7 +104,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
     pressure_->linearise(*assembler_, *x, *lambda_);
   }
   const std::vector<double> &lambda = pressure_.is_null() ? lambdaOrZero() : pressure_->trialPressure(lambdaOrZero());
-  if (K == matrix_.get() && f.is_null() && tangentIsCachedAt(*x)) {
+  if (K == matrix_.get() && f.is_null() && tangentIsCachedAt(*x, time)) {
     // The tangent of the accepted iterate, assembled with its residual. The trial point's
     // Newton update from the previous bases is the accepted iterate's own state
     // (advanceIterates), so the matrix is the one a fresh pass would assemble.
@@ -93,7 +118,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
   const bool withTangent = !f.is_null() && !K && pressure_.is_null();
   Vector fScratch(assembler_->ownedMap());
   if (withTangent) {
-    lastStatus_ = assembler_->assemble(*x, time_, lambda, mixed_ ? &bases_ : nullptr, f.get(), matrix_.get(),
+    lastStatus_ = assembler_->assemble(*x, time, lambda, mixed_ ? &bases_ : nullptr, f.get(), matrix_.get(),
                                        /*trialPoint=*/true);
     tangentCached_ = lastStatus_.valid;
     if (tangentCached_) {
@@ -101,11 +126,12 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
         tangentPoint_ = Teuchos::rcp(new Vector(x->getMap()));
       tangentPoint_->assign(*x);
       tangentLambda_ = lambda;
+      tangentTime_ = time;
       tangentStatus_ = lastStatus_;
     }
   } else {
     tangentCached_ = false;
-    lastStatus_ = assembler_->assemble(*x, time_, lambda, mixed_ ? &bases_ : nullptr,
+    lastStatus_ = assembler_->assemble(*x, time, lambda, mixed_ ? &bases_ : nullptr,
                                        f.is_null() ? (K ? &fScratch : nullptr) : f.get(), K);
   }
   if (!lastStatus_.valid && !f.is_null()) f->putScalar(std::numeric_limits<double>::quiet_NaN());
@@ -114,8 +140,8 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
   assemblySeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-bool ModelEvaluator::tangentIsCachedAt(const Vector &x) const {
-  int same = tangentCached_ && tangentLambda_ == lambdaOrZero() ? 1 : 0;
+bool ModelEvaluator::tangentIsCachedAt(const Vector &x, double time) const {
+  int same = tangentCached_ && tangentTime_ == time && tangentLambda_ == lambdaOrZero() ? 1 : 0;
   if (same) {
     auto a = x.getData(0), b = tangentPoint_->getData(0);
     for (std::size_t i = 0; i < x.getLocalLength() && same; ++i) same = a[i] == b[i] ? 1 : 0;

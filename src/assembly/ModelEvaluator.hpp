@@ -4,7 +4,9 @@
 // (with element pressures as unknowns, setMixedPressure: the tangent at fixed pressure, whose
 // block system solvers/MixedBlockSolver solves).
 // The time and the augmented Lagrange multipliers are held fixed during one Newton solve and
-// set by the Uzawa loop and the time stepper.
+// set by the Uzawa loop and the time stepper. The time is also the model's one parameter p_0
+// (a vector of length 1, "time"): an evaluation given p_0 is made at that time, which is how
+// LOCA's arc-length continuation (solvers/ArcLengthContinuation) moves along the load path.
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
@@ -49,7 +51,9 @@ public:
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_f_space() const override { return space_; }
-  Thyra::ModelEvaluatorBase::InArgs<double> getNominalValues() const override { return nominal_; }
+  Thyra::ModelEvaluatorBase::InArgs<double> getNominalValues() const override;
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_p_space(int l) const override;
+  Teuchos::RCP<const Teuchos::Array<std::string>> get_p_names(int l) const override;
   Thyra::ModelEvaluatorBase::InArgs<double> createInArgs() const override { return prototypeInArgs_; }
   Teuchos::RCP<Thyra::LinearOpBase<double>> create_W_op() const override;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> get_W_factory() const override {
@@ -64,6 +68,7 @@ private:
   Teuchos::RCP<const Assembler> assembler_;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> timeSpace_; // p_0, locally replicated
   Teuchos::RCP<FEMatrix> matrix_;
   Thyra::ModelEvaluatorBase::InArgs<double> prototypeInArgs_, nominal_;
   Thyra::ModelEvaluatorBase::OutArgs<double> prototypeOutArgs_;
@@ -81,10 +86,11 @@ private:
   // iterate, is then served without a second pass. Valid for this x only, and only until the
   // time, the multipliers or the iterates are reset (resetIterates: also where the muscle
   // history or the neural inputs change, before every Newton solve).
-  bool tangentIsCachedAt(const Vector &x) const;
+  bool tangentIsCachedAt(const Vector &x, double time) const;
   mutable bool tangentCached_ = false;
   mutable Teuchos::RCP<Vector> tangentPoint_;
   mutable std::vector<double> tangentLambda_;
+  mutable double tangentTime_ = 0.0;
   mutable AssemblyStatus tangentStatus_;
   mutable double assemblySeconds_ = 0.0;
 };
