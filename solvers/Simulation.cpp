@@ -186,9 +186,12 @@ void requireMixedCompatible(const Teuchos::ParameterList &D, const model::Scene 
 
 // Time/path following = arc length makes the time an unknown of each step (ArcLengthContinuation):
 // nothing else may depend on the time in a way the path cannot follow back.
-void requireArcLengthCompatible(const io::Deck &deck, const model::Scene &scene, const RunOptions &options) {
+// `parameter`: the Time parameter that asks for it ("path following", or "at a limit point" =
+// follow, whose run may be restarted from a checkpoint written before the path began).
+void requireArcLengthCompatible(const io::Deck &deck, const model::Scene &scene, const RunOptions &options,
+                                const std::string &parameter) {
   const Teuchos::ParameterList &D = deck.root();
-  const std::string why = deck.where({"Time", "path following"}) + ": arc length needs ";
+  const std::string why = deck.where({"Time", parameter}) + ": arc-length continuation needs ";
   if (D.sublist("Incompressibility").get<std::string>("method") != "penalty")
     throw io::DeckError(why + "Incompressibility/method = penalty (the augmented Lagrangian's multipliers and the "
                               "mixed method's pressures would change within a continuation step; a penalty with nu "
@@ -205,7 +208,7 @@ void requireArcLengthCompatible(const io::Deck &deck, const model::Scene &scene,
       throw io::DeckError(why + "supports that prescribe no motion: Boundary conditions/" + bc.name +
                           " prescribes a displacement (drive the path by its loads)");
   }
-  if (!options.restartDirectory.empty())
+  if (parameter == "path following" && !options.restartDirectory.empty())
     throw io::DeckError("--restart does not continue an arc-length path (its direction and step are LOCA's own "
                         "state); run it again");
 }
@@ -383,11 +386,13 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   model_->setMixedPressure(mixedPressure);
   for (const auto &x : scene.mesh.nodes) lengthScale_ = std::max(lengthScale_, x.norm());
   planes_ = model::findSymmetryPlanes(scene.mesh, scene.dirichlet);
-  if (D.sublist("Time").get<std::string>("path following") == "arc length") {
-    requireArcLengthCompatible(deck, scene, options);
+  const std::string atLimit = D.sublist("Time").get<std::string>("at a limit point");
+  onPath_ = D.sublist("Time").get<std::string>("path following") == "arc length";
+  if (onPath_ || atLimit == "follow") {
+    requireArcLengthCompatible(deck, scene, options, onPath_ ? "path following" : "at a limit point");
     arcLength_ = std::make_unique<ArcLengthSettings>(arcLengthSettings(D, *assembler_));
   }
-  if (mixedPressure.is_null() && !arcLength_ && D.sublist("Time").get<std::string>("at a limit point") == "stop")
+  if (mixedPressure.is_null() && !onPath_ && atLimit != "ignore")
     limit_ = std::make_unique<LimitPointMonitor>(steps_->nominalStep(), D.sublist("Time").get<double>("limit point tolerance"));
   newton_ = std::make_unique<NewtonSolver>(model_, D.sublist("Nonlinear solver"), lengthScale_,
                                            linearSection.get<double>("tolerance"),
@@ -425,7 +430,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_,
                                              outputSets[0], outputSets[1], restart ? &restart->outputs : nullptr);
   checkpoints_ = std::make_unique<io::CheckpointStore>(dir_);
-  checkpointEvery_ = arcLength_ ? 0 : D.sublist("Output").get<int>("checkpoint every");
+  checkpointEvery_ = D.sublist("Output").get<int>("checkpoint every"); // none on an arc-length path
   every_ = D.sublist("Output").get<int>("every");
 
   doc_["deck"] = deck.file();
@@ -852,8 +857,16 @@ bool Simulation::rollBack() {
   const bool stepLeft = steps_->cutBack();
   if (limit_ && (limit_->located(steps_->stepSize()) || (!stepLeft && limit_->located(0.0)))) {
     const Eigen::Vector3d x = scene_->mesh.nodes[limit_->node()];
-    failure_ = limit_->description(x);
     doc_["limit_point"] = limit_->record(x);
+    if (arcLength_) { // at a limit point = follow: the path goes on from the last accepted state
+      switchToPath_ = true;
+      if (talk_)
+        std::printf("  note: a limit point of the load path between t = %.6g and %.6g s (summary.json: limit_point); "
+                    "following the path past it by arc-length continuation\n",
+                    doc_["limit_point"]["bracket"][0].get<double>(), doc_["limit_point"]["bracket"][1].get<double>());
+      return false;
+    }
+    failure_ = limit_->description(x);
     converged_ = false;
     return false;
   }
@@ -873,7 +886,7 @@ void Simulation::commitTrial() {
   t_ = trial.time;
   ++stepNumber_;
   steps_->accept();
-  if (limit_) {
+  if (limit_ && !onPath_) {
     limit_->accepted(t_, trial.attempt.pathStiffness);
     if (trial.attempt.pathStiffness < LimitPointMonitor::kSoftened && !softeningSaid_ && talk_)
       std::printf("  note: the load path has softened: the tangent's stiffness along the path is %.3g of the first "
@@ -887,7 +900,7 @@ void Simulation::commitTrial() {
   committedStretch_ = trial.attempt.muscle.groupMeanStretch;
   assembler_->muscleHistory().commit();
   const UzawaResult &r = trial.attempt.uzawa;
-  if (talk_ && arcLength_) {
+  if (talk_ && onPath_) {
     std::printf("step %d  t = %.6g (load %.4g of the end time's)  newton %d  dilatation error %.1e  [%s elapsed]\n",
                 stepNumber_, t_, t_ / steps_->endTime(), r.newtonIterations, r.dilatation.max,
                 readableDuration(since(stepsStart_)).c_str());
@@ -904,7 +917,7 @@ void Simulation::commitTrial() {
   }
   writeSummary();
   output.unlock();
-  if (checkpointEvery_ > 0 && stepNumber_ % checkpointEvery_ == 0) writeCheckpoint();
+  if (checkpointEvery_ > 0 && stepNumber_ % checkpointEvery_ == 0 && !onPath_) writeCheckpoint();
 }
 
 void Simulation::record(const Trial &trial) {
@@ -913,12 +926,12 @@ void Simulation::record(const Trial &trial) {
   const assembly::MuscleFields &muscle = trial.attempt.muscle;
   const auto reactions = recorder_->record(t_, committed_->u, committed_->lambda,
                                            finished() || stepNumber_ % every_ == 0, muscle, history.trialInput(),
-                                           arcLength_ ? std::optional<double>(stepNumber_) : std::nullopt);
+                                           fieldsStamp());
   nlohmann::json step;
   step["time"] = t_;
   step["dt"] = trial.dt;
   step["newton_iterations"] = r.newtonIterations;
-  if (!arcLength_) step["linear_iterations"] = r.linearIterations; // LOCA's bordered solves are not counted
+  if (!onPath_) step["linear_iterations"] = r.linearIterations; // LOCA's bordered solves are not counted
   step["uzawa_iterations"] = r.solves;
   step["max_dilatation_error"] = r.dilatation.max;
   step["mean_dilatation_error"] = r.dilatation.mean;
@@ -989,7 +1002,7 @@ nlohmann::json Simulation::controlJson(const Trial &trial) {
 
 void Simulation::finish() {
   // Stopped by a signal: the committed state is sound, so it is kept for --restart.
-  if (stoppedBy_ != 0 && checkpointEvery_ > 0) writeCheckpoint();
+  if (stoppedBy_ != 0 && checkpointEvery_ > 0 && !onPath_) writeCheckpoint();
   const std::vector<double> uAll = assembler_->gatherDisplacement(committed_->u);
   if (options_.finalDisplacement) *options_.finalDisplacement = uAll;
   nlohmann::json finals = nlohmann::json::object();
@@ -1006,9 +1019,16 @@ void Simulation::finish() {
   if (!converged_ && root_) std::fprintf(stderr, "glossa: stopped: %s; results so far in %s\n", failure_.c_str(), dir_.c_str());
 }
 
+std::optional<double> Simulation::fieldsStamp() const {
+  if (!onPath_) return std::nullopt;
+  return pathStart_.time + (stepNumber_ - pathStart_.step) * steps_->nominalStep();
+}
+
 void Simulation::followArcLength() {
   ArcLengthSettings settings = *arcLength_;
   settings.startTime = t_;
+  onPath_ = true;
+  pathStart_ = {t_, stepNumber_};
   model_->setLambda(&committed_->lambda);
   model_->setTime(t_);
 
@@ -1065,7 +1085,7 @@ void Simulation::followArcLength() {
 }
 
 nlohmann::json Simulation::run() {
-  if (arcLength_) {
+  if (onPath_) {
     followArcLength();
     finish();
     return doc_;
@@ -1083,6 +1103,7 @@ nlohmann::json Simulation::run() {
     if (attemptStep()) commitTrial();
     else if (!rollBack()) break;
   }
+  if (switchToPath_) followArcLength();
   finish();
   return doc_;
 }

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -124,8 +125,10 @@ private:
   std::unique_ptr<Restart> readRestart(const io::Deck &deck, const std::filesystem::path &dir) const;
   void restoreState(const Restart &restart);
   void finish();
-  // Time/path following = arc length: the whole run along the path (ArcLengthContinuation), each
-  // converged point committed and recorded as a step.
+  // Along the path by arc-length continuation (ArcLengthContinuation) from the committed state to
+  // its end, each converged point committed and recorded as a step: the whole run (Time/path
+  // following = arc length) or its rest once load control has located a limit point (at a limit
+  // point = follow).
   void followArcLength();
   // On the stop-signal watcher thread (rank 0): summary.json says at once why the run ends.
   void writeInterruptedSummary(int signal);
@@ -142,7 +145,18 @@ private:
   std::string controlLine_; // the last control step's summary, for its step's line
 
   std::unique_ptr<StepSizeController> steps_;
-  std::unique_ptr<ArcLengthSettings> arcLength_; // Time/path following = arc length; null: load control
+  // Arc-length continuation: its settings when the deck may use it (Time/path following = arc
+  // length, or at a limit point = follow), whether the run is on the path now, and where it began.
+  std::unique_ptr<ArcLengthSettings> arcLength_;
+  bool onPath_ = false;
+  bool switchToPath_ = false; // load control located a limit point: follow the path from there
+  struct {
+    double time = 0.0;
+    int step = 0;
+  } pathStart_;
+  // The fields' time in results.xdmf on the path, where t may fall: the path's start plus the
+  // nominal step per step along it (ParaView needs increasing times); load control: t itself.
+  std::optional<double> fieldsStamp() const;
   // Time/at a limit point = stop (not with the mixed method): the stiffness along each step.
   std::unique_ptr<LimitPointMonitor> limit_;
   double lengthScale_ = 0.0;  // the largest |X| of the mesh

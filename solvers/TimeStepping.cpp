@@ -26,8 +26,10 @@ Teuchos::ParameterList timeParameters() {
                     "equilibrium, e.g. the far branch of an inflated sphere) is refused, the step is cut back "
                     "until the limit point is bracketed to the tolerance below, and the run stops naming it "
                     "(summary.json: limit_point); ignore: no measurement, any converged state is accepted "
-                    "(the mixed method never measures: doc/theory.md)",
-                    {"stop", "ignore"});
+                    "(the mixed method never measures: doc/theory.md); follow: as stop, then the run goes on "
+                    "from the last accepted state past the limit point by arc-length continuation (as Time/path "
+                    "following = arc length, with what that needs)",
+                    {"stop", "ignore", "follow"});
   io::declareString(p, "path following", "load control",
                     "load control: the time advances by the step size and every load follows it; arc length: "
                     "the time, which scales every load, becomes an unknown beside the displacement and each "
