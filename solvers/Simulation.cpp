@@ -347,8 +347,6 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   steps_ = std::make_unique<StepSizeController>(stepSizeRule(D.sublist("Time")));
   scene_ = std::make_unique<model::Scene>(model::buildScene(deck, steps_->endTime()));
   model::Scene &scene = *scene_;
-  // The summary's kappa/mu figures are the Material section's tissue's (tissues[0]).
-  const double mu = scene.tissues[0].matrix->shearModulus();
   const auto &incompressibility = D.sublist("Incompressibility");
   // Each tissue's law stays the physical one for the Uzawa loop; the tangent gets its kappa_t.
   std::vector<materials::VolumetricEnergy> physicalVolumetric;
@@ -367,8 +365,75 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                         " must be at least 1 and divide the number of ranks (" + std::to_string(comm->getSize()) +
                         ")");
   groups_ = std::make_unique<CommControlGroups>(comm, controlGroups);
-  const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = groups_->groupComm();
 
+  buildSolvers(deck, physicalVolumetric);
+
+  // Checked before the output directory is cleared: a bad deck leaves an earlier run intact.
+  std::vector<std::vector<std::string>> outputSets;
+  for (const char *key : {"resultant face sets", "volume face sets"}) {
+    outputSets.push_back(io::splitNameList(D.sublist("Output").get<std::string>(key)));
+    for (const auto &name : outputSets.back())
+      if (!scene.mesh.faceSets.count(name))
+        throw io::DeckError(deck.where({"Output", key}) + ": no face set '" + name + "'");
+  }
+  dir_ = options.outputDirectory.empty() ? std::filesystem::path(D.sublist("Output").get<std::string>("directory"))
+                                         : options.outputDirectory;
+  deckListing_ = parameterListing(D);
+  std::unique_ptr<Restart> restart;
+  if (!options.restartDirectory.empty()) {
+    if (!options.outputDirectory.empty())
+      throw io::DeckError("--restart continues in the directory it names; leave out --output");
+    dir_ = options.restartDirectory;
+    restart = readRestart(deck, dir_);
+  }
+  if (root_ && !restart) prepareOutputDirectory(dir_);
+  comm->barrier();
+  recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_,
+                                             outputSets[0], outputSets[1], restart ? &restart->outputs : nullptr);
+  checkpoints_ = std::make_unique<io::CheckpointStore>(dir_);
+  checkpointEvery_ = D.sublist("Output").get<int>("checkpoint every"); // none on an arc-length path
+  every_ = D.sublist("Output").get<int>("every");
+
+  describeRun(deck, physicalVolumetric);
+
+  committed_ = std::make_unique<StepState>(assembler_->ownedMap(), assembler_->numLocalElements());
+  stepStart_ = std::make_unique<StepState>(*committed_);
+  previous_ = std::make_unique<StepState>(*committed_);
+  extrapolate_ = D.sublist("Time").get<std::string>("predictor") == "linear extrapolation";
+  const assembly::MuscleFields initialMuscle = assembler_->updateMuscleHistory(committed_->u);
+  std::vector<double> initialInputs;
+  for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g)
+    initialInputs.push_back(assembler_->muscleHistory().input(static_cast<int>(g), 0.0));
+  if (!restart) {
+    recorder_->record(0.0, committed_->u, committed_->lambda, true, initialMuscle, initialInputs);
+    writeSummary();
+  }
+  stepsStart_ = Clock::now();
+  installStopSignalHandlers();
+  if (root_) onStopSignal([this](int signal) { writeInterruptedSummary(signal); });
+
+  // Neural control (issue 5): per step, the controller picks the inputs of the controlled
+  // groups that keep the control points at their goals (eq. 25), each candidate a full step
+  // solve from the committed state; the winner's state is committed.
+  control_ = std::make_unique<ControlSetup>(buildControl(deck, scene));
+  if (controlGroups > 1 &&
+      !(control_->enabled && control_->parameters.type == control::ControllerType::geneticAlgorithm))
+    throw io::DeckError("--control-groups " + std::to_string(controlGroups) +
+                        " needs Control/type = genetic algorithm (the candidates it shares out)");
+  committedStretch_ = initialMuscle.groupMeanStretch;
+  if (control_->enabled) setUpController(restart ? &restart->outputs : nullptr);
+  if (restart) restoreState(*restart);
+}
+
+// The assembly, the model evaluator with its linear solver, Newton, the Uzawa loop and the
+// path's monitors, on the control group's communicator.
+void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials::VolumetricEnergy> &physicalVolumetric) {
+  const auto &D = deck.root();
+  const RunOptions &options = options_;
+  model::Scene &scene = *scene_;
+  const double mu = scene.tissues[0].matrix->shearModulus();
+  const auto &incompressibility = D.sublist("Incompressibility");
+  const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = groups_->groupComm();
   assembler_ = Teuchos::rcp(new assembly::Assembler(scene, solverComm));
   LinearSolverContext context{assembler_->coordinates(), assembler_->rigidBodyModes(), solverComm->getSize(),
                               assembler_->layout().numGlobalDofs(), scene.symmetricTangent};
@@ -406,33 +471,22 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
       std::printf("  note: the Uzawa loop contracts slowly in tissue '%s': kappa_AL raised to %.3g mu for the rest of "
                   "the run\n", t.name.c_str(), uzawa_->penaltyRatios()[tissue]);
   });
+  // What Linear solver/type = auto chose (the displacement block's preconditioner with mixed).
+  doc_["linear_solver"] = usesDirectSolve(linearSection, context)
+                              ? "direct (" + linearSection.get<std::string>("direct solver") + ")"
+                              : "iterative (" + linearSection.get<std::string>("preconditioner") + ")";
+}
 
-  // Checked before the output directory is cleared: a bad deck leaves an earlier run intact.
-  std::vector<std::vector<std::string>> outputSets;
-  for (const char *key : {"resultant face sets", "volume face sets"}) {
-    outputSets.push_back(io::splitNameList(D.sublist("Output").get<std::string>(key)));
-    for (const auto &name : outputSets.back())
-      if (!scene.mesh.faceSets.count(name))
-        throw io::DeckError(deck.where({"Output", key}) + ": no face set '" + name + "'");
-  }
-  dir_ = options.outputDirectory.empty() ? std::filesystem::path(D.sublist("Output").get<std::string>("directory"))
-                                         : options.outputDirectory;
-  deckListing_ = parameterListing(D);
-  std::unique_ptr<Restart> restart;
-  if (!options.restartDirectory.empty()) {
-    if (!options.outputDirectory.empty())
-      throw io::DeckError("--restart continues in the directory it names; leave out --output");
-    dir_ = options.restartDirectory;
-    restart = readRestart(deck, dir_);
-  }
-  if (root_ && !restart) prepareOutputDirectory(dir_);
-  comm->barrier();
-  recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_,
-                                             outputSets[0], outputSets[1], restart ? &restart->outputs : nullptr);
-  checkpoints_ = std::make_unique<io::CheckpointStore>(dir_);
-  checkpointEvery_ = D.sublist("Output").get<int>("checkpoint every"); // none on an arc-length path
-  every_ = D.sublist("Output").get<int>("every");
-
+// What summary.json says of the run before its first step, and the console's first lines.
+void Simulation::describeRun(const io::Deck &deck, const std::vector<materials::VolumetricEnergy> &physicalVolumetric) {
+  const auto &D = deck.root();
+  const model::Scene &scene = *scene_;
+  // The summary's kappa/mu figures are the Material section's tissue's (tissues[0]).
+  const double mu = scene.tissues[0].matrix->shearModulus();
+  const auto &incompressibility = D.sublist("Incompressibility");
+  const Teuchos::RCP<const Teuchos::Comm<int>> &comm = comm_;
+  const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = groups_->groupComm();
+  const int controlGroups = options_.controlGroups;
   doc_["deck"] = deck.file();
   doc_["converged"] = false;
   doc_["running"] = true;
@@ -449,10 +503,6 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                                                                                         : "Zoltan2 multijagged";
   }
   doc_["dofs"] = assembler_->layout().numGlobalDofs();
-  // What Linear solver/type = auto chose (the displacement block's preconditioner with mixed).
-  doc_["linear_solver"] = usesDirectSolve(linearSection, context)
-                              ? "direct (" + linearSection.get<std::string>("direct solver") + ")"
-                              : "iterative (" + linearSection.get<std::string>("preconditioner") + ")";
   doc_["elements"] = scene.mesh.numElements();
   doc_["incompressibility"] = incompressibility.get<std::string>("method");
   doc_["kappa_tangent"] = scene.tissues[0].volumetric.kappa();
@@ -477,34 +527,6 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                 comm->getSize(), incompressibility.get<std::string>("method").c_str(), scene.tissues[0].volumetric.kappa() / mu);
   if (talk_)
     for (const std::string &note : scene.meshNotes) std::printf("glossa: note: %s\n", note.c_str());
-
-  committed_ = std::make_unique<StepState>(assembler_->ownedMap(), assembler_->numLocalElements());
-  stepStart_ = std::make_unique<StepState>(*committed_);
-  previous_ = std::make_unique<StepState>(*committed_);
-  extrapolate_ = D.sublist("Time").get<std::string>("predictor") == "linear extrapolation";
-  const assembly::MuscleFields initialMuscle = assembler_->updateMuscleHistory(committed_->u);
-  std::vector<double> initialInputs;
-  for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g)
-    initialInputs.push_back(assembler_->muscleHistory().input(static_cast<int>(g), 0.0));
-  if (!restart) {
-    recorder_->record(0.0, committed_->u, committed_->lambda, true, initialMuscle, initialInputs);
-    writeSummary();
-  }
-  stepsStart_ = Clock::now();
-  installStopSignalHandlers();
-  if (root_) onStopSignal([this](int signal) { writeInterruptedSummary(signal); });
-
-  // Neural control (issue 5): per step, the controller picks the inputs of the controlled
-  // groups that keep the control points at their goals (eq. 25), each candidate a full step
-  // solve from the committed state; the winner's state is committed.
-  control_ = std::make_unique<ControlSetup>(buildControl(deck, scene));
-  if (controlGroups > 1 &&
-      !(control_->enabled && control_->parameters.type == control::ControllerType::geneticAlgorithm))
-    throw io::DeckError("--control-groups " + std::to_string(controlGroups) +
-                        " needs Control/type = genetic algorithm (the candidates it shares out)");
-  committedStretch_ = initialMuscle.groupMeanStretch;
-  if (control_->enabled) setUpController(restart ? &restart->outputs : nullptr);
-  if (restart) restoreState(*restart);
 }
 
 void Simulation::setUpController(const OutputMark *resume) {

@@ -30,6 +30,9 @@ class CheckpointStore;
 class KeyedCsvWriter;
 class SummaryWriter;
 } // namespace glossa::io
+namespace glossa::materials {
+class VolumetricEnergy;
+}
 namespace glossa::model {
 struct Scene;
 struct SymmetryPlane;
@@ -99,6 +102,10 @@ private:
   struct Trial;     // the step being attempted
   class CandidatePlant;
 
+  // The constructor's parts: the solvers on the control group's communicator, and the
+  // summary's description of the run. `physicalVolumetric`: each tissue's volumetric law.
+  void buildSolvers(const io::Deck &deck, const std::vector<materials::VolumetricEnergy> &physicalVolumetric);
+  void describeRun(const io::Deck &deck, const std::vector<materials::VolumetricEnergy> &physicalVolumetric);
   // One step solve from the committed state to `time` into `state` (the committed state on
   // entry); the muscle history's trial values are this step's. `quiet`: no per-iteration output
   // (a controller's candidates).

@@ -46,6 +46,86 @@ Distance distance(const std::vector<Eigen::Vector3d> &x, const std::vector<Eigen
   if (!x.empty()) d.mean /= static_cast<double>(x.size());
   return d;
 }
+
+// glossa zero-strain maps the mesh as read (the imaged geometry) under the deck's gravity alone.
+void requireImagedGeometryUnderGravity(const io::Deck &deck) {
+  const auto &D = deck.root();
+  if (!D.sublist("Mesh").get<std::string>("reference coordinates file").empty())
+    throw io::DeckError(
+        deck.where({"Mesh", "reference coordinates file"}) +
+        ": glossa zero-strain starts from the mesh as read (the imaged geometry); leave it empty");
+  const auto &loads = D.sublist("Loads");
+  int gravityLoads = 0;
+  for (auto it = loads.begin(); it != loads.end(); ++it) {
+    const std::string &name = loads.name(it);
+    if (loads.sublist(name).get<std::string>("type") != "gravity")
+      throw io::DeckError(deck.where({"Loads", name, "type"}) +
+                          ": glossa zero-strain needs a deck loaded by gravity "
+                          "alone (the configuration gravity maps onto the imaged geometry); '" +
+                          name + "' is a " + loads.sublist(name).get<std::string>("type") + " load");
+    ++gravityLoads;
+  }
+  if (gravityLoads == 0)
+    throw io::DeckError(deck.where({"Loads"}) + ": glossa zero-strain needs at least one gravity load");
+}
+
+// The deck with every gravity load reversed and scaled by `factor` (the paper's approximate
+// zero-strain configuration, §8.1).
+io::Deck reversedGravity(const io::Deck &deck, double factor) {
+  io::Deck unload = deck;
+  auto &L = unload.root().sublist("Loads");
+  for (auto it = L.begin(); it != L.end(); ++it) {
+    auto &l = L.sublist(L.name(it));
+    const std::string posture = l.get<std::string>("posture");
+    const double g = l.get<double>("g");
+    Eigen::Vector3d a = loads::postureGravity(posture == "custom" ? "upright" : posture, g);
+    if (posture == "custom") {
+      const auto &d = l.get<Teuchos::Array<double>>("direction");
+      a = g * Eigen::Vector3d(d[0], d[1], d[2]).normalized();  // non-zero: buildScene checked it
+    }
+    l.set("posture", std::string("custom"));
+    l.set("direction", Teuchos::Array<double>(std::vector<double>{-a.x(), -a.y(), -a.z()}));
+    l.set("g", factor * a.norm());
+  }
+  return unload;
+}
+
+// The zero-strain reference coordinates to `output` and its report beside it (.json). Rank 0.
+void writeZeroStrain(const io::Deck &deck, const ZeroStrainResult &result, const std::vector<Eigen::Vector3d> &X,
+                     const std::filesystem::path &output, bool quiet) {
+  const auto &z = deck.root().sublist("Zero strain");
+  char line[256];
+  std::snprintf(line, sizeof line, "under the deck's gravity: max |x - X_img| = %.6e m, mean %.6e m",
+                result.maxDistance, result.meanDistance);
+  std::vector<std::string> header{"zero-strain configuration (paper §8.1, doc/tongue.md s8_1) of " + deck.file(),
+                                  "method " + result.method + ", " + std::to_string(result.iterations) +
+                                      " iteration(s), " + std::to_string(result.solves) +
+                                      " forward solves" + (result.converged ? "" : ", TOLERANCE NOT MET"),
+                                  line};
+  mesh::writeReferenceCoordinates(output.string(), X, header);
+  nlohmann::json report;
+  report["deck"] = deck.file();
+  report["method"] = result.method;
+  report["converged"] = result.converged;
+  report["iterations"] = result.iterations;
+  report["solves"] = result.solves;
+  report["mesh_size"] = result.meshSize;
+  if (result.method == "inverse")
+    report["tolerance"] = result.tolerance;
+  else
+    report["gravity_factor"] = z.get<double>("gravity factor");
+  report["max_distance"] = result.maxDistance;
+  report["mean_distance"] = result.meanDistance;
+  report["seconds"] = result.seconds;
+  report["runs"] = result.history;
+  std::filesystem::path json = output;
+  json.replace_extension(".json");
+  std::ofstream(json) << report.dump(2) << '\n';
+  if (!quiet)
+    std::printf("zero-strain: %s, %d iteration(s), %d solves, %.1f s; wrote %s and %s\n",
+                result.method.c_str(), result.iterations, result.solves, result.seconds, output.c_str(),
+                json.c_str());
+}
 }  // namespace
 
 Teuchos::ParameterList zeroStrainParameters() {
@@ -74,23 +154,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   const bool root = comm->getRank() == 0;
   const auto &D = deck.root();
   const auto &z = D.sublist("Zero strain");
-  if (!D.sublist("Mesh").get<std::string>("reference coordinates file").empty())
-    throw io::DeckError(
-        deck.where({"Mesh", "reference coordinates file"}) +
-        ": glossa zero-strain starts from the mesh as read (the imaged geometry); leave it empty");
-  const auto &loads = D.sublist("Loads");
-  int gravityLoads = 0;
-  for (auto it = loads.begin(); it != loads.end(); ++it) {
-    const std::string &name = loads.name(it);
-    if (loads.sublist(name).get<std::string>("type") != "gravity")
-      throw io::DeckError(deck.where({"Loads", name, "type"}) +
-                          ": glossa zero-strain needs a deck loaded by gravity "
-                          "alone (the configuration gravity maps onto the imaged geometry); '" +
-                          name + "' is a " + loads.sublist(name).get<std::string>("type") + " load");
-    ++gravityLoads;
-  }
-  if (gravityLoads == 0)
-    throw io::DeckError(deck.where({"Loads"}) + ": glossa zero-strain needs at least one gravity load");
+  requireImagedGeometryUnderGravity(deck);
 
   ZeroStrainResult result;
   result.method = z.get<std::string>("method");
@@ -140,21 +204,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   std::vector<Eigen::Vector3d> X = Ximg;
   if (result.method == "approximate") {
     // The deck's gravity reversed and scaled, on the imaged geometry.
-    io::Deck unload = deck;
-    auto &L = unload.root().sublist("Loads");
-    for (auto it = L.begin(); it != L.end(); ++it) {
-      auto &l = L.sublist(L.name(it));
-      const std::string posture = l.get<std::string>("posture");
-      const double g = l.get<double>("g");
-      Eigen::Vector3d a = loads::postureGravity(posture == "custom" ? "upright" : posture, g);
-      if (posture == "custom") {
-        const auto &d = l.get<Teuchos::Array<double>>("direction");
-        a = g * Eigen::Vector3d(d[0], d[1], d[2]).normalized();  // non-zero: buildScene checked it
-      }
-      l.set("posture", std::string("custom"));
-      l.set("direction", Teuchos::Array<double>(std::vector<double>{-a.x(), -a.y(), -a.z()}));
-      l.set("g", z.get<double>("gravity factor") * a.norm());
-    }
+    const io::Deck unload = reversedGravity(deck, z.get<double>("gravity factor"));
     const auto [x, seconds] = forward(unload, Ximg, "unload");
     record("unload", distance(x, Ximg), seconds);
     X = x;
@@ -186,39 +236,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   for (const auto &x : X)
     for (int c = 0; c < 3; ++c) result.reference.push_back(x(c));
 
-  if (root) {
-    char line[256];
-    std::snprintf(line, sizeof line, "under the deck's gravity: max |x - X_img| = %.6e m, mean %.6e m",
-                  result.maxDistance, result.meanDistance);
-    std::vector<std::string> header{"zero-strain configuration (paper §8.1, doc/tongue.md s8_1) of " + deck.file(),
-                                    "method " + result.method + ", " + std::to_string(result.iterations) +
-                                        " iteration(s), " + std::to_string(result.solves) +
-                                        " forward solves" + (result.converged ? "" : ", TOLERANCE NOT MET"),
-                                    line};
-    mesh::writeReferenceCoordinates(output.string(), X, header);
-    nlohmann::json report;
-    report["deck"] = deck.file();
-    report["method"] = result.method;
-    report["converged"] = result.converged;
-    report["iterations"] = result.iterations;
-    report["solves"] = result.solves;
-    report["mesh_size"] = result.meshSize;
-    if (result.method == "inverse")
-      report["tolerance"] = result.tolerance;
-    else
-      report["gravity_factor"] = z.get<double>("gravity factor");
-    report["max_distance"] = result.maxDistance;
-    report["mean_distance"] = result.meanDistance;
-    report["seconds"] = result.seconds;
-    report["runs"] = result.history;
-    std::filesystem::path json = output;
-    json.replace_extension(".json");
-    std::ofstream(json) << report.dump(2) << '\n';
-    if (!quiet)
-      std::printf("zero-strain: %s, %d iteration(s), %d solves, %.1f s; wrote %s and %s\n",
-                  result.method.c_str(), result.iterations, result.solves, result.seconds, output.c_str(),
-                  json.c_str());
-  }
+  if (root) writeZeroStrain(deck, result, X, output, quiet);
   comm->barrier();
   return result;
 }

@@ -359,27 +359,11 @@ void declareSceneParameters(ParameterList &schema) {
              "named points, e.g. 'tip', are traced too)");
 }
 
-Scene buildScene(const io::Deck &deck, double endTime) {
-  Scene scene;
-  scene.mesh = buildMesh(deck, scene.meshNotes);
-  mesh::HexMesh &m = scene.mesh;
-
-  BuiltMaterial material = buildMaterial(deck, m, endTime);
-  scene.tissues = std::move(material.tissues);
-  scene.elementTissue = std::move(material.elementTissue);
-  scene.muscles = std::move(material.muscles);
-  scene.formulation = material.plainQ1 ? ElementFormulation::PlainQ1 : ElementFormulation::Q1P0;
-  {
-    const ParameterList &m = deck.root().sublist("Mesh");
-    const std::string partitioner = m.get<std::string>("partitioner");
-    scene.partitioner = partitioner == "coordinate bisection" ? Partitioner::coordinateBisection
-                        : partitioner == "Zoltan2 RCB"        ? Partitioner::zoltan2Rcb
-                        : partitioner == "Zoltan2 multijagged" || m.get<std::string>("type") == "file"
-                            ? Partitioner::zoltan2MultiJagged
-                            : Partitioner::coordinateBisection;
-  }
-  scene.symmetricTangent = material.symmetricTangent;
-
+namespace {
+// Boundary conditions: each a node set's fixed components, their values or expressions, and
+// an elastic support's stiffness.
+std::vector<DirichletCondition> buildBoundaryConditions(const io::Deck &deck, const mesh::HexMesh &m, double endTime) {
+  std::vector<DirichletCondition> conditions;
   const ParameterList &bcs = deck.root().sublist("Boundary conditions");
   for (auto it = bcs.begin(); it != bcs.end(); ++it) {
     const std::string &name = bcs.name(it);
@@ -421,9 +405,14 @@ Scene buildScene(const io::Deck &deck, double endTime) {
         throw io::DeckError(deck.where({"Boundary conditions", name, "node set"}) + ": the set '" + set + "' is empty");
       bc.nodeStiffness = k / static_cast<double>(bc.nodes.size());
     }
-    scene.dirichlet.push_back(std::move(bc));
+    conditions.push_back(std::move(bc));
   }
+  return conditions;
+}
 
+// Loads: follower pressures, gravity and body forces, dead tractions (a follower load makes the
+// tangent unsymmetric).
+void buildLoads(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Scene &scene) {
   const ParameterList &loads = deck.root().sublist("Loads");
   for (auto it = loads.begin(); it != loads.end(); ++it) {
     const std::string &name = loads.name(it);
@@ -477,7 +466,12 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     load.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
     scene.tractions.push_back(std::move(load));
   }
+}
 
+// The traced points: the generator's named points and the deck's, each at a node or interpolated
+// in the element that holds it.
+void traceNamedPoints(const io::Deck &deck, Scene &scene) {
+  mesh::HexMesh &m = scene.mesh;
   for (const auto &[name, point] : m.namedPoints) scene.tracedPoints.push_back(name);
   const ParameterList &points = deck.root().sublist("Named points");
   for (auto it = points.begin(); it != points.end(); ++it) {
@@ -499,6 +493,34 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     if (std::find(scene.tracedPoints.begin(), scene.tracedPoints.end(), name) == scene.tracedPoints.end())
       scene.tracedPoints.push_back(name);
   }
+}
+
+} // namespace
+
+Scene buildScene(const io::Deck &deck, double endTime) {
+  Scene scene;
+  scene.mesh = buildMesh(deck, scene.meshNotes);
+  mesh::HexMesh &m = scene.mesh;
+
+  BuiltMaterial material = buildMaterial(deck, m, endTime);
+  scene.tissues = std::move(material.tissues);
+  scene.elementTissue = std::move(material.elementTissue);
+  scene.muscles = std::move(material.muscles);
+  scene.formulation = material.plainQ1 ? ElementFormulation::PlainQ1 : ElementFormulation::Q1P0;
+  {
+    const ParameterList &m = deck.root().sublist("Mesh");
+    const std::string partitioner = m.get<std::string>("partitioner");
+    scene.partitioner = partitioner == "coordinate bisection" ? Partitioner::coordinateBisection
+                        : partitioner == "Zoltan2 RCB"        ? Partitioner::zoltan2Rcb
+                        : partitioner == "Zoltan2 multijagged" || m.get<std::string>("type") == "file"
+                            ? Partitioner::zoltan2MultiJagged
+                            : Partitioner::coordinateBisection;
+  }
+  scene.symmetricTangent = material.symmetricTangent;
+
+  scene.dirichlet = buildBoundaryConditions(deck, m, endTime);
+  buildLoads(deck, m, endTime, scene);
+  traceNamedPoints(deck, scene);
   if (scene.tracedPoints.empty())
     scene.meshNotes.push_back("no named points: traces.csv and final_displacement will be empty; name points "
                               "in the deck's 'Named points' (any position inside the mesh) to trace them");
