@@ -21,7 +21,7 @@
 #include "app/DeckSchema.hpp"
 #include "assembly/Assembler.hpp"
 #include "io/deck/Deck.hpp"
-#include "model/SceneFactory.hpp"
+#include "input/SceneFactory.hpp"
 
 namespace {
 double median(std::vector<double> v) {
@@ -70,7 +70,7 @@ int main(int argc, char **argv) {
   for (const std::string &path : decks) {
     io::Deck deck = io::Deck::fromFile(path);
     deck.validate(schema);
-    const model::Scene scene = model::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
+    const model::Scene scene = input::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
     const assembly::Assembler assembler(scene, comm);
     auto K = assembler.createMatrix();
     assembly::Vector u(assembler.ownedMap()), f(assembler.ownedMap());

@@ -22,7 +22,7 @@
 #include "io/output/ResultWriter.hpp"
 #include "io/output/SummaryWriter.hpp"
 #include "io/output/TraceWriter.hpp"
-#include "model/SceneFactory.hpp"
+#include "input/SceneFactory.hpp"
 #include "model/SymmetryPlanes.hpp"
 #include "solvers/ArcLengthContinuation.hpp"
 #include "solvers/CheckpointContents.hpp"
@@ -345,7 +345,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
       root_(comm->getRank() == 0), talk_(root_ && !options.quiet), detail_(talk_ && options.verbose) {
   const auto &D = deck.root();
   steps_ = std::make_unique<StepSizeController>(stepSizeRule(D.sublist("Time")));
-  scene_ = std::make_unique<model::Scene>(model::buildScene(deck, steps_->endTime()));
+  scene_ = std::make_unique<model::Scene>(input::buildScene(deck, steps_->endTime()));
   model::Scene &scene = *scene_;
   const auto &incompressibility = D.sublist("Incompressibility");
   // Each tissue's law stays the physical one for the Uzawa loop; the tangent gets its kappa_t.

@@ -2,14 +2,14 @@
 
 #include "app/PointCommand.hpp"
 #include "app/ZeroStrainCommand.hpp"
-#include "model/SceneFactory.hpp"
+#include "input/SceneFactory.hpp"
 #include "solvers/Simulation.hpp"
 
 namespace glossa::app {
 
 Teuchos::ParameterList deckSchema() {
   Teuchos::ParameterList schema("Glossa");
-  model::declareSceneParameters(schema);
+  input::declareSceneParameters(schema);
   solvers::declareSolverParameters(schema);
   schema.set("Point", pointParameters(), "the deformation path of glossa point (one material point)");
   schema.set("Zero strain", zeroStrainParameters(),

@@ -9,8 +9,9 @@
 #include "io/deck/ParameterSpec.hpp"
 #include "io/output/RoundTripText.hpp"
 #include "mesh/BoxGenerator.hpp"
-#include "model/MaterialFactory.hpp"
+#include "input/MaterialFactory.hpp"
 #include "model/MuscleHistory.hpp"
+#include "input/TimeFunctionParameters.hpp"
 #include "model/TimeFunction.hpp"
 
 namespace glossa::app {
@@ -28,7 +29,7 @@ ParameterList pointParameters() {
                          "m: normal of the shear planes (simple shear), orthogonal to e", 3);
   io::declareDouble(p, "amplitude", 0.2, "",
                     "lambda - 1 (uniaxial) or gamma (simple shear) at time-function value 1", io::Range::closed(-0.9, 10));
-  p.set("time function", model::TimeFunction::validParameters(), "scales the amplitude in time");
+  p.set("time function", input::timeFunctionParameters(), "scales the amplitude in time");
   io::declareDoubleArray(p, "times", Array<double>(), "s", "table path: times of the rows (increasing)", 0);
   io::declareDoubleArray(p, "F", Array<double>(), "",
                          "table path: 9 values per time, F row-major (F11 F12 F13 F21 ...)", 0);
@@ -50,7 +51,7 @@ public:
     e_ = vec3(p.get<Array<double>>("direction"));
     m_ = vec3(p.get<Array<double>>("shear plane normal"));
     amplitude_ = p.get<double>("amplitude");
-    scale_ = model::TimeFunction::fromParameters(p.sublist("time function"), endTime);
+    scale_ = input::parseTimeFunction(p.sublist("time function"), endTime);
     if (!(e_.norm() > 0.0)) throw io::DeckError(deck.where({"Point", "direction"}) + " is zero");
     e_.normalize();
     if (kind_ == "simple shear") {
@@ -117,7 +118,7 @@ int runPointDriver(const io::Deck &deck, const std::filesystem::path &csv) {
   const Eigen::Vector3d x = vec3(deck.root().sublist("Point").get<Array<double>>("position"));
   const double h = 1e-6;
   const mesh::HexMesh cell = mesh::generateBox(x - Eigen::Vector3d::Constant(h / 2), Eigen::Vector3d::Constant(h), {1, 1, 1});
-  const model::BuiltMaterial material = model::buildMaterial(deck, cell, endTime);
+  const input::BuiltMaterial material = input::buildMaterial(deck, cell, endTime);
   const model::MuscleArchitecture &muscles = material.muscles;
   const DeformationPath path(deck, endTime);
 

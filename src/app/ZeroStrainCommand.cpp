@@ -8,7 +8,7 @@
 #include "io/deck/ParameterSpec.hpp"
 #include "loads/BodyForce.hpp"
 #include "mesh/ReferenceCoordinates.hpp"
-#include "model/SceneFactory.hpp"
+#include "input/SceneFactory.hpp"
 #include "solvers/Simulation.hpp"
 
 namespace glossa::app {
@@ -158,7 +158,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
 
   ZeroStrainResult result;
   result.method = z.get<std::string>("method");
-  const mesh::HexMesh imaged = model::buildScene(deck, D.sublist("Time").get<double>("end time")).mesh;
+  const mesh::HexMesh imaged = input::buildScene(deck, D.sublist("Time").get<double>("end time")).mesh;
   const std::vector<Eigen::Vector3d> &Ximg = imaged.nodes;
   result.meshSize = meanEdgeLength(imaged);
   result.tolerance = z.get<double>("tolerance") * result.meshSize;

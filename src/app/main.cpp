@@ -22,7 +22,7 @@
 #include "io/deck/DeckReference.hpp"
 #include "io/output/OutputError.hpp"
 #include "mesh/MeshError.hpp"
-#include "model/SceneFactory.hpp"
+#include "input/SceneFactory.hpp"
 #include "solvers/Simulation.hpp"
 
 namespace {
@@ -224,7 +224,7 @@ int main(int argc, char **argv) {
     if (a.command == "validate") {
       const auto deck = loadDeck(a, schema);
       // Building the scene checks what needs the mesh too (set names, named points).
-      const auto scene = glossa::model::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
+      const auto scene = glossa::input::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
       if (root)
         for (const std::string &note : scene.meshNotes) std::fprintf(stderr, "glossa: note: %s\n", note.c_str());
       if (root) std::cout << deck.toXml();

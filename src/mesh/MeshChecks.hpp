@@ -8,7 +8,7 @@
 //  - two elements on the same eight nodes (a duplicate, counted twice in mass and stiffness);
 //  - a corner whose scaled Jacobian is <= 0 (an inverted or degenerate corner the 2x2x2 Gauss
 //    points do not see).
-// The scene check that uses these (model/SceneChecks.hpp) decides which are refused and which
+// The scene check that uses these (input/SceneChecks.hpp) decides which are refused and which
 // a deck may allow. Eigen only.
 
 #include <cstddef>

@@ -7,8 +7,6 @@
 #include <string>
 #include <vector>
 
-#include <Teuchos_ParameterList.hpp>
-
 #include "loads/PressureField.hpp"
 
 namespace glossa::model {
@@ -23,11 +21,6 @@ public:
   // values[i] from times[i] until times[i+1]; values[0] before times[0].
   static TimeFunction steps(std::vector<double> times, std::vector<double> values);
   static TimeFunction breathing(loads::BreathingProfile profile);
-
-  // The parameters of a "time function" sublist, and the function they describe.
-  static Teuchos::ParameterList validParameters(const std::string &defaultType = "ramp");
-  // `endTime` is the run's end time, the default ramp duration.
-  static TimeFunction fromParameters(const Teuchos::ParameterList &list, double endTime);
 
   double operator()(double t) const { return scale_ * shape(t); }
   // The same function times `factor`.

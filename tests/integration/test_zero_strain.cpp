@@ -16,7 +16,7 @@
 #include "RunDeck.hpp"
 #include "app/ZeroStrainCommand.hpp"
 #include "mesh/MeshFile.hpp"
-#include "model/SceneFactory.hpp"
+#include "input/SceneFactory.hpp"
 #include "solvers/ControlSection.hpp"
 
 namespace glossa::test {
@@ -138,7 +138,7 @@ TEST(ZeroStrain, TracesAndControlGoalsMeasureFromTheImagedGeometry) {
   const auto schema = app::deckSchema();
   auto deck = io::Deck::fromFile(inputPath("paper/s8_5_gradient_upright.xml"));
   deck.validate(schema);
-  const model::Scene scene = model::buildScene(deck, 8.75);
+  const model::Scene scene = input::buildScene(deck, 8.75);
   const solvers::ControlSetup control = solvers::buildControl(deck, scene);
   const auto imaged = mesh::readMeshFile(inputPath("tongue/tongue.node")).mesh.nodes;
   ASSERT_EQ(control.pointNodes.size(), 10u);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "input/TimeFunctionParameters.hpp"
 #include "model/TimeFunction.hpp"
 
 using glossa::model::TimeFunction;
@@ -27,23 +28,23 @@ TEST(TimeFunction, TableAndRampAndScaling) {
 }
 
 TEST(TimeFunction, FromParametersReadsSteps) {
-  auto p = TimeFunction::validParameters("constant");
+  auto p = glossa::input::timeFunctionParameters("constant");
   EXPECT_EQ(p.get<std::string>("type"), "constant");
   p.set("type", std::string("steps"));
   p.set("times", Teuchos::Array<double>(std::vector<double>{0.0, 0.5}));
   p.set("values", Teuchos::Array<double>(std::vector<double>{1.0, 0.0}));
-  const auto f = TimeFunction::fromParameters(p, 1.0);
+  const auto f = glossa::input::parseTimeFunction(p, 1.0);
   EXPECT_EQ(f(0.49), 1.0);
   EXPECT_EQ(f(0.5), 0.0);
 }
 
 TEST(TimeFunction, BreathingFromParametersIsEq27HalfWave) {
-  auto p = TimeFunction::validParameters();
+  auto p = glossa::input::timeFunctionParameters();
   p.set("type", std::string("breathing"));
-  const auto f = TimeFunction::fromParameters(p, 1.0);
+  const auto f = glossa::input::parseTimeFunction(p, 1.0);
   const double omega = 2 * M_PI / 2.5;
   EXPECT_NEAR(f(0.3), std::pow(std::sin(omega * 0.3), 1.75), 1e-15);
   EXPECT_EQ(f(1.5), 0.0); // second half of the breath: no pressure
   p.set("rectification", std::string("full-wave"));
-  EXPECT_NEAR(TimeFunction::fromParameters(p, 1.0)(1.5), std::pow(std::abs(std::sin(omega * 1.5)), 1.75), 1e-15);
+  EXPECT_NEAR(glossa::input::parseTimeFunction(p, 1.0)(1.5), std::pow(std::abs(std::sin(omega * 1.5)), 1.75), 1e-15);
 }

@@ -1,8 +1,11 @@
-#include "model/DeckSets.hpp"
+#include "input/DeckSets.hpp"
 
 #include "io/deck/DeckError.hpp"
 
-namespace glossa::model {
+namespace glossa::input {
+
+// The scene is the model layer's; this layer only reads it from the deck.
+using namespace glossa::model;
 
 namespace {
 template <class Map> std::string namesOf(const Map &sets) {
@@ -59,4 +62,4 @@ int muscleGroupAt(const io::Deck &deck, const MuscleArchitecture &muscles, const
                       (known.empty() ? "none declared" : known) + ")");
 }
 
-} // namespace glossa::model
+} // namespace glossa::input

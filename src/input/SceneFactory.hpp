@@ -1,5 +1,5 @@
 #pragma once
-// Builds the Scene from the deck sections it owns ("Mesh", "Material", "Boundary conditions",
+// Builds the model::Scene from the deck sections it owns ("Mesh", "Material", "Boundary conditions",
 // "Loads", "Named points") and declares their parameters. Later checks that need the mesh
 // (a set name that does not exist, a named point off the mesh) are DeckErrors naming the path.
 
@@ -8,12 +8,12 @@
 #include "io/deck/Deck.hpp"
 #include "model/Scene.hpp"
 
-namespace glossa::model {
+namespace glossa::input {
 
 // Declared parameters of the scene's sections, to be merged into the deck schema.
 void declareSceneParameters(Teuchos::ParameterList &schema);
 
 // `deck` must have been validated (defaults filled). `endTime` scales default ramps.
-Scene buildScene(const io::Deck &deck, double endTime);
+model::Scene buildScene(const io::Deck &deck, double endTime);
 
-} // namespace glossa::model
+} // namespace glossa::input

@@ -10,7 +10,7 @@
 #include "mesh/HexMesh.hpp"
 #include "model/MuscleArchitecture.hpp"
 
-namespace glossa::model {
+namespace glossa::input {
 
 // The string parameter at `path` (sublists, then the parameter's name).
 const std::string &deckString(const io::Deck &deck, const std::vector<std::string> &path);
@@ -28,7 +28,7 @@ const std::vector<mesh::NodeId> &nodeSetAt(const io::Deck &deck, const mesh::Hex
                                            const std::vector<std::string> &path);
 
 // The index of the muscle group named at `path`; an empty name gives -1 unless `required`.
-int muscleGroupAt(const io::Deck &deck, const MuscleArchitecture &muscles, const std::vector<std::string> &path,
+int muscleGroupAt(const io::Deck &deck, const model::MuscleArchitecture &muscles, const std::vector<std::string> &path,
                   bool required);
 
-} // namespace glossa::model
+} // namespace glossa::input

@@ -1,4 +1,4 @@
-#include "model/MaterialFactory.hpp"
+#include "input/MaterialFactory.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -17,10 +17,14 @@
 #include "materials/SeriesElement.hpp"
 #include "materials/Yeoh.hpp"
 #include "loads/ExternalMuscle.hpp"
-#include "model/DeckSets.hpp"
+#include "input/TimeFunctionParameters.hpp"
+#include "input/DeckSets.hpp"
 #include "model/FibreDirectionField.hpp"
 
-namespace glossa::model {
+namespace glossa::input {
+
+// The scene is the model layer's; this layer only reads it from the deck.
+using namespace glossa::model;
 
 using Teuchos::Array;
 using Teuchos::ParameterList;
@@ -77,7 +81,7 @@ ParameterList muscleGroupParameters() {
   io::declareDouble(g, "initial activation", 0.0, "", "alpha at t = 0, in [alpha_min, 1]", io::Range::closed(0, 1));
   io::declareDouble(g, "neural input scale", 1.0, "", "u(t) = scale x neural input(t), clamped to [0, 1]",
                     io::Range::closed(0, 1));
-  g.set("neural input", TimeFunction::validParameters("constant"), "the neural input's time course");
+  g.set("neural input", timeFunctionParameters("constant"), "the neural input's time course");
   return g;
 }
 
@@ -159,7 +163,7 @@ MuscleGroup readGroup(const io::Deck &deck, const std::string &name, double endT
                           ": a neural input must lie in [0, 1], got " + std::to_string(v));
   TimeFunction shape = TimeFunction::constant();
   try {
-    shape = TimeFunction::fromParameters(input, endTime);
+    shape = parseTimeFunction(input, endTime);
   } catch (const std::invalid_argument &e) {
     throw io::DeckError(deck.where({"Material", "Muscle groups", name, "neural input"}) + ": " + e.what());
   }
@@ -509,4 +513,4 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
   return built;
 }
 
-} // namespace glossa::model
+} // namespace glossa::input

@@ -14,12 +14,12 @@
 #include "io/deck/Deck.hpp"
 #include "model/Scene.hpp"
 
-namespace glossa::model {
+namespace glossa::input {
 
 // Declares Mesh/Checks (in the Mesh section's parameter list).
 void declareMeshCheckParameters(Teuchos::ParameterList &meshSection);
 
 // Runs every check on `scene` as built from `deck`; may add the "unused nodes" condition.
-void checkScene(const io::Deck &deck, Scene &scene);
+void checkScene(const io::Deck &deck, model::Scene &scene);
 
-} // namespace glossa::model
+} // namespace glossa::input

@@ -1,4 +1,4 @@
-#include "model/SceneFactory.hpp"
+#include "input/SceneFactory.hpp"
 
 #include "model/PointLocation.hpp"
 
@@ -19,11 +19,15 @@
 #include "mesh/ReferenceCoordinates.hpp"
 #include "mesh/ThickCylinderGenerator.hpp"
 #include "mesh/ThickSphereGenerator.hpp"
-#include "model/DeckSets.hpp"
-#include "model/MaterialFactory.hpp"
-#include "model/SceneChecks.hpp"
+#include "input/TimeFunctionParameters.hpp"
+#include "input/DeckSets.hpp"
+#include "input/MaterialFactory.hpp"
+#include "input/SceneChecks.hpp"
 
-namespace glossa::model {
+namespace glossa::input {
+
+// The scene is the model layer's; this layer only reads it from the deck.
+using namespace glossa::model;
 
 namespace {
 using Teuchos::Array;
@@ -140,7 +144,7 @@ ParameterList dirichletParameters() {
                       "reference position X, Y, Z [m] and the time t [s], e.g. '1.2 * t * X' (+ - * / ^, sqrt, exp, "
                       "log, sin, cos, abs, a < b ? c : d); replaces value and time function for that component; "
                       "empty: value x time function");
-  p.set("time function", TimeFunction::validParameters(), "scales the value in time");
+  p.set("time function", timeFunctionParameters(), "scales the value in time");
   p.sublist("time function").set("type", std::string("constant"));
   return p;
 }
@@ -170,7 +174,7 @@ ParameterList loadParameters() {
   io::declareDoubleArray(p, "direction", Array<double>(3, 0.0), "", "gravity, custom posture: direction of gravity", 3);
   io::declareDoubleArray(p, "acceleration", Array<double>(3, 0.0), "m/s^2", "body force: a at scale 1", 3);
   io::declareString(p, "element set", "", "gravity, body force: elements it acts on; empty: all");
-  p.set("time function", TimeFunction::validParameters(), "scales the load in time");
+  p.set("time function", timeFunctionParameters(), "scales the load in time");
   return p;
 }
 
@@ -303,7 +307,7 @@ TimeFunction timeFunction(const io::Deck &deck, const std::vector<std::string> &
   const ParameterList *list = &deck.root();
   for (const auto &p : path) list = &list->sublist(p);
   try {
-    return TimeFunction::fromParameters(*list, endTime);
+    return parseTimeFunction(*list, endTime);
   } catch (const std::invalid_argument &e) {
     throw io::DeckError(deck.where(path) + ": " + e.what());
   }
@@ -532,4 +536,4 @@ Scene buildScene(const io::Deck &deck, double endTime) {
   return scene;
 }
 
-} // namespace glossa::model
+} // namespace glossa::input

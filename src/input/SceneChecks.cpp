@@ -1,4 +1,4 @@
-#include "model/SceneChecks.hpp"
+#include "input/SceneChecks.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -10,7 +10,10 @@
 #include "mesh/MeshChecks.hpp"
 #include "mesh/MeshQuality.hpp"
 
-namespace glossa::model {
+namespace glossa::input {
+
+// The scene is the model layer's; this layer only reads it from the deck.
+using namespace glossa::model;
 
 namespace {
 // "81, 82, 83" or "4, 9, 17, 23, 30 and 115 more".
@@ -186,4 +189,4 @@ void checkScene(const io::Deck &deck, Scene &scene) {
   }
 }
 
-} // namespace glossa::model
+} // namespace glossa::input

@@ -2,7 +2,7 @@
 // The deck's "Material" section: declares its parameters and builds the tissues (each an isochoric
 // matrix law, neo-Hookean, Fung, Mooney-Rivlin or Yeoh, with its volumetric law and density, on
 // its element set), the fibre families with their direction fields and the muscle groups
-// driving them (MuscleArchitecture) and the element formulation.
+// driving them (model::MuscleArchitecture) and the element formulation.
 
 #include <memory>
 #include <vector>
@@ -16,16 +16,16 @@
 #include "model/MuscleArchitecture.hpp"
 #include "model/Tissue.hpp"
 
-namespace glossa::model {
+namespace glossa::input {
 
 Teuchos::ParameterList materialParameters();
 
 struct BuiltMaterial {
   // tissues[0]: the Material section's own law, that of every element in no Tissues set; then
   // one per Material/Tissues sublist, in deck order.
-  std::vector<Tissue> tissues;
+  std::vector<model::Tissue> tissues;
   std::vector<int> elementTissue; // per mesh element: its index in `tissues`
-  MuscleArchitecture muscles;
+  model::MuscleArchitecture muscles;
   bool plainQ1 = false;
   bool symmetricTangent = true; // false for the eq. 5 fibre stress form
 };
@@ -34,4 +34,4 @@ struct BuiltMaterial {
 // fibre direction fields refer to `mesh`; `endTime` scales default ramps of the neural inputs.
 BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &mesh, double endTime);
 
-} // namespace glossa::model
+} // namespace glossa::input
