@@ -1,6 +1,7 @@
 #include "materials/VolumetricEnergy.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace glossa::materials {
@@ -41,6 +42,31 @@ double VolumetricEnergy::d2U(double t) const {
   case Form::Quadratic: return kappa_;
   }
   return 0.0;
+}
+
+double VolumetricEnergy::dilatationAtPressure(double p) const {
+  const double kappa = kappa_;
+  if (std::isinf(kappa)) return 1.0;
+  const double s = p / kappa;
+  switch (form_) {
+    case Form::Quadratic:
+      return 1.0 + s;
+    case Form::SimoTaylor:
+      // kappa/2 (theta - 1/theta) = p  <=>  theta^2 - 2 s theta - 1 = 0, positive root.
+      return s + std::sqrt(s * s + 1.0);
+    case Form::LogSquared: {
+      // kappa ln(theta)/theta = p has a root in (0, e] only for s <= 1/e (U' is increasing there
+      // and peaks at theta = e); beyond, the law cannot carry the pressure: report e.
+      if (s >= 1.0 / std::exp(1.0)) return std::exp(1.0);
+      double lo = std::numeric_limits<double>::min(), hi = std::exp(1.0);
+      for (int k = 0; k < 200 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (std::log(mid) / mid < s ? lo : hi) = mid;
+      }
+      return 0.5 * (lo + hi);
+    }
+  }
+  return 1.0;
 }
 
 double bulkModulus(double mu, double nu) {

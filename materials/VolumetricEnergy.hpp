@@ -21,6 +21,9 @@ public:
   double energy(double theta) const;
   double dU(double theta) const;  // U'
   double d2U(double theta) const; // U''
+  // The dilatation this law gives pressure p: the root of U'(theta) = p (1 for kappa = inf;
+  // e for the log-squared law beyond the largest pressure it can carry, kappa / e).
+  double dilatationAtPressure(double p) const;
   double kappa() const { return kappa_; }
   Form form() const { return form_; }
   VolumetricEnergy withKappa(double kappa) const { return {form_, kappa}; }

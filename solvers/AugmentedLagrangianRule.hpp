@@ -26,7 +26,7 @@ class AugmentedLagrangianRule {
   // Lambda of the next Uzawa solve from the element pressure p_e = U_t'(theta) + Lambda.
   double nextMultiplier(double elementPressure) const { return beta_ * elementPressure; }
   // The dilatation the physical law assigns to pressure p (U_phys'(theta) = p; 1 for kappa = inf).
-  double dilatationAtPressure(double p) const;
+  double dilatationAtPressure(double p) const { return physical_.dilatationAtPressure(p); }
   // The Uzawa stopping measure: |theta - theta_phys(p_e)|, zero at the fixed point.
   double dilatationError(double theta, double elementPressure) const {
     const double d = theta - dilatationAtPressure(elementPressure);

@@ -78,10 +78,14 @@ ParameterList controlParameters() {
   return p;
 }
 
+bool controlRequested(const ParameterList &controlSection) {
+  return controlSection.get<std::string>("type") != "none";
+}
+
 ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
   const ParameterList &c = deck.root().sublist("Control");
   ControlSetup s;
-  s.enabled = c.get<std::string>("type") != "none";
+  s.enabled = controlRequested(c);
   if (!s.enabled) return s;
   auto where = [&](const char *name) { return deck.where({"Control", name}); };
   const auto &groups = scene.muscles.groups;

@@ -32,4 +32,7 @@ struct ControlSetup {
 // weight count that does not match, GA parameters out of range).
 ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene);
 
+// Whether the section asks for a controller (type other than none), before the scene is there.
+bool controlRequested(const Teuchos::ParameterList &controlSection);
+
 } // namespace glossa::solvers

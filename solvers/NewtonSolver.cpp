@@ -9,7 +9,6 @@
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
-#include "io/deck/ParameterSpec.hpp"
 #include "solvers/LinearSolveFailure.hpp"
 #include "solvers/MumpsPreconditioner.hpp"
 
@@ -18,28 +17,6 @@ namespace glossa::solvers {
 using Teuchos::ParameterList;
 using Teuchos::RCP;
 using Teuchos::rcp;
-
-ParameterList nonlinearSolverParameters() {
-  ParameterList p;
-  io::declareInt(p, "maximum iterations", 25, "Newton iterations per solve before the step is cut back",
-                 io::Range::closed(1, 1000));
-  io::declareDouble(p, "residual tolerance", 1e-8, "",
-                    "converged when ||f|| <= this x max(||f_ext||, ||f|| at the start of the step); "
-                    "round-off puts a floor near 1e-10 of the load when kappa/mu is in the thousands",
-                    io::Range::open(0.0, 1.0));
-  io::declareDouble(p, "update tolerance", 1e-8, "",
-                    "and when the Newton update is below this relative to the displacement "
-                    "(weighted RMS norm; absolute floor 1e-9 of the element size)",
-                    io::Range::open(0.0, 1.0));
-  io::declareString(p, "forcing term", "Type 2",
-                    "linear tolerance per Newton iteration: constant (the Linear solver tolerance) "
-                    "or Eisenstat-Walker 'Type 2' (loose while far from the solution, down to the "
-                    "Linear solver tolerance)",
-                    {"constant", "Type 1", "Type 2"});
-  io::declareString(p, "line search", "full step", "NOX line search",
-                    {"full step", "backtrack", "polynomial"});
-  return p;
-}
 
 namespace {
 class IterationObserver : public NOX::Observer {
@@ -94,9 +71,9 @@ private:
 };
 } // namespace
 
-NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const ParameterList &section, double lengthScale,
+NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const NewtonParameters &parameters, double lengthScale,
                            double linearTolerance, bool keepLinearSolver)
-    : model_(std::move(model)), section_(section), lengthScale_(lengthScale), linearTolerance_(linearTolerance),
+    : model_(std::move(model)), parameters_(parameters), lengthScale_(lengthScale), linearTolerance_(linearTolerance),
       keepLinearSolver_(keepLinearSolver) {}
 
 NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
@@ -125,7 +102,7 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, 
   result.residualNorms.push_back(normF0);
 
   auto normF = rcp(new NormFAboveRoundOff(residualTolerance, *model_));
-  auto update = rcp(new NormWRMS(updateTolerance < 0.0 ? section_.get<double>("update tolerance") : updateTolerance,
+  auto update = rcp(new NormWRMS(updateTolerance < 0.0 ? parameters_.updateTolerance : updateTolerance,
                                  1e-9 * lengthScale_));
   auto converged = rcp(new Combo(Combo::AND));
   converged->addStatusTest(normF);
@@ -133,21 +110,22 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, 
   auto tests = rcp(new Combo(Combo::OR));
   tests->addStatusTest(rcp(new FiniteValue));
   tests->addStatusTest(converged);
-  tests->addStatusTest(rcp(new MaxIters(section_.get<int>("maximum iterations"))));
+  tests->addStatusTest(rcp(new MaxIters(parameters_.maximumIterations)));
 
   auto params = Teuchos::parameterList();
   params->set("Nonlinear Solver", "Line Search Based");
-  const std::string ls = section_.get<std::string>("line search");
-  params->sublist("Line Search").set("Method", ls == "full step" ? "Full Step" : ls == "backtrack" ? "Backtrack" : "Polynomial");
+  const LineSearch ls = parameters_.lineSearch;
+  params->sublist("Line Search").set("Method", ls == LineSearch::fullStep    ? "Full Step"
+                                               : ls == LineSearch::backtrack ? "Backtrack"
+                                                                             : "Polynomial");
   params->sublist("Printing").set("Output Information", NOX::Utils::Error);
   params->sublist("Solver Options").set<RCP<NOX::Observer>>("User Defined Pre/Post Operator",
                                                            rcp(new IterationObserver(onIteration, result, *model_)));
   // NOX passes its own relative tolerance to every linear solve: it must be the deck's.
   params->sublist("Direction").sublist("Newton").sublist("Linear Solver").set("Tolerance", linearTolerance_);
-  const std::string forcing = section_.get<std::string>("forcing term");
-  if (forcing != "constant") {
+  if (parameters_.forcing != ForcingTerm::constant) {
     auto &newtonParams = params->sublist("Direction").sublist("Newton");
-    newtonParams.set("Forcing Term Method", forcing);
+    newtonParams.set("Forcing Term Method", parameters_.forcing == ForcingTerm::type1 ? "Type 1" : "Type 2");
     newtonParams.set("Forcing Term Minimum Tolerance", linearTolerance_);
     newtonParams.set("Forcing Term Initial Tolerance", 1e-2);
     newtonParams.set("Forcing Term Maximum Tolerance", 1e-2);

@@ -7,18 +7,15 @@
 #include <string>
 #include <vector>
 
-#include <Teuchos_ParameterList.hpp>
-
 #include "assembly/ModelEvaluator.hpp"
 #include "solvers/SolveStatistics.hpp"
+#include "solvers/parameters/NewtonParameters.hpp"
 
 namespace NOX::Thyra {
 class Group;
 }
 
 namespace glossa::solvers {
-
-Teuchos::ParameterList nonlinearSolverParameters();
 
 class NewtonSolver {
 public:
@@ -28,12 +25,12 @@ public:
   // `linearTolerance`: relative residual reduction asked of each Krylov solve. `keepLinearSolver`:
   // one NOX group (and so one Stratimikos solver with its preconditioner) serves every solve, so
   // that a reused MueLu hierarchy lives across Uzawa iterations and load steps.
-  NewtonSolver(Teuchos::RCP<assembly::ModelEvaluator> model, const Teuchos::ParameterList &section,
+  NewtonSolver(Teuchos::RCP<assembly::ModelEvaluator> model, const NewtonParameters &parameters,
                double lengthScale, double linearTolerance, bool keepLinearSolver = false);
 
   // Solves from the initial guess u (owned vector), overwriting it with the solution when
   // converged. `residualTolerance` is absolute (the caller scales it by the load).
-  // `updateTolerance` < 0: the section's relative update tolerance.
+  // `updateTolerance` < 0: the deck's relative update tolerance.
   NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
                      double updateTolerance = -1.0) const;
 
@@ -43,11 +40,11 @@ public:
   // the Krylov iterations; throws std::runtime_error if u is inadmissible or a solve fails.
   int solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x) const;
 
-  double relativeResidualTolerance() const { return section_.get<double>("residual tolerance"); }
+  double relativeResidualTolerance() const { return parameters_.residualTolerance; }
 
 private:
   Teuchos::RCP<assembly::ModelEvaluator> model_;
-  Teuchos::ParameterList section_;
+  NewtonParameters parameters_;
   double lengthScale_;
   double linearTolerance_;
   bool keepLinearSolver_;

@@ -36,7 +36,6 @@
 #include "solvers/PathStiffness.hpp"
 #include "solvers/StepRecorder.hpp"
 #include "solvers/StopSignals.hpp"
-#include "solvers/TimeStepping.hpp"
 #include "solvers/MixedBlockSolver.hpp"
 #include "solvers/UzawaLoop.hpp"
 
@@ -54,27 +53,6 @@ std::string readableDuration(double seconds) {
   else if (s < 3600) std::snprintf(text, sizeof text, "%ld min %02ld s", s / 60, s % 60);
   else std::snprintf(text, sizeof text, "%ld h %02ld min", s / 3600, (s % 3600) / 60);
   return text;
-}
-
-Teuchos::ParameterList outputParameters() {
-  Teuchos::ParameterList p;
-  io::declareString(p, "directory", "results", "where results go (glossa run --output overrides)");
-  io::declareInt(p, "every", 1, "write fields every this many converged steps (the last always)",
-                 io::Range::atLeast(1));
-  io::declareBool(p, "fields", true, "write HDF5/XDMF fields (traces and summary are always written)");
-  io::declareString(p, "resultant face sets", "",
-                    "face sets whose resultant force goes to resultants.csv every step: the sum over the set's "
-                    "nodes of internal less body forces, i.e. a support's reaction or a load's resultant "
-                    "(comma separated)");
-  io::declareInt(p, "checkpoint every", 10,
-                 "write the state to <directory>/checkpoint every this many converged steps (and when a signal "
-                 "stops the run), for glossa run --restart; 0: never",
-                 io::Range::atLeast(0));
-  io::declareString(p, "volume face sets", "",
-                    "face sets whose enclosed volume goes to volumes.csv every step: 1/3 of the integral of "
-                    "x . n over the deformed faces (n the body's outward normal), the body's volume for its "
-                    "whole boundary, minus a cavity's for the cavity's wall (comma separated)");
-  return p;
 }
 
 // Seconds a Trilinos timer has accumulated (0 if it does not exist yet).
@@ -169,15 +147,16 @@ namespace {
 // Incompressibility/method = mixed carries the element pressures in the Newton iterate: it needs
 // the mixed element, a full Newton step (the pressure increment is not line-searched), an
 // iterative block solve, and no controller (its sensitivities are condensed solves).
-void requireMixedCompatible(const Teuchos::ParameterList &D, const model::Scene &scene) {
+void requireMixedCompatible(const NewtonParameters &newton, const LinearSolverChoice &linear, bool controlled,
+                            const model::Scene &scene) {
   const std::string why = "Incompressibility/method = mixed needs ";
   if (scene.formulation != model::ElementFormulation::Q1P0) throw io::DeckError(why + "Material/element = Q1P0");
-  if (D.sublist("Nonlinear solver").get<std::string>("line search") != "full step")
+  if (newton.lineSearch != LineSearch::fullStep)
     throw io::DeckError(why + "Nonlinear solver/line search = full step (its pressure increment is not line-searched)");
-  if (D.sublist("Linear solver").get<std::string>("type") == "direct")
+  if (linear.type == LinearSolverType::direct)
     throw io::DeckError(why + "Linear solver/type = iterative or auto (the block system is solved by GMRES; "
                               "auto may precondition its displacement block by a direct solve)");
-  if (D.sublist("Control").get<std::string>("type") != "none")
+  if (controlled)
     throw io::DeckError(why + "Control/type = none (the controllers' sensitivities use the condensed tangent)");
   if (scene.tissues.size() > 1)
     throw io::DeckError(why + "one tissue (its pressure state holds one volumetric law); use the augmented Lagrangian "
@@ -188,16 +167,15 @@ void requireMixedCompatible(const Teuchos::ParameterList &D, const model::Scene 
 // nothing else may depend on the time in a way the path cannot follow back.
 // `parameter`: the Time parameter that asks for it ("path following", or "at a limit point" =
 // follow, whose run may be restarted from a checkpoint written before the path began).
-void requireArcLengthCompatible(const io::Deck &deck, const model::Scene &scene, const RunOptions &options,
+void requireArcLengthCompatible(const io::Deck &deck, const IncompressibilityParameters &incompressibility,
+                                bool controlled, const model::Scene &scene, const RunOptions &options,
                                 const std::string &parameter) {
-  const Teuchos::ParameterList &D = deck.root();
   const std::string why = deck.where({"Time", parameter}) + ": arc-length continuation needs ";
-  if (D.sublist("Incompressibility").get<std::string>("method") != "penalty")
+  if (incompressibility.method != IncompressibilityMethod::penalty)
     throw io::DeckError(why + "Incompressibility/method = penalty (the augmented Lagrangian's multipliers and the "
                               "mixed method's pressures would change within a continuation step; a penalty with nu "
                               "= 0.49999 keeps the thick sphere's volume to 4e-5)");
-  if (D.sublist("Control").get<std::string>("type") != "none")
-    throw io::DeckError(why + "Control/type = none (a controller searches inputs at a given time)");
+  if (controlled) throw io::DeckError(why + "Control/type = none (a controller searches inputs at a given time)");
   if (!scene.muscles.groups.empty())
     throw io::DeckError(why + "no muscle groups (their activation is a history in time, which the path may run "
                               "backwards)");
@@ -213,19 +191,19 @@ void requireArcLengthCompatible(const io::Deck &deck, const model::Scene &scene,
                         "state); run it again");
 }
 
-ArcLengthSettings arcLengthSettings(const Teuchos::ParameterList &D, const assembly::Assembler &assembler) {
-  const Teuchos::ParameterList &time = D.sublist("Time");
+ArcLengthSettings arcLengthSettings(const TimeParameters &time, const NewtonParameters &newton,
+                                    const LinearSolverChoice &linear, const assembly::Assembler &assembler) {
   ArcLengthSettings s;
-  s.endTime = time.get<double>("end time");
-  s.stepSize = std::min(time.get<double>("step size"), s.endTime);
-  s.minimumStepSize = time.get<double>("minimum step size");
-  s.maximumSteps = time.get<int>("arc length steps");
-  s.stopAtDisplacement = time.get<double>("stop at displacement");
-  s.maximumNewtonIterations = D.sublist("Nonlinear solver").get<int>("maximum iterations");
+  s.endTime = time.steps.endTime;
+  s.stepSize = std::min(time.steps.nominal, s.endTime);
+  s.minimumStepSize = time.steps.minimum;
+  s.maximumSteps = time.arcLengthSteps;
+  s.stopAtDisplacement = time.stopAtDisplacement;
+  s.maximumNewtonIterations = newton.maximumIterations;
   // Relative to the load at the end time: the path's loads are fractions of it.
   const double reference = assembler.externalForceNorm(s.endTime);
-  s.residualTolerance = D.sublist("Nonlinear solver").get<double>("residual tolerance") * (reference > 0.0 ? reference : 1.0);
-  s.linearTolerance = D.sublist("Linear solver").get<double>("tolerance");
+  s.residualTolerance = newton.residualTolerance * (reference > 0.0 ? reference : 1.0);
+  s.linearTolerance = linear.tolerance;
   return s;
 }
 } // namespace
@@ -344,16 +322,21 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
       solveAtStart_(timerSeconds("NOX Total Linear Solve")), deckFile_(deck.file()), comm_(comm), options_(options),
       root_(comm->getRank() == 0), talk_(root_ && !options.quiet), detail_(talk_ && options.verbose) {
   const auto &D = deck.root();
-  steps_ = std::make_unique<StepSizeController>(stepSizeRule(D.sublist("Time")));
+  time_ = parseTimeParameters(D.sublist("Time"));
+  incompressibility_ = parseIncompressibilityParameters(D.sublist("Incompressibility"));
+  newtonParameters_ = parseNewtonParameters(D.sublist("Nonlinear solver"));
+  linear_ = parseLinearSolverChoice(D.sublist("Linear solver"));
+  output_ = parseOutputParameters(D.sublist("Output"));
+  controlled_ = controlRequested(D.sublist("Control"));
+  steps_ = std::make_unique<StepSizeController>(time_.steps);
   scene_ = std::make_unique<model::Scene>(input::buildScene(deck, steps_->endTime()));
   model::Scene &scene = *scene_;
-  const auto &incompressibility = D.sublist("Incompressibility");
   // Each tissue's law stays the physical one for the Uzawa loop; the tangent gets its kappa_t.
   std::vector<materials::VolumetricEnergy> physicalVolumetric;
   for (auto &tissue : scene.tissues) {
     physicalVolumetric.push_back(tissue.volumetric);
     tissue.volumetric = tissue.volumetric.withKappa(
-        UzawaLoop::tangentKappa(incompressibility, tissue.volumetric.kappa(), tissue.matrix->shearModulus()));
+        UzawaLoop::tangentKappa(incompressibility_, tissue.volumetric.kappa(), tissue.matrix->shearModulus()));
   }
 
   // Control groups: the world splits into G groups of equal size, each with its own copy of
@@ -369,15 +352,12 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   buildSolvers(deck, physicalVolumetric);
 
   // Checked before the output directory is cleared: a bad deck leaves an earlier run intact.
-  std::vector<std::vector<std::string>> outputSets;
-  for (const char *key : {"resultant face sets", "volume face sets"}) {
-    outputSets.push_back(io::splitNameList(D.sublist("Output").get<std::string>(key)));
-    for (const auto &name : outputSets.back())
+  for (const auto &[key, sets] : {std::make_pair("resultant face sets", &output_.resultantFaceSets),
+                                  std::make_pair("volume face sets", &output_.volumeFaceSets)})
+    for (const auto &name : *sets)
       if (!scene.mesh.faceSets.count(name))
         throw io::DeckError(deck.where({"Output", key}) + ": no face set '" + name + "'");
-  }
-  dir_ = options.outputDirectory.empty() ? std::filesystem::path(D.sublist("Output").get<std::string>("directory"))
-                                         : options.outputDirectory;
+  dir_ = options.outputDirectory.empty() ? std::filesystem::path(output_.directory) : options.outputDirectory;
   deckListing_ = parameterListing(D);
   std::unique_ptr<Restart> restart;
   if (!options.restartDirectory.empty()) {
@@ -388,18 +368,18 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   }
   if (root_ && !restart) prepareOutputDirectory(dir_);
   comm->barrier();
-  recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, D.sublist("Output").get<bool>("fields"), root_,
-                                             outputSets[0], outputSets[1], restart ? &restart->outputs : nullptr);
+  recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, output_.fields, root_, output_.resultantFaceSets,
+                                             output_.volumeFaceSets, restart ? &restart->outputs : nullptr);
   checkpoints_ = std::make_unique<io::CheckpointStore>(dir_);
-  checkpointEvery_ = D.sublist("Output").get<int>("checkpoint every"); // none on an arc-length path
-  every_ = D.sublist("Output").get<int>("every");
+  checkpointEvery_ = output_.checkpointEvery; // none on an arc-length path
+  every_ = output_.every;
 
   describeRun(deck, physicalVolumetric);
 
   committed_ = std::make_unique<StepState>(assembler_->ownedMap(), assembler_->numLocalElements());
   stepStart_ = std::make_unique<StepState>(*committed_);
   previous_ = std::make_unique<StepState>(*committed_);
-  extrapolate_ = D.sublist("Time").get<std::string>("predictor") == "linear extrapolation";
+  extrapolate_ = time_.predictor == Predictor::linearExtrapolation;
   const assembly::MuscleFields initialMuscle = assembler_->updateMuscleHistory(committed_->u);
   std::vector<double> initialInputs;
   for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g)
@@ -432,18 +412,15 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
   const RunOptions &options = options_;
   model::Scene &scene = *scene_;
   const double mu = scene.tissues[0].matrix->shearModulus();
-  const auto &incompressibility = D.sublist("Incompressibility");
   const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = groups_->groupComm();
   assembler_ = Teuchos::rcp(new assembly::Assembler(scene, solverComm));
   LinearSolverContext context{assembler_->coordinates(), assembler_->rigidBodyModes(), solverComm->getSize(),
                               assembler_->layout().numGlobalDofs(), scene.symmetricTangent};
   const auto &linearSection = D.sublist("Linear solver");
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
-  if (incompressibility.get<std::string>("method") == "mixed") {
-    requireMixedCompatible(D, scene);
-    const AugmentedLagrangianRule law(physicalVolumetric[0], mu); // only its theta_phys(p) is used
-    mixedPressure = Teuchos::rcp(new assembly::MixedPressureState(
-        physicalVolumetric[0], [law](double p) { return law.dilatationAtPressure(p); }, mu));
+  if (incompressibility_.method == IncompressibilityMethod::mixed) {
+    requireMixedCompatible(newtonParameters_, linear_, controlled_, scene);
+    mixedPressure = Teuchos::rcp(new assembly::MixedPressureState(physicalVolumetric[0], mu));
   }
   model_ = Teuchos::rcp(new assembly::ModelEvaluator(
       assembler_, mixedPressure.is_null() ? buildLinearSolver(linearSection, context)
@@ -451,18 +428,16 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
   model_->setMixedPressure(mixedPressure);
   for (const auto &x : scene.mesh.nodes) lengthScale_ = std::max(lengthScale_, x.norm());
   planes_ = model::findSymmetryPlanes(scene.mesh, scene.dirichlet);
-  const std::string atLimit = D.sublist("Time").get<std::string>("at a limit point");
-  onPath_ = D.sublist("Time").get<std::string>("path following") == "arc length";
-  if (onPath_ || atLimit == "follow") {
-    requireArcLengthCompatible(deck, scene, options, onPath_ ? "path following" : "at a limit point");
-    arcLength_ = std::make_unique<ArcLengthSettings>(arcLengthSettings(D, *assembler_));
+  onPath_ = time_.pathFollowing == PathFollowing::arcLength;
+  if (onPath_ || time_.atLimitPoint == AtLimitPoint::follow) {
+    requireArcLengthCompatible(deck, incompressibility_, controlled_, scene, options,
+                               onPath_ ? "path following" : "at a limit point");
+    arcLength_ = std::make_unique<ArcLengthSettings>(arcLengthSettings(time_, newtonParameters_, linear_, *assembler_));
   }
-  if (mixedPressure.is_null() && !onPath_ && atLimit != "ignore")
-    limit_ = std::make_unique<LimitPointMonitor>(steps_->nominalStep(), D.sublist("Time").get<double>("limit point tolerance"));
-  newton_ = std::make_unique<NewtonSolver>(model_, D.sublist("Nonlinear solver"), lengthScale_,
-                                           linearSection.get<double>("tolerance"),
-                                           linearSection.get<std::string>("MueLu reuse scope") == "run");
-  uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility, physicalVolumetric);
+  if (mixedPressure.is_null() && !onPath_ && time_.atLimitPoint != AtLimitPoint::ignore)
+    limit_ = std::make_unique<LimitPointMonitor>(steps_->nominalStep(), time_.limitPointTolerance);
+  newton_ = std::make_unique<NewtonSolver>(model_, newtonParameters_, lengthScale_, linear_.tolerance, linear_.keptForTheRun);
+  uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility_, physicalVolumetric);
   // A raised kappa_AL reaches the tangent through the tissue's volumetric law (the Assembler's).
   uzawa_->onKappaRaised([this](std::size_t tissue, double kappaT) {
     model::Tissue &t = scene_->tissues[tissue];
@@ -472,18 +447,15 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
                   "the run\n", t.name.c_str(), uzawa_->penaltyRatios()[tissue]);
   });
   // What Linear solver/type = auto chose (the displacement block's preconditioner with mixed).
-  doc_["linear_solver"] = usesDirectSolve(linearSection, context)
-                              ? "direct (" + linearSection.get<std::string>("direct solver") + ")"
-                              : "iterative (" + linearSection.get<std::string>("preconditioner") + ")";
+  doc_["linear_solver"] = usesDirectSolve(linearSection, context) ? "direct (" + linear_.directSolver + ")"
+                                                                  : "iterative (" + linear_.preconditioner + ")";
 }
 
 // What summary.json says of the run before its first step, and the console's first lines.
 void Simulation::describeRun(const io::Deck &deck, const std::vector<materials::VolumetricEnergy> &physicalVolumetric) {
-  const auto &D = deck.root();
   const model::Scene &scene = *scene_;
   // The summary's kappa/mu figures are the Material section's tissue's (tissues[0]).
   const double mu = scene.tissues[0].matrix->shearModulus();
-  const auto &incompressibility = D.sublist("Incompressibility");
   const Teuchos::RCP<const Teuchos::Comm<int>> &comm = comm_;
   const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = groups_->groupComm();
   const int controlGroups = options_.controlGroups;
@@ -504,7 +476,7 @@ void Simulation::describeRun(const io::Deck &deck, const std::vector<materials::
   }
   doc_["dofs"] = assembler_->layout().numGlobalDofs();
   doc_["elements"] = scene.mesh.numElements();
-  doc_["incompressibility"] = incompressibility.get<std::string>("method");
+  doc_["incompressibility"] = methodName(incompressibility_.method);
   doc_["kappa_tangent"] = scene.tissues[0].volumetric.kappa();
   doc_["kappa_over_mu"] = scene.tissues[0].volumetric.kappa() / mu;
   doc_["kappa_physical_over_mu"] = physicalVolumetric[0].kappa() / mu; // inf is written as null
@@ -518,13 +490,13 @@ void Simulation::describeRun(const io::Deck &deck, const std::vector<materials::
                                {"kappa_physical", physicalVolumetric[t].kappa()}, {"kappa_tangent", tissue.volumetric.kappa()},
                                {"density", tissue.density}});
   }
-  if (uzawa_->augmentedLagrangian()) doc_["kappa_AL_over_mu"] = UzawaLoop::augmentationKappa(incompressibility, mu) / mu;
+  if (uzawa_->augmentedLagrangian()) doc_["kappa_AL_over_mu"] = UzawaLoop::augmentationKappa(incompressibility_, mu) / mu;
   doc_["steps"] = nlohmann::json::array();
 
   if (talk_)
     std::printf("glossa: %s  %zu elements  %lld dofs  %d rank(s)  %s (kappa/mu = %.3g)\n", deck.file().c_str(),
                 scene.mesh.numElements(), static_cast<long long>(assembler_->layout().numGlobalDofs()),
-                comm->getSize(), incompressibility.get<std::string>("method").c_str(), scene.tissues[0].volumetric.kappa() / mu);
+                comm->getSize(), methodName(incompressibility_.method), scene.tissues[0].volumetric.kappa() / mu);
   if (talk_)
     for (const std::string &note : scene.meshNotes) std::printf("glossa: note: %s\n", note.c_str());
 }

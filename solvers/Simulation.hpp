@@ -20,6 +20,11 @@
 #include <Teuchos_RCP.hpp>
 
 #include "io/deck/Deck.hpp"
+#include "solvers/parameters/IncompressibilityParameters.hpp"
+#include "solvers/parameters/LinearSolverChoice.hpp"
+#include "solvers/parameters/NewtonParameters.hpp"
+#include "solvers/parameters/OutputParameters.hpp"
+#include "solvers/parameters/TimeParameters.hpp"
 
 namespace glossa::assembly {
 class Assembler;
@@ -150,6 +155,14 @@ private:
   std::chrono::steady_clock::time_point stepsStart_; // after set-up: the time per simulated second
   double stepsStartTime_ = 0.0; // the simulated time then (a restart's)
   std::string controlLine_; // the last control step's summary, for its step's line
+
+  // The deck's solver-side sections, parsed once (solvers/parameters).
+  TimeParameters time_;
+  IncompressibilityParameters incompressibility_;
+  NewtonParameters newtonParameters_;
+  LinearSolverChoice linear_;
+  OutputParameters output_;
+  bool controlled_ = false; // Control/type is not none
 
   std::unique_ptr<StepSizeController> steps_;
   // Arc-length continuation: its settings when the deck may use it (Time/path following = arc

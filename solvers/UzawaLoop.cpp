@@ -6,56 +6,17 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include "io/deck/DeckError.hpp"
-#include "io/deck/ParameterSpec.hpp"
 
 namespace glossa::solvers {
 
-Teuchos::ParameterList incompressibilityParameters() {
-  Teuchos::ParameterList p;
-  io::declareString(p, "method", "augmented Lagrangian",
-                    "augmented Lagrangian: Uzawa updates of an element multiplier until every "
-                    "element pressure obeys the material's volumetric law (Poisson's ratio or bulk "
-                    "modulus; nu = 0.5: theta = 1), with the moderate kappa_t = kappa kappa_AL / "
-                    "(kappa + kappa_AL) in the tangent; penalty: one solve with the material's "
-                    "bulk modulus in the tangent (needs nu < 0.5); mixed: element pressures as "
-                    "unknowns beside the displacements, no condensation and no Uzawa loop (any nu "
-                    "up to 0.5), each Newton step a block solve by GMRES with a Teko block-triangular "
-                    "preconditioner (MueLu on the displacement block, the scaled pressure mass "
-                    "matrix for the Schur complement; needs Q1-P0 and the full-step line search)",
-                    {"augmented Lagrangian", "penalty", "mixed"});
-  io::declareDouble(p, "penalty ratio", 30.0, "",
-                    "kappa_AL / mu in augmented-Lagrangian mode, mu the law's small-strain shear "
-                    "modulus (30 keeps the Krylov total within about 2.4x of nu = 0.3 at every nu "
-                    "and still needs about 2 Uzawa solves per step; 100 was the default before; see "
-                    "doc/incompressibility.md)", io::Range::closed(1.0, 1e9));
-  io::declareDouble(p, "dilatation tolerance", 1e-3, "",
-                    "augmented Lagrangian stops when max_e |theta_e - theta_phys(p_e)| is below "
-                    "this (theta_phys: the dilatation the material law gives the element pressure; "
-                    "1 for nu = 0.5)",
-                    io::Range::open(0.0, 1.0));
-  io::declareInt(p, "maximum Uzawa iterations", 50, "Newton solves per step before the step fails",
-                 io::Range::closed(1, 10000));
-  io::declareString(p, "Uzawa acceleration", "inexact",
-                    "none: every Newton solve to the full tolerance before a multiplier update (the "
-                    "plain nested loop); inexact: the first solve of each step stops once its residual "
-                    "is below 'inner tolerance' relative to the load, the multipliers are updated "
-                    "there and Newton goes on from that iterate to the full tolerance "
-                    "(doc/incompressibility.md)",
-                    {"none", "inexact"});
-  io::declareDouble(p, "inner tolerance", 1e-2, "",
-                    "relative residual (and relative update) at which the first, inexact Uzawa solve "
-                    "of a step hands over to the multiplier update", io::Range::open(0.0, 1.0));
-  return p;
+double UzawaLoop::augmentationKappa(const IncompressibilityParameters &p, double mu) {
+  return p.penaltyRatio * mu;
 }
 
-double UzawaLoop::augmentationKappa(const Teuchos::ParameterList &s, double mu) {
-  return s.get<double>("penalty ratio") * mu;
-}
-
-double UzawaLoop::tangentKappa(const Teuchos::ParameterList &s, double materialKappa, double mu) {
+double UzawaLoop::tangentKappa(const IncompressibilityParameters &s, double materialKappa, double mu) {
   // Mixed: the kernel carries no volumetric energy; the pressure unknowns carry the law.
-  if (s.get<std::string>("method") == "mixed") return 0.0;
-  if (s.get<std::string>("method") == "augmented Lagrangian")
+  if (s.method == IncompressibilityMethod::mixed) return 0.0;
+  if (s.method == IncompressibilityMethod::augmentedLagrangian)
     return AugmentedLagrangianRule(materials::VolumetricEnergy(materials::VolumetricEnergy::Form::Quadratic, materialKappa),
                                    augmentationKappa(s, mu))
         .tangentKappa();
@@ -65,18 +26,17 @@ double UzawaLoop::tangentKappa(const Teuchos::ParameterList &s, double materialK
   return materialKappa;
 }
 
-UzawaLoop::UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton, const Teuchos::ParameterList &s,
-                     const std::vector<materials::VolumetricEnergy> &physical)
-    : assembler_(assembler), newton_(newton), augmented_(s.get<std::string>("method") == "augmented Lagrangian"),
-      mixed_(s.get<std::string>("method") == "mixed"), tolerance_(s.get<double>("dilatation tolerance")),
-      maxIterations_(s.get<int>("maximum Uzawa iterations")),
-      inexact_(augmented_ && s.get<std::string>("Uzawa acceleration") == "inexact"),
-      innerTolerance_(s.get<double>("inner tolerance")) {
+UzawaLoop::UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton,
+                     const IncompressibilityParameters &s, const std::vector<materials::VolumetricEnergy> &physical)
+    : assembler_(assembler), newton_(newton), augmented_(s.method == IncompressibilityMethod::augmentedLagrangian),
+      mixed_(s.method == IncompressibilityMethod::mixed), tolerance_(s.dilatationTolerance),
+      maxIterations_(s.maximumUzawaIterations), inexact_(augmented_ && s.inexactUzawa),
+      innerTolerance_(s.innerTolerance) {
   const model::Scene &scene = assembler.scene();
   physical_ = physical;
   for (std::size_t t = 0; t < scene.tissues.size(); ++t) {
     mu_.push_back(scene.tissues[t].matrix->shearModulus());
-    ratio_.push_back(s.get<double>("penalty ratio"));
+    ratio_.push_back(s.penaltyRatio);
     rules_.emplace_back(physical.at(t), ratio_.back() * mu_.back());
   }
   for (const auto e : assembler.layout().localElements)

@@ -9,32 +9,29 @@
 #include <functional>
 #include <vector>
 
-#include <Teuchos_ParameterList.hpp>
-
 #include "assembly/Assembler.hpp"
 #include "materials/VolumetricEnergy.hpp"
 #include "solvers/AugmentedLagrangianRule.hpp"
 #include "solvers/NewtonSolver.hpp"
 #include "solvers/SolveStatistics.hpp"
+#include "solvers/parameters/IncompressibilityParameters.hpp"
 
 namespace glossa::solvers {
-
-Teuchos::ParameterList incompressibilityParameters();
 
 class UzawaLoop {
 public:
   // `physical`: per tissue of the assembler's scene, its volumetric law (kappa = inf for nu = 0.5);
   // each tissue's kappa_AL is the penalty ratio times its matrix's shear modulus.
-  UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton, const Teuchos::ParameterList &section,
+  UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton, const IncompressibilityParameters &parameters,
             const std::vector<materials::VolumetricEnergy> &physical);
 
   bool augmentedLagrangian() const { return augmented_; }
   bool mixedPressure() const { return mixed_; }
   // kappa_AL = penalty ratio x mu (augmented Lagrangian only).
-  static double augmentationKappa(const Teuchos::ParameterList &section, double mu);
+  static double augmentationKappa(const IncompressibilityParameters &parameters, double mu);
   // kappa in the tangent: kappa_t = kappa kappa_AL / (kappa + kappa_AL) in augmented-Lagrangian
   // mode, the material's otherwise (io::DeckError if that is infinite).
-  static double tangentKappa(const Teuchos::ParameterList &section, double materialKappa, double mu);
+  static double tangentKappa(const IncompressibilityParameters &parameters, double materialKappa, double mu);
 
   // Solves at fixed time; u and lambda are updated in place (the caller keeps copies to roll
   // back). `residualTolerance` is absolute.

@@ -444,7 +444,7 @@ bool Assembler::addFollowerLoads(const Teuchos::ArrayRCP<const double> &uData, d
         Xf.row(k) = mesh.nodes[nodes[k]].transpose();
         for (int c = 0; c < 3; ++c) uf(k, c) = uData[overlapMap_->getLocalElement(layout_.dof(nodes[k], c))];
       }
-      loads::FaceTangent Kf;
+      loads::FaceTangent Kf = loads::FaceTangent::Zero(); // read only with K
       const loads::FaceForces ff = loads::followerPressureForces(Xf, uf, load.pressure.atGaussPoints(Xf, time), K ? &Kf : nullptr);
       scatterLoadBlock(nodes.data(), 4, ff.data(), Kf.data(), fData, K, constrainedToo);
     }

@@ -18,7 +18,7 @@ void MixedPressureState::linearise(const Assembler &assembler, const Vector &u, 
   const bool incompressible = !std::isfinite(physical.kappa());
   for (std::size_t i = 0; i < pressure.size(); ++i) {
     const double V = coupling.referenceVolume[i];
-    const double theta = dilatationAtPressure(pressure[i]);
+    const double theta = physical.dilatationAtPressure(pressure[i]);
     // d theta_phys / dp = 1 / U''(theta_phys): the element's volume compliance.
     sigma[i] = shearModulus / std::cbrt(V);
     c[i] = incompressible ? 0.0 : sigma[i] * sigma[i] * V / physical.d2U(theta);

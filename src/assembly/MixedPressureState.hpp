@@ -13,7 +13,6 @@
 // the pending pressure increment to trial evaluations, and the block solver, which reads the
 // blocks and writes the increment.
 
-#include <functional>
 #include <vector>
 
 #include "assembly/Assembler.hpp"
@@ -22,12 +21,9 @@
 namespace glossa::assembly {
 
 struct MixedPressureState {
-  MixedPressureState(materials::VolumetricEnergy physicalLaw, std::function<double(double)> dilatationOfPressure,
-                     double mu)
-      : physical(physicalLaw), dilatationAtPressure(std::move(dilatationOfPressure)), shearModulus(mu) {}
+  MixedPressureState(materials::VolumetricEnergy physicalLaw, double mu) : physical(physicalLaw), shearModulus(mu) {}
 
-  materials::VolumetricEnergy physical;                // the material's law (kappa may be inf)
-  std::function<double(double)> dilatationAtPressure;  // theta_phys(p): U'(theta) = p
+  materials::VolumetricEnergy physical; // the material's law (kappa may be inf), and theta_phys(p)
   double shearModulus;
 
   // The blocks at the last tangent (linearise), with the pressure unknown and its equation scaled

@@ -1,4 +1,4 @@
-#include "solvers/TimeStepping.hpp"
+#include "solvers/parameters/TimeParameters.hpp"
 
 #include "io/deck/ParameterSpec.hpp"
 
@@ -50,8 +50,17 @@ Teuchos::ParameterList timeParameters() {
   return p;
 }
 
-StepSizeRule stepSizeRule(const Teuchos::ParameterList &s) {
-  return {s.get<double>("end time"), s.get<double>("step size"), s.get<double>("minimum step size")};
+TimeParameters parseTimeParameters(const Teuchos::ParameterList &s) {
+  TimeParameters t;
+  t.steps = {s.get<double>("end time"), s.get<double>("step size"), s.get<double>("minimum step size")};
+  t.predictor = s.get<std::string>("predictor") == "linear extrapolation" ? Predictor::linearExtrapolation : Predictor::none;
+  const std::string atLimit = s.get<std::string>("at a limit point");
+  t.atLimitPoint = atLimit == "stop" ? AtLimitPoint::stop : atLimit == "ignore" ? AtLimitPoint::ignore : AtLimitPoint::follow;
+  t.limitPointTolerance = s.get<double>("limit point tolerance");
+  t.pathFollowing = s.get<std::string>("path following") == "arc length" ? PathFollowing::arcLength : PathFollowing::loadControl;
+  t.arcLengthSteps = s.get<int>("arc length steps");
+  t.stopAtDisplacement = s.get<double>("stop at displacement");
+  return t;
 }
 
 } // namespace glossa::solvers

@@ -1,0 +1,68 @@
+#include "solvers/parameters/IncompressibilityParameters.hpp"
+
+#include "io/deck/ParameterSpec.hpp"
+
+namespace glossa::solvers {
+
+Teuchos::ParameterList incompressibilityParameters() {
+  Teuchos::ParameterList p;
+  io::declareString(p, "method", "augmented Lagrangian",
+                    "augmented Lagrangian: Uzawa updates of an element multiplier until every "
+                    "element pressure obeys the material's volumetric law (Poisson's ratio or bulk "
+                    "modulus; nu = 0.5: theta = 1), with the moderate kappa_t = kappa kappa_AL / "
+                    "(kappa + kappa_AL) in the tangent; penalty: one solve with the material's "
+                    "bulk modulus in the tangent (needs nu < 0.5); mixed: element pressures as "
+                    "unknowns beside the displacements, no condensation and no Uzawa loop (any nu "
+                    "up to 0.5), each Newton step a block solve by GMRES with a Teko block-triangular "
+                    "preconditioner (MueLu on the displacement block, the scaled pressure mass "
+                    "matrix for the Schur complement; needs Q1-P0 and the full-step line search)",
+                    {"augmented Lagrangian", "penalty", "mixed"});
+  io::declareDouble(p, "penalty ratio", 30.0, "",
+                    "kappa_AL / mu in augmented-Lagrangian mode, mu the law's small-strain shear "
+                    "modulus (30 keeps the Krylov total within about 2.4x of nu = 0.3 at every nu "
+                    "and still needs about 2 Uzawa solves per step; 100 was the default before; see "
+                    "doc/incompressibility.md)", io::Range::closed(1.0, 1e9));
+  io::declareDouble(p, "dilatation tolerance", 1e-3, "",
+                    "augmented Lagrangian stops when max_e |theta_e - theta_phys(p_e)| is below "
+                    "this (theta_phys: the dilatation the material law gives the element pressure; "
+                    "1 for nu = 0.5)",
+                    io::Range::open(0.0, 1.0));
+  io::declareInt(p, "maximum Uzawa iterations", 50, "Newton solves per step before the step fails",
+                 io::Range::closed(1, 10000));
+  io::declareString(p, "Uzawa acceleration", "inexact",
+                    "none: every Newton solve to the full tolerance before a multiplier update (the "
+                    "plain nested loop); inexact: the first solve of each step stops once its residual "
+                    "is below 'inner tolerance' relative to the load, the multipliers are updated "
+                    "there and Newton goes on from that iterate to the full tolerance "
+                    "(doc/incompressibility.md)",
+                    {"none", "inexact"});
+  io::declareDouble(p, "inner tolerance", 1e-2, "",
+                    "relative residual (and relative update) at which the first, inexact Uzawa solve "
+                    "of a step hands over to the multiplier update", io::Range::open(0.0, 1.0));
+  return p;
+}
+
+IncompressibilityParameters parseIncompressibilityParameters(const Teuchos::ParameterList &s) {
+  IncompressibilityParameters p;
+  const std::string method = s.get<std::string>("method");
+  p.method = method == "mixed"     ? IncompressibilityMethod::mixed
+             : method == "penalty" ? IncompressibilityMethod::penalty
+                                   : IncompressibilityMethod::augmentedLagrangian;
+  p.penaltyRatio = s.get<double>("penalty ratio");
+  p.dilatationTolerance = s.get<double>("dilatation tolerance");
+  p.maximumUzawaIterations = s.get<int>("maximum Uzawa iterations");
+  p.inexactUzawa = s.get<std::string>("Uzawa acceleration") == "inexact";
+  p.innerTolerance = s.get<double>("inner tolerance");
+  return p;
+}
+
+const char *methodName(IncompressibilityMethod method) {
+  switch (method) {
+  case IncompressibilityMethod::augmentedLagrangian: return "augmented Lagrangian";
+  case IncompressibilityMethod::penalty: return "penalty";
+  case IncompressibilityMethod::mixed: return "mixed";
+  }
+  return "";
+}
+
+} // namespace glossa::solvers

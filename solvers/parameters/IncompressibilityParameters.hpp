@@ -1,0 +1,26 @@
+#pragma once
+// The deck's Incompressibility section, declared and parsed once: the method (augmented
+// Lagrangian with its Uzawa loop, penalty, mixed), kappa_AL and the loop's tolerances. Read by the
+// Uzawa loop, the simulation and the mixed pressure state alike.
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace glossa::solvers {
+
+enum class IncompressibilityMethod { augmentedLagrangian, penalty, mixed };
+
+struct IncompressibilityParameters {
+  IncompressibilityMethod method = IncompressibilityMethod::augmentedLagrangian;
+  double penaltyRatio = 30.0;        // kappa_AL / mu
+  double dilatationTolerance = 1e-3; // max_e |theta_e - theta_phys(p_e)|
+  int maximumUzawaIterations = 50;
+  bool inexactUzawa = true;          // Uzawa acceleration = inexact
+  double innerTolerance = 1e-2;
+};
+
+Teuchos::ParameterList incompressibilityParameters();
+IncompressibilityParameters parseIncompressibilityParameters(const Teuchos::ParameterList &section);
+// The deck's word for a method (summary.json, the log).
+const char *methodName(IncompressibilityMethod method);
+
+} // namespace glossa::solvers

@@ -1,0 +1,41 @@
+#include "solvers/parameters/NewtonParameters.hpp"
+
+#include "io/deck/ParameterSpec.hpp"
+
+namespace glossa::solvers {
+
+Teuchos::ParameterList nonlinearSolverParameters() {
+  Teuchos::ParameterList p;
+  io::declareInt(p, "maximum iterations", 25, "Newton iterations per solve before the step is cut back",
+                 io::Range::closed(1, 1000));
+  io::declareDouble(p, "residual tolerance", 1e-8, "",
+                    "converged when ||f|| <= this x max(||f_ext||, ||f|| at the start of the step); "
+                    "round-off puts a floor near 1e-10 of the load when kappa/mu is in the thousands",
+                    io::Range::open(0.0, 1.0));
+  io::declareDouble(p, "update tolerance", 1e-8, "",
+                    "and when the Newton update is below this relative to the displacement "
+                    "(weighted RMS norm; absolute floor 1e-9 of the element size)",
+                    io::Range::open(0.0, 1.0));
+  io::declareString(p, "forcing term", "Type 2",
+                    "linear tolerance per Newton iteration: constant (the Linear solver tolerance) "
+                    "or Eisenstat-Walker 'Type 2' (loose while far from the solution, down to the "
+                    "Linear solver tolerance)",
+                    {"constant", "Type 1", "Type 2"});
+  io::declareString(p, "line search", "full step", "NOX line search",
+                    {"full step", "backtrack", "polynomial"});
+  return p;
+}
+
+NewtonParameters parseNewtonParameters(const Teuchos::ParameterList &s) {
+  NewtonParameters p;
+  p.maximumIterations = s.get<int>("maximum iterations");
+  p.residualTolerance = s.get<double>("residual tolerance");
+  p.updateTolerance = s.get<double>("update tolerance");
+  const std::string forcing = s.get<std::string>("forcing term");
+  p.forcing = forcing == "constant" ? ForcingTerm::constant : forcing == "Type 1" ? ForcingTerm::type1 : ForcingTerm::type2;
+  const std::string ls = s.get<std::string>("line search");
+  p.lineSearch = ls == "backtrack" ? LineSearch::backtrack : ls == "polynomial" ? LineSearch::polynomial : LineSearch::fullStep;
+  return p;
+}
+
+} // namespace glossa::solvers
