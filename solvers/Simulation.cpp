@@ -28,7 +28,7 @@
 #include "solvers/CheckpointContents.hpp"
 #include "solvers/CommControlGroups.hpp"
 #include "solvers/ControlDriver.hpp"
-#include "solvers/ControlSection.hpp"
+#include "solvers/parameters/ControlSection.hpp"
 #include "solvers/ControlSensitivity.hpp"
 #include "solvers/LimitPointMonitor.hpp"
 #include "solvers/LinearSolverFactory.hpp"

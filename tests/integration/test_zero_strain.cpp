@@ -17,7 +17,7 @@
 #include "app/ZeroStrainCommand.hpp"
 #include "mesh/MeshFile.hpp"
 #include "input/SceneFactory.hpp"
-#include "solvers/ControlSection.hpp"
+#include "solvers/parameters/ControlSection.hpp"
 
 namespace glossa::test {
 namespace {

@@ -1,4 +1,4 @@
-#include "solvers/ControlSection.hpp"
+#include "solvers/parameters/ControlSection.hpp"
 
 #include "io/deck/NameList.hpp"
 
