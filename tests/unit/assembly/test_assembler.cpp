@@ -1,0 +1,252 @@
+// The distributed assembly and the solver pieces on a 2 x 2 x 2 block built without a deck (a
+// neo-Hookean block, clamped at x = 0, under its own weight), on 1 rank and under mpiexec on 2:
+// - the graph couples each node with exactly the nodes it shares an element with;
+// - Dirichlet dofs hold their prescribed values, carry no residual, and their rows and columns
+//   of the tangent hold only the diagonal;
+// - the tangent is the derivative of the residual (central finite difference);
+// - Newton (NOX, typed parameters) converges quadratically, the supports' reactions then balance
+//   the block's weight, and the Uzawa loop brings a nearly incompressible block to its
+//   dilatation tolerance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <set>
+#include <vector>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "assembly/Assembler.hpp"
+#include "assembly/ModelEvaluator.hpp"
+#include "materials/NeoHookean.hpp"
+#include "mesh/BoxGenerator.hpp"
+#include "solvers/LinearSolverFactory.hpp"
+#include "solvers/NewtonSolver.hpp"
+#include "solvers/UzawaLoop.hpp"
+
+using namespace glossa;
+
+namespace {
+constexpr double kSide = 1e-2, kMu = 1e4, kDensity = 1000.0, kGravity = 9.81;
+
+// The block: 2 x 2 x 2 cells of a 1 cm cube, mu = 10 kPa, nu as given, clamped on x = 0 (all
+// three components, the values `clamp`), its weight along -z.
+model::Scene block(double nu, const Eigen::Vector3d &clamp = Eigen::Vector3d::Zero()) {
+  model::Scene scene;
+  scene.mesh = mesh::generateBox(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(kSide), {2, 2, 2});
+  model::Tissue tissue;
+  tissue.name = "block";
+  tissue.matrix = std::make_shared<materials::NeoHookean>(kMu);
+  tissue.volumetric = materials::VolumetricEnergy(materials::VolumetricEnergy::Form::SimoTaylor,
+                                                  materials::bulkModulus(kMu, nu));
+  tissue.density = kDensity;
+  scene.tissues.push_back(tissue);
+  model::DirichletCondition clamped;
+  clamped.name = "clamp";
+  clamped.nodes = scene.mesh.nodeSets.at("xmin");
+  clamped.fixed = {true, true, true};
+  clamped.value = clamp;
+  scene.dirichlet.push_back(clamped);
+  model::BodyForceLoad weight;
+  weight.name = "weight";
+  for (std::size_t e = 0; e < scene.mesh.numElements(); ++e) weight.elements.push_back(static_cast<mesh::ElementId>(e));
+  weight.acceleration = Eigen::Vector3d(0.0, 0.0, -kGravity);
+  scene.bodyForces.push_back(weight);
+  return scene;
+}
+
+Teuchos::RCP<const assembly::Comm> world() { return Tpetra::getDefaultComm(); }
+
+// A smooth displacement field (a bend and a stretch, 2 % of the side) on the free dofs.
+void deform(const assembly::Assembler &assembler, assembly::Vector &u) {
+  const auto &nodes = assembler.scene().mesh.nodes;
+  std::vector<double> all(3 * nodes.size());
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    const Eigen::Vector3d X = nodes[n] / kSide;
+    all[3 * n] = 0.02 * kSide * X.x() * X.y();
+    all[3 * n + 1] = -0.01 * kSide * X.x() * X.x();
+    all[3 * n + 2] = 0.015 * kSide * X.x() * (1.0 + X.z());
+  }
+  assembler.scatterDisplacement(all, u);
+}
+
+double globalMaxAbs(const assembly::Vector &v) { return v.normInf(); }
+
+// The mesh node of every global node number (the layout renumbers nodes rank by rank).
+std::vector<mesh::NodeId> meshNodeOfNumber(const assembly::DofLayout &layout) {
+  std::vector<mesh::NodeId> node(layout.nodeNumber.size());
+  for (std::size_t n = 0; n < node.size(); ++n) node[static_cast<std::size_t>(layout.nodeNumber[n])] = static_cast<mesh::NodeId>(n);
+  return node;
+}
+} // namespace
+
+TEST(Assembler, GraphCouplesEachNodeWithTheNodesOfItsElements) {
+  const model::Scene scene = block(0.3);
+  const assembly::Assembler assembler(scene, world());
+  const auto K = assembler.createMatrix();
+  std::vector<std::set<mesh::NodeId>> neighbours(scene.mesh.nodes.size());
+  for (const auto &hex : scene.mesh.elements)
+    for (auto a : hex)
+      for (auto b : hex) neighbours[a].insert(b);
+  const auto map = assembler.ownedMap();
+  const auto nodeOf = meshNodeOfNumber(assembler.layout());
+  ASSERT_EQ(map->getGlobalNumElements(), 3u * 27u);
+  long long mine = 0, entries = 0;
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const auto gid = map->getGlobalElement(static_cast<assembly::LO>(i));
+    const auto node = nodeOf[static_cast<std::size_t>(gid / 3)]; // dof = 3 number + component
+    EXPECT_EQ(K->getNumEntriesInGlobalRow(gid), 3 * neighbours[node].size()) << "dof " << gid;
+    mine += static_cast<long long>(K->getNumEntriesInGlobalRow(gid));
+  }
+  Teuchos::reduceAll(*world(), Teuchos::REDUCE_SUM, mine, Teuchos::outArg(entries));
+  // 27 nodes: 8 corners with 8 neighbours, 12 edge midpoints with 12, 6 face centres with 18, the
+  // centre with 27.
+  std::size_t rows = 0;
+  for (const auto &n : neighbours) rows += 3 * 3 * n.size();
+  EXPECT_EQ(entries, static_cast<long long>(rows)); // every owned row once, over the ranks
+  EXPECT_EQ(rows, 9u * (8 * 8 + 12 * 12 + 6 * 18 + 27));
+}
+
+TEST(Assembler, DirichletDofsHoldTheirValuesWithNoResidualAndADiagonalRow) {
+  const Eigen::Vector3d g(1e-4, -2e-4, 3e-4);
+  const model::Scene scene = block(0.3, g);
+  const assembly::Assembler assembler(scene, world());
+  assembly::Vector u(assembler.ownedMap()), f(assembler.ownedMap());
+  deform(assembler, u);
+  assembler.applyDirichlet(u, 1.0);
+  const auto K = assembler.createMatrix();
+  const std::vector<double> lambda(assembler.numLocalElements(), 0.0);
+  ASSERT_TRUE(assembler.assemble(u, 1.0, lambda, nullptr, &f, K.get()).valid);
+  const std::set<mesh::NodeId> clamped(scene.dirichlet[0].nodes.begin(), scene.dirichlet[0].nodes.end());
+  const auto map = assembler.ownedMap();
+  const auto nodeOf = meshNodeOfNumber(assembler.layout());
+  const auto uData = u.getData(0), fData = f.getData(0);
+  int constrainedRows = 0;
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const auto gid = map->getGlobalElement(static_cast<assembly::LO>(i));
+    const auto node = nodeOf[static_cast<std::size_t>(gid / 3)];
+    const int c = static_cast<int>(gid % 3);
+    typename assembly::CrsMatrix::nonconst_global_inds_host_view_type cols("cols", K->getNumEntriesInGlobalRow(gid));
+    typename assembly::CrsMatrix::nonconst_values_host_view_type vals("vals", cols.extent(0));
+    std::size_t n = 0;
+    K->getGlobalRowCopy(gid, cols, vals, n);
+    if (clamped.count(node)) {
+      ++constrainedRows;
+      EXPECT_EQ(uData[i], g[c]);
+      EXPECT_EQ(fData[i], 0.0) << "dof " << gid;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (cols(k) == gid) EXPECT_GT(vals(k), 0.0);
+        else EXPECT_EQ(vals(k), 0.0) << "row " << gid << " column " << cols(k);
+      }
+    } else {
+      // A free row has no coupling to a constrained column either.
+      for (std::size_t k = 0; k < n; ++k) {
+        if (clamped.count(nodeOf[static_cast<std::size_t>(cols(k) / 3)])) {
+          EXPECT_EQ(vals(k), 0.0);
+        }
+      }
+    }
+  }
+  int total = 0;
+  Teuchos::reduceAll(*world(), Teuchos::REDUCE_SUM, constrainedRows, Teuchos::outArg(total));
+  EXPECT_EQ(total, 27); // the 9 nodes of x = 0, 3 components each
+}
+
+TEST(Assembler, TangentIsTheCentralDifferenceOfTheResidual) {
+  const model::Scene scene = block(0.45);
+  const assembly::Assembler assembler(scene, world());
+  const auto map = assembler.ownedMap();
+  assembly::Vector u(map), v(map), Kv(map), fPlus(map), fMinus(map), f(map);
+  deform(assembler, u);
+  assembler.applyDirichlet(u, 1.0);
+  // A direction on the free dofs, of the size of the deformation.
+  std::vector<double> all(3 * scene.mesh.nodes.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = 1e-4 * kSide * std::sin(1.7 * static_cast<double>(k) + 0.3);
+  assembler.scatterDisplacement(all, v);
+  assembler.zeroConstrainedDofs(v);
+  const std::vector<double> lambda(assembler.numLocalElements(), 0.0);
+  const auto K = assembler.createMatrix();
+  ASSERT_TRUE(assembler.assemble(u, 1.0, lambda, nullptr, &f, K.get()).valid);
+  K->apply(v, Kv);
+  const double h = 1e-3;
+  assembly::Vector up(u, Teuchos::Copy), um(u, Teuchos::Copy);
+  up.update(h, v, 1.0);
+  um.update(-h, v, 1.0);
+  ASSERT_TRUE(assembler.assemble(up, 1.0, lambda, nullptr, &fPlus, nullptr).valid);
+  ASSERT_TRUE(assembler.assemble(um, 1.0, lambda, nullptr, &fMinus, nullptr).valid);
+  fPlus.update(-1.0 / (2.0 * h), fMinus, 1.0 / (2.0 * h)); // (f(u + h v) - f(u - h v)) / 2h
+  assembler.zeroConstrainedDofs(Kv);           // the Dirichlet rows' diagonal acts on v = 0 there
+  fPlus.update(-1.0, Kv, 1.0);
+  EXPECT_GT(globalMaxAbs(Kv), 0.0);
+  char relative[32];
+  std::snprintf(relative, sizeof relative, "%.3e", globalMaxAbs(fPlus) / globalMaxAbs(Kv));
+  RecordProperty("relative_error", relative);
+  EXPECT_LT(globalMaxAbs(fPlus), 1e-6 * globalMaxAbs(Kv)) << "|Kv| = " << globalMaxAbs(Kv) << ", |v| = " << globalMaxAbs(v);
+}
+
+TEST(NewtonSolver, ConvergesQuadraticallyAndTheReactionsBalanceTheWeight) {
+  const model::Scene scene = block(0.3);
+  const auto assembler = Teuchos::rcp(new assembly::Assembler(scene, world()));
+  solvers::LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), world()->getSize(),
+                                       assembler->layout().numGlobalDofs(), true};
+  const Teuchos::ParameterList linear = solvers::linearSolverParameters(); // every default
+  const auto model = Teuchos::rcp(new assembly::ModelEvaluator(assembler, solvers::buildLinearSolver(linear, context)));
+  model->setTime(1.0);
+  solvers::NewtonParameters parameters;
+  parameters.residualTolerance = 1e-12;
+  const solvers::NewtonSolver newton(model, parameters, kSide, 1e-12);
+  assembly::Vector u(assembler->ownedMap());
+  assembler->applyDirichlet(u, 1.0);
+  const double load = assembler->externalForceNorm(1.0);
+  const solvers::NewtonResult r = newton.solve(u, 1e-11 * load, nullptr, 1e-14);
+  ASSERT_TRUE(r.converged);
+  // Quadratic: from the first norm below 1e-3 of the start on, each is at most 10 x the square
+  // of the one before (relative to the start).
+  const auto &norms = r.residualNorms;
+  ASSERT_GE(norms.size(), 3u);
+  for (std::size_t k = 1; k + 1 < norms.size(); ++k)
+    if (norms[k] < 1e-3 * norms[0] && norms[k + 1] > 1e-11 * norms[0]) { // above round-off
+      EXPECT_LT(norms[k + 1] / norms[0], 10.0 * std::pow(norms[k] / norms[0], 2)) << "iteration " << k + 1;
+    }
+  // The support carries the whole weight, rho g V, and nothing sideways.
+  const std::vector<double> lambda(assembler->numLocalElements(), 0.0);
+  const auto reactions = assembler->reactions(u, 1.0, lambda);
+  ASSERT_EQ(reactions.size(), 1u);
+  const double weight = kDensity * kGravity * kSide * kSide * kSide;
+  EXPECT_NEAR(reactions[0].force.z() / weight, 1.0, 1e-9);
+  EXPECT_NEAR(reactions[0].force.x() / weight, 0.0, 1e-9);
+  EXPECT_NEAR(reactions[0].force.y() / weight, 0.0, 1e-9);
+}
+
+TEST(UzawaLoop, BringsANearlyIncompressibleBlockToItsDilatationTolerance) {
+  // nu = 0.4999 (kappa = 5000 mu) in the law, kappa_AL = 30 mu in the tangent: the multipliers
+  // carry the pressure, and every element's dilatation obeys the law to 1e-6.
+  model::Scene scene = block(0.4999);
+  solvers::IncompressibilityParameters incompressibility;
+  incompressibility.dilatationTolerance = 1e-6;
+  const std::vector<materials::VolumetricEnergy> physical{scene.tissues[0].volumetric};
+  scene.tissues[0].volumetric = scene.tissues[0].volumetric.withKappa(
+      solvers::UzawaLoop::tangentKappa(incompressibility, physical[0].kappa(), kMu));
+  const double kappa = materials::bulkModulus(kMu, 0.4999), kappaAL = 30.0 * kMu;
+  EXPECT_NEAR(scene.tissues[0].volumetric.kappa(), 1.0 / (1.0 / kappa + 1.0 / kappaAL), 1e-9 * kappaAL);
+  const auto assembler = Teuchos::rcp(new assembly::Assembler(scene, world()));
+  solvers::LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), world()->getSize(),
+                                       assembler->layout().numGlobalDofs(), true};
+  const auto model = Teuchos::rcp(new assembly::ModelEvaluator(
+      assembler, solvers::buildLinearSolver(solvers::linearSolverParameters(), context)));
+  model->setTime(1.0);
+  const solvers::NewtonSolver newton(model, solvers::NewtonParameters{}, kSide, 1e-10);
+  const solvers::UzawaLoop uzawa(*assembler, newton, incompressibility, physical);
+  assembly::Vector u(assembler->ownedMap());
+  std::vector<double> lambda(assembler->numLocalElements(), 0.0);
+  model->setLambda(&lambda);
+  const solvers::UzawaResult r = uzawa.solve(u, lambda, 1e-10 * assembler->externalForceNorm(1.0), nullptr, nullptr);
+  model->setLambda(nullptr);
+  ASSERT_TRUE(r.converged);
+  EXPECT_GE(r.solves, 2); // the multipliers had to move
+  EXPECT_LT(r.dilatation.max, 1e-6);
+  const solvers::DilatationError e = uzawa.dilatationError(assembler->elementDilatations(u, lambda));
+  EXPECT_LT(e.max, 1e-6);
+}
