@@ -449,6 +449,26 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
   // What Linear solver/type = auto chose (the displacement block's preconditioner with mixed).
   doc_["linear_solver"] = usesDirectSolve(linearSection, context) ? "direct (" + linear_.directSolver + ")"
                                                                   : "iterative (" + linear_.preconditioner + ")";
+  if (linear_.type == LinearSolverType::automatic && usesDirectSolve(linearSection, context))
+    warnIgnoredIterativeSettings(deck, assembler_->layout().numGlobalDofs());
+}
+
+// Linear solver/type = auto solved directly (a small problem on one rank): settings the deck
+// gives for the iterative solver would pass silently, so each is named, on stderr (also with
+// --quiet) and in summary.json's warnings.
+void Simulation::warnIgnoredIterativeSettings(const io::Deck &deck, long long unknowns) {
+  static const char *const iterativeOnly[] = {
+      "preconditioner", "MueLu smoother", "smoother degree", "vertex-patch levels", "patch sweeps",
+      "Chebyshev eigenvalue iterations", "Chebyshev eigenvalue ratio", "MueLu reuse", "coarse size",
+      "FROSch coarse space", "FROSch overlap", "Ifpack2 type"};
+  for (const char *name : iterativeOnly) {
+    if (!deck.given({"Linear solver", name})) continue;
+    const std::string text = deck.where({"Linear solver", name}) + " is not used: Linear solver/type = auto solves " +
+                             std::to_string(unknowns) + " unknowns on one rank directly (at most 'direct up to'); "
+                             "set type = iterative to use it";
+    doc_["warnings"].push_back(text);
+    if (root_) std::fprintf(stderr, "glossa: warning: %s\n", text.c_str());
+  }
 }
 
 // What summary.json says of the run before its first step, and the console's first lines.

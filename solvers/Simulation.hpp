@@ -111,6 +111,7 @@ private:
   // summary's description of the run. `physicalVolumetric`: each tissue's volumetric law.
   void buildSolvers(const io::Deck &deck, const std::vector<materials::VolumetricEnergy> &physicalVolumetric);
   void describeRun(const io::Deck &deck, const std::vector<materials::VolumetricEnergy> &physicalVolumetric);
+  void warnIgnoredIterativeSettings(const io::Deck &deck, long long unknowns);
   // One step solve from the committed state to `time` into `state` (the committed state on
   // entry); the muscle history's trial values are this step's. `quiet`: no per-iteration output
   // (a controller's candidates).

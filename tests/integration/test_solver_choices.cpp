@@ -56,6 +56,28 @@ TEST(SolverChoices, AutoSolvesSmallSystemsDirectlyAndLargerOnesIteratively) {
   EXPECT_NEAR(topCentre(iterative), kDealII4, 1e-5 * std::abs(kDealII4));
 }
 
+// Iterative settings a deck gives while auto solves directly would pass silently: each is named in
+// summary.json's warnings (and on stderr), with where it was given; the iterative run that uses
+// them has none.
+TEST(SolverChoices, AutoNamesTheIterativeSettingsItDoesNotUse) {
+  const std::string deck = test::inputPath("verification/step44_block.xml");
+  const auto direct = test::runDeck(deck, {"Mesh/Box/cells=2,2,2", "Time/end time=0.1", "Linear solver/preconditioner=Ifpack2",
+                                           "Linear solver/smoother degree=3"},
+                                    test::scratchDirectory("auto_direct_warned"));
+  ASSERT_TRUE(direct.at("converged").get<bool>());
+  ASSERT_TRUE(direct.contains("warnings"));
+  ASSERT_EQ(direct.at("warnings").size(), 2u);
+  const std::string first = direct["warnings"][0], second = direct["warnings"][1];
+  EXPECT_NE(first.find("'Linear solver/preconditioner' is not used"), std::string::npos) << first;
+  EXPECT_NE(first.find("--set on the command line"), std::string::npos) << first;
+  EXPECT_NE(second.find("'Linear solver/smoother degree'"), std::string::npos) << second;
+  const auto iterative = test::runDeck(deck, {"Mesh/Box/cells=2,2,2", "Time/end time=0.1", "Linear solver/type=iterative",
+                                              "Linear solver/preconditioner=Ifpack2", "Linear solver/smoother degree=3"},
+                                       test::scratchDirectory("iterative_not_warned"));
+  ASSERT_TRUE(iterative.at("converged").get<bool>());
+  EXPECT_FALSE(iterative.contains("warnings"));
+}
+
 // direct reuse iterations = 10: the factors of a Newton solve's first tangent precondition its
 // later iterations (more than one Krylov iteration per solve), and the answer stays deal.II's.
 TEST(SolverChoices, AReusedFactorisationPreconditionsLaterNewtonIterations) {

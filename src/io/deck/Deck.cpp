@@ -142,6 +142,11 @@ int Deck::lineOf(const std::vector<std::string> &path) const {
   return it == lines_.end() ? 0 : it->second;
 }
 
+bool Deck::given(const std::vector<std::string> &path) const {
+  const std::string joined = joinPath(path);
+  return lineOf(path) > 0 || std::find(overridden_.begin(), overridden_.end(), joined) != overridden_.end();
+}
+
 std::string Deck::where(const std::vector<std::string> &path) const {
   const std::string joined = joinPath(path);
   std::string location = "deck " + file_;

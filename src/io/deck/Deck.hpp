@@ -38,6 +38,8 @@ public:
 
   // "FILE:LINE: parameter 'A/B/c'" for messages of later checks (e.g. a missing mesh set).
   std::string where(const std::vector<std::string> &path) const;
+  // Whether the user gave the parameter (in the file or by --set), not its default.
+  bool given(const std::vector<std::string> &path) const;
 
   // The deck (after validation: fully defaulted) as Teuchos XML.
   std::string toXml() const;
