@@ -1038,6 +1038,17 @@ std::optional<double> Simulation::fieldsStamp() const {
   return pathStart_.time + (stepNumber_ - pathStart_.step) * steps_->nominalStep();
 }
 
+bool Simulation::stopRequested() {
+  // Every rank agrees to stop at the same step boundary (a signal may reach them apart).
+  int signal = stopSignal(), anySignal = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, signal, Teuchos::outArg(anySignal));
+  if (anySignal == 0) return false;
+  stoppedBy_ = anySignal;
+  converged_ = false;
+  failure_ = interruption(anySignal, static_cast<std::size_t>(stepNumber_), t_);
+  return true;
+}
+
 void Simulation::followArcLength() {
   ArcLengthSettings settings = *arcLength_;
   settings.startTime = t_;
@@ -1079,14 +1090,7 @@ void Simulation::followArcLength() {
     double largest = 0.0;
     for (std::size_t n = 0; 3 * n + 2 < all.size(); ++n)
       largest = std::max(largest, Eigen::Vector3d(all[3 * n], all[3 * n + 1], all[3 * n + 2]).norm());
-    int signal = stopSignal(), anySignal = 0;
-    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, signal, Teuchos::outArg(anySignal));
-    if (anySignal != 0) {
-      stoppedBy_ = anySignal;
-      converged_ = false;
-      failure_ = interruption(anySignal, static_cast<std::size_t>(stepNumber_), t_);
-      return false;
-    }
+    if (stopRequested()) return false;
     return !(settings.stopAtDisplacement > 0.0 && largest >= settings.stopAtDisplacement);
   };
   const ArcLengthOutcome outcome = followPath(model_, committed_->u, settings, onPoint);
@@ -1105,15 +1109,7 @@ nlohmann::json Simulation::run() {
     return doc_;
   }
   while (!finished()) {
-    // Every rank agrees to stop at the same step boundary (a signal may reach them apart).
-    int signal = stopSignal(), anySignal = 0;
-    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, signal, Teuchos::outArg(anySignal));
-    if (anySignal != 0) {
-      stoppedBy_ = anySignal;
-      converged_ = false;
-      failure_ = interruption(anySignal, static_cast<std::size_t>(stepNumber_), t_);
-      break;
-    }
+    if (stopRequested()) break;
     if (attemptStep()) commitTrial();
     else if (!rollBack()) break;
   }

@@ -143,6 +143,8 @@ private:
   // following = arc length) or its rest once load control has located a limit point (at a limit
   // point = follow).
   void followArcLength();
+  // A stop signal reached some rank: the run ends here, with the reason (every rank). Collective.
+  bool stopRequested();
   // On the stop-signal watcher thread (rank 0): summary.json says at once why the run ends.
   void writeInterruptedSummary(int signal);
 
