@@ -13,9 +13,6 @@
 
 #include "fem/HexShape.hpp"
 #include "fem/Q1P0Element.hpp"
-#include "loads/BodyForce.hpp"
-#include "loads/DeadTraction.hpp"
-#include "loads/ExternalMuscle.hpp"
 #include "loads/FollowerPressure.hpp"
 #include "model/TissuePointLaw.hpp"
 
@@ -50,6 +47,8 @@ Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
       for (mesh::NodeId n : bc.nodes)
         for (int c = 0; c < 3; ++c)
           if (bc.fixed[c]) constrained_[3 * n + c] = 1;
+
+  loads_ = loadContributions(scene_, history_, &externalMuscles_);
 
   nodeMultiplicity_.assign(mesh.numNodes(), 0);
   double volume = 0.0;
@@ -199,43 +198,6 @@ std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::ve
   return bases;
 }
 
-void Assembler::addExternalForces(double time, Teuchos::ArrayRCP<double> &fData, bool constrainedToo,
-                                  bool surfaceLoads) const {
-  // External forces enter with a minus sign: f = f_int - f_ext.
-  const mesh::HexMesh &mesh = scene_.mesh;
-  for (const auto &load : scene_.tractions) {
-    if (!surfaceLoads) break;
-    const Eigen::Vector3d t = load.traction * load.scale(time);
-    for (const auto &face : load.faces) {
-      if (layout_.elementOwner[face.element] != layout_.rank) continue;
-      const auto &hex = mesh.elements[face.element];
-      loads::FaceNodes Xf;
-      for (int k = 0; k < 4; ++k) Xf.row(k) = mesh.nodes[hex[mesh::kHexFaceNodes[face.localFace][k]]].transpose();
-      const loads::FaceForces ff = loads::deadTractionForces(Xf, t);
-      for (int k = 0; k < 4; ++k) {
-        const mesh::NodeId n = hex[mesh::kHexFaceNodes[face.localFace][k]];
-        for (int c = 0; c < 3; ++c)
-          if (constrainedToo || !constrained_[3 * n + c])
-            fData[overlapMap_->getLocalElement(layout_.dof(n, c))] -= ff(3 * k + c);
-      }
-    }
-  }
-  for (const auto &load : scene_.bodyForces) {
-    const Eigen::Vector3d a = load.scale(time) * load.acceleration;
-    if (a.isZero()) continue;
-    for (const auto e : load.elements) {
-      if (layout_.elementOwner[e] != layout_.rank) continue;
-      const Eigen::Vector3d b = scene_.tissueOf(static_cast<std::size_t>(e)).density * a; // rho a of its tissue
-      const auto &hex = mesh.elements[e];
-      const loads::HexForces fe = loads::bodyForces(mesh.elementCoordinates(e), b);
-      for (int a = 0; a < 8; ++a)
-        for (int c = 0; c < 3; ++c)
-          if (constrainedToo || !constrained_[3 * hex[a] + c])
-            fData[overlapMap_->getLocalElement(layout_.dof(hex[a], c))] -= fe(3 * a + c);
-    }
-  }
-}
-
 AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vector<double> &lambda,
                                    const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K,
                                    bool trialPoint) const {
@@ -285,9 +247,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
       for (int l = 0; l < 24; ++l) fData[elementLids_[i][l]] += re(l);
       if (K) scatter->add(i, ke, values);
     }
-    addExternalForces(time, fData);
-    if (!addFollowerLoads(uData, time, fData, K, false)) localValid = 0;
-    addElasticSupports(uData, time, fData, K);
+    if (!addLoads(uData, time, fData, K, /*constrainedToo=*/false, everyLoad)) localValid = 0;
   }
   if (K) K->endAssembly();
   if (f) {
@@ -353,9 +313,7 @@ Vector Assembler::loadResidual(const Vector &u, double time) const {
   auto uData = uOverlap.getData(0);
   {
     auto fData = fOverlap.getDataNonConst(0);
-    addExternalForces(time, fData);
-    addFollowerLoads(uData, time, fData, nullptr, false);
-    addElasticSupports(uData, time, fData, nullptr);
+    addLoads(uData, time, fData, nullptr, /*constrainedToo=*/false, everyLoad);
   }
   f.doExport(fOverlap, *exporter_, Tpetra::ADD);
   return f;
@@ -413,93 +371,18 @@ Assembler::WorstCorner Assembler::worstCorner(const Vector &u) const {
   return {global[0].first, global[0].second, global[1].first, global[1].second};
 }
 
-void Assembler::scatterLoadBlock(const mesh::NodeId *nodes, int n, const double *f, const double *df,
-                                 Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo) const {
-  std::array<GO, 12> gids{};
-  for (int k = 0; k < n; ++k)
-    for (int c = 0; c < 3; ++c) gids[3 * k + c] = layout_.dof(nodes[k], c);
-  for (int r = 0; r < 3 * n; ++r) {
-    const bool fixedRow = constrained_[3 * nodes[r / 3] + r % 3];
-    if (fixedRow && !constrainedToo) continue;
-    fData[overlapMap_->getLocalElement(gids[r])] -= f[r];
-    if (!K || fixedRow) continue;
-    std::array<double, 12> row{};
-    for (int c = 0; c < 3 * n; ++c) row[c] = constrained_[3 * nodes[c / 3] + c % 3] ? 0.0 : -df[r + 3 * n * c];
-    K->sumIntoGlobalValues(gids[r], Teuchos::ArrayView<const GO>(gids.data(), 3 * n),
-                           Teuchos::ArrayView<const double>(row.data(), 3 * n));
-  }
+LoadTarget Assembler::loadTarget(const Teuchos::ArrayRCP<const double> &uData, Teuchos::ArrayRCP<double> *fData,
+                                 FEMatrix *K, bool constrainedToo) const {
+  return {scene_, layout_, *overlapMap_, constrained_, uData, fData, K, constrainedToo};
 }
 
-bool Assembler::addFollowerLoads(const Teuchos::ArrayRCP<const double> &uData, double time,
-                                 Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo) const {
-  const mesh::HexMesh &mesh = scene_.mesh;
-  for (const auto &load : scene_.pressures) {
-    for (const auto &face : load.faces) {
-      if (layout_.elementOwner[face.element] != layout_.rank) continue;
-      const auto &hex = mesh.elements[face.element];
-      std::array<mesh::NodeId, 4> nodes{};
-      loads::FaceNodes Xf, uf;
-      for (int k = 0; k < 4; ++k) {
-        nodes[k] = hex[mesh::kHexFaceNodes[face.localFace][k]];
-        Xf.row(k) = mesh.nodes[nodes[k]].transpose();
-        for (int c = 0; c < 3; ++c) uf(k, c) = uData[overlapMap_->getLocalElement(layout_.dof(nodes[k], c))];
-      }
-      loads::FaceTangent Kf = loads::FaceTangent::Zero(); // read only with K
-      const loads::FaceForces ff = loads::followerPressureForces(Xf, uf, load.pressure.atGaussPoints(Xf, time), K ? &Kf : nullptr);
-      scatterLoadBlock(nodes.data(), 4, ff.data(), Kf.data(), fData, K, constrainedToo);
-    }
-  }
-  return evaluateExternalMuscles(uData, &fData, K, constrainedToo, nullptr, nullptr);
-}
-
-void Assembler::addElasticSupports(const Teuchos::ArrayRCP<const double> &uData, double time,
-                                   Teuchos::ArrayRCP<double> &fData, FEMatrix *K) const {
-  // The spring's force on the body, -k (u - g), is an external force: the residual gains
-  // k (u - g) and the tangent k on the diagonal (scatterLoadBlock subtracts f and df).
-  for (const auto &bc : scene_.dirichlet) {
-    if (!bc.elastic()) continue;
-    const double k = bc.nodeStiffness;
-    for (mesh::NodeId n : bc.nodes) {
-      if (layout_.nodeOwner[n] != layout_.rank) continue;
-      Eigen::Vector3d f = Eigen::Vector3d::Zero();
-      Eigen::Matrix3d df = Eigen::Matrix3d::Zero();
-      for (int c = 0; c < 3; ++c) {
-        if (!bc.fixed[c]) continue;
-        f(c) = -k * (uData[overlapMap_->getLocalElement(layout_.dof(n, c))] - bc.prescribed(c, scene_.mesh.nodes[n], time));
-        df(c, c) = -k;
-      }
-      scatterLoadBlock(&n, 1, f.data(), df.data(), fData, K, /*constrainedToo=*/false);
-    }
-  }
-}
-
-bool Assembler::evaluateExternalMuscles(const Teuchos::ArrayRCP<const double> &uData, Teuchos::ArrayRCP<double> *fData,
-                                        FEMatrix *K, bool constrainedToo, model::MuscleHistory *history,
-                                        std::vector<double> *stretch) const {
+bool Assembler::addLoads(const Teuchos::ArrayRCP<const double> &uData, double time, Teuchos::ArrayRCP<double> &fData,
+                         FEMatrix *K, bool constrainedToo,
+                         const std::function<bool(const LoadContribution &)> &which) const {
+  const LoadTarget target = loadTarget(uData, &fData, K, constrainedToo);
   bool valid = true;
-  for (std::size_t m = 0; m < scene_.muscles.external.size(); ++m) {
-    const auto &muscle = scene_.muscles.external[m];
-    const double alpha = history_.groupActivation(muscle.group);
-    for (std::size_t k = 0; k < muscle.nodes.size(); ++k) {
-      const mesh::NodeId node = muscle.nodes[k];
-      if (layout_.nodeOwner[node] != layout_.rank) continue;
-      Eigen::Vector3d u;
-      for (int c = 0; c < 3; ++c) u(c) = uData[overlapMap_->getLocalElement(layout_.dof(node, c))];
-      const auto r = muscle.law->evaluate(muscle.fibres[k], u, alpha, history_.dt(),
-                                          history_.committedExternalLambdaC(m, k));
-      if (!materials::succeeded(r.hill.status) || !r.force.allFinite()) {
-        valid = false;
-        continue;
-      }
-      if (history) history->trialExternalLambdaC(m, k) = r.hill.lambdaC;
-      if (stretch && muscle.group >= 0) {
-        const double L0 = (muscle.fibres[k].origin - muscle.fibres[k].insertion).norm();
-        (*stretch)[2 * muscle.group] += r.lambdaF * L0;
-        (*stretch)[2 * muscle.group + 1] += L0;
-      }
-      if (fData) scatterLoadBlock(&node, 1, r.force.data(), r.dForceDu.data(), *fData, K, constrainedToo);
-    }
-  }
+  for (const auto &load : loads_)
+    if (which(*load) && !load->addTo(target, time)) valid = false;
   return valid;
 }
 
@@ -596,7 +479,7 @@ MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
   }
   // The external fibres' lambda_c at the converged u (their forces are not needed here).
   std::vector<double> external(2 * G, 0.0), externalAll(2 * G, 0.0);
-  if (!evaluateExternalMuscles(uData, nullptr, nullptr, false, &history_, &external)) localValid = 0;
+  if (!externalMuscles_->evaluate(loadTarget(uData, nullptr, nullptr, false), &history_, &external)) localValid = 0;
   int globalValid = 0;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
   out.valid = globalValid == 1;
@@ -626,8 +509,11 @@ Vector Assembler::nodalForces(const Teuchos::ArrayRCP<const double> &uData, doub
                                      lambda[i], nullptr, false, fem::Q1P0Output::ResidualOnly);
       for (int l = 0; l < 24; ++l) fData[elementLids_[i][l]] += r.residual(l);
     }
-    addExternalForces(time, fData, /*constrainedToo=*/true, surfaceLoads);
-    if (surfaceLoads) addFollowerLoads(uData, time, fData, nullptr, /*constrainedToo=*/true);
+    // The loads, not the supports' springs (their force is the reaction itself); surface loads
+    // only when asked.
+    addLoads(uData, time, fData, nullptr, /*constrainedToo=*/true, [surfaceLoads](const LoadContribution &l) {
+      return l.kind() != LoadContribution::Kind::support && (surfaceLoads || !l.onSurface());
+    });
   }
   f.doExport(fOverlap, *exporter_, Tpetra::ADD);
   return f;
@@ -716,7 +602,8 @@ double Assembler::externalForceNorm(double time) const {
   Vector fOverlap(overlapMap_), f(ownedMap_);
   {
     auto fData = fOverlap.getDataNonConst(0);
-    addExternalForces(time, fData);
+    addLoads(Teuchos::ArrayRCP<const double>(), time, fData, nullptr, /*constrainedToo=*/false,
+             [](const LoadContribution &l) { return l.kind() == LoadContribution::Kind::dead; });
   }
   f.doExport(fOverlap, *exporter_, Tpetra::ADD);
   return f.norm2();

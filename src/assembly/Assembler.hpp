@@ -8,6 +8,7 @@
 // columns of the element matrices zeroed and a diagonal `dirichletScale`; their residual is
 // zero because the solution vector holds the prescribed values before every solve.
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "assembly/ElementScatter.hpp"
+#include "assembly/LoadContribution.hpp"
 #include "assembly/DofLayout.hpp"
 #include "assembly/TpetraTypes.hpp"
 #include "fem/Q1P0Element.hpp"
@@ -188,36 +190,22 @@ public:
 
 private:
   void importToOverlap(const Vector &u, Vector &overlap) const;
-  // Subtracts the dead tractions and body forces at time t from the overlap residual (local
-  // faces and elements only); at constrained dofs only if `constrainedToo`.
   // Owned f_int - f_body, less the surface loads (tractions, follower loads) too when asked, at
   // every dof, constrained ones included: reactions and face-set resultants sum it over nodes.
   Vector nodalForces(const Teuchos::ArrayRCP<const double> &uData, double time, const std::vector<double> &lambda,
                      bool surfaceLoads) const;
-  void addExternalForces(double time, Teuchos::ArrayRCP<double> &fData, bool constrainedToo = false,
-                         bool surfaceLoads = true) const;
   // The element kernel with the point law of local element i (its muscle law if it has fibres).
   fem::Q1P0Result evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue, double lambda,
                                   const fem::MixedBase *base, bool extrapolate, fem::Q1P0Output what) const;
-  // The displacement-dependent loads (follower pressures, external muscles) at u: subtracted
-  // from the overlap residual (at constrained dofs only if `constrainedToo`) and, with K, their
-  // tangent subtracted from K (unconstrained rows and columns). False if an external fibre's
-  // local solve failed on this rank.
-  bool addFollowerLoads(const Teuchos::ArrayRCP<const double> &uOverlap, double time, Teuchos::ArrayRCP<double> &fData,
-                        FEMatrix *K, bool constrainedToo) const;
-  // The springs of the elastic supports (DirichletCondition::elastic): residual k (u - g) and
-  // tangent k at every free supported component of this rank's nodes.
-  void addElasticSupports(const Teuchos::ArrayRCP<const double> &uOverlap, double time,
-                          Teuchos::ArrayRCP<double> &fData, FEMatrix *K) const;
-  // The external muscles at u: their forces and tangent as above when `fData` is given; with
-  // `history`, their new lambda_c written to its trial values; with `stretch` (2 per group),
-  // lambda_f L_0 and L_0 added. False if a local solve failed on this rank.
-  bool evaluateExternalMuscles(const Teuchos::ArrayRCP<const double> &uOverlap, Teuchos::ArrayRCP<double> *fData,
-                               FEMatrix *K, bool constrainedToo, model::MuscleHistory *history,
-                               std::vector<double> *stretch) const;
-  // residual -= f, K -= df/du for a block of n nodes (df: 3n x 3n, column-major).
-  void scatterLoadBlock(const mesh::NodeId *nodes, int n, const double *f, const double *df,
-                        Teuchos::ArrayRCP<double> &fData, FEMatrix *K, bool constrainedToo) const;
+  // The loads that `which` admits (assembly order: dead tractions, body forces, follower
+  // pressures, external muscles, elastic supports) subtracted at (u, t) from the overlap residual
+  // (at constrained dofs only if `constrainedToo`) and, with K, their tangent. False if one could
+  // not be evaluated on this rank.
+  bool addLoads(const Teuchos::ArrayRCP<const double> &uOverlap, double time, Teuchos::ArrayRCP<double> &fData,
+                FEMatrix *K, bool constrainedToo, const std::function<bool(const LoadContribution &)> &which) const;
+  static bool everyLoad(const LoadContribution &) { return true; }
+  LoadTarget loadTarget(const Teuchos::ArrayRCP<const double> &uOverlap, Teuchos::ArrayRCP<double> *fData, FEMatrix *K,
+                        bool constrainedToo) const;
   fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
   // The offsets of every element entry in K's values while K is open for assembly (its
   // owned-plus-shared pattern), found on first use for that pattern.
@@ -238,6 +226,8 @@ private:
   mutable std::shared_ptr<const ElementScatter> scatter_;
   mutable const void *scatterPattern_ = nullptr;
   model::MuscleHistory history_;
+  std::vector<std::unique_ptr<LoadContribution>> loads_; // the scene's loads (LoadContribution.hpp)
+  const ExternalMuscleForces *externalMuscles_ = nullptr; // among them, for the muscle history
 };
 
 } // namespace glossa::assembly
