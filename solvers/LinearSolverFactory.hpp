@@ -10,6 +10,7 @@
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 
 #include "assembly/TpetraTypes.hpp"
+#include "solvers/parameters/LinearSolverParameters.hpp"
 
 namespace glossa::solvers {
 
@@ -21,24 +22,22 @@ struct LinearSolverContext {
   bool symmetric = true; // the tangent is symmetric (no follower loads yet)
 };
 
-Teuchos::ParameterList linearSolverParameters();
-
 // The section chooses a direct solve: type = direct, or auto on one rank at no more than 'direct up
 // to' unknowns.
-bool usesDirectSolve(const Teuchos::ParameterList &section, const LinearSolverContext &context);
+bool usesDirectSolve(const LinearSolverParameters &section, const LinearSolverContext &context);
 
 // The Stratimikos parameter list the deck section stands for (exposed for tests and the docs).
-Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const Teuchos::ParameterList &section,
+Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const LinearSolverParameters &section,
                                                            const LinearSolverContext &context);
 
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
-buildLinearSolver(const Teuchos::ParameterList &section, const LinearSolverContext &context);
+buildLinearSolver(const LinearSolverParameters &section, const LinearSolverContext &context);
 
 // For the mixed block solve (solvers/MixedBlockSolver): the preconditioner of the displacement
 // block as the section says (MueLu, FROSch, Ifpack2 or none), and Belos GMRES with the section's
 // tolerance, iteration limit and restart, which takes an external preconditioner.
 Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>>
-buildDisplacementPreconditioner(const Teuchos::ParameterList &section, const LinearSolverContext &context);
-Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> buildBlockKrylovSolver(const Teuchos::ParameterList &section);
+buildDisplacementPreconditioner(const LinearSolverParameters &section, const LinearSolverContext &context);
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> buildBlockKrylovSolver(const LinearSolverParameters &section);
 
 } // namespace glossa::solvers

@@ -187,9 +187,9 @@ private:
 } // namespace
 
 RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
-buildMixedBlockSolver(const Teuchos::ParameterList &linearSection, const LinearSolverContext &context,
+buildMixedBlockSolver(const LinearSolverParameters &linearSection, const LinearSolverContext &context,
                       RCP<assembly::MixedPressureState> state) {
-  const bool none = linearSection.get<std::string>("preconditioner") == "none";
+  const bool none = linearSection.preconditioner == Preconditioner::none;
   return rcp(new MixedBlockSolveFactory(std::move(state),
                                         none ? Teuchos::null : buildDisplacementPreconditioner(linearSection, context),
                                         buildBlockKrylovSolver(linearSection)));

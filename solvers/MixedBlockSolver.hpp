@@ -20,7 +20,7 @@
 namespace glossa::solvers {
 
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
-buildMixedBlockSolver(const Teuchos::ParameterList &linearSection, const LinearSolverContext &context,
+buildMixedBlockSolver(const LinearSolverParameters &linearSection, const LinearSolverContext &context,
                       Teuchos::RCP<assembly::MixedPressureState> state);
 
 } // namespace glossa::solvers

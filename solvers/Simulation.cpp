@@ -147,7 +147,7 @@ namespace {
 // Incompressibility/method = mixed carries the element pressures in the Newton iterate: it needs
 // the mixed element, a full Newton step (the pressure increment is not line-searched), an
 // iterative block solve, and no controller (its sensitivities are condensed solves).
-void requireMixedCompatible(const NewtonParameters &newton, const LinearSolverChoice &linear, bool controlled,
+void requireMixedCompatible(const NewtonParameters &newton, const LinearSolverParameters &linear, bool controlled,
                             const model::Scene &scene) {
   const std::string why = "Incompressibility/method = mixed needs ";
   if (scene.formulation != model::ElementFormulation::Q1P0) throw io::DeckError(why + "Material/element = Q1P0");
@@ -192,7 +192,7 @@ void requireArcLengthCompatible(const io::Deck &deck, const IncompressibilityPar
 }
 
 ArcLengthSettings arcLengthSettings(const TimeParameters &time, const NewtonParameters &newton,
-                                    const LinearSolverChoice &linear, const assembly::Assembler &assembler) {
+                                    const LinearSolverParameters &linear, const assembly::Assembler &assembler) {
   ArcLengthSettings s;
   s.endTime = time.steps.endTime;
   s.stepSize = std::min(time.steps.nominal, s.endTime);
@@ -325,7 +325,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   time_ = parseTimeParameters(D.sublist("Time"));
   incompressibility_ = parseIncompressibilityParameters(D.sublist("Incompressibility"));
   newtonParameters_ = parseNewtonParameters(D.sublist("Nonlinear solver"));
-  linear_ = parseLinearSolverChoice(D.sublist("Linear solver"));
+  linear_ = parseLinearSolverParameters(D.sublist("Linear solver"));
   output_ = parseOutputParameters(D.sublist("Output"));
   controlled_ = controlRequested(D.sublist("Control"));
   steps_ = std::make_unique<StepSizeController>(time_.steps);
@@ -408,7 +408,6 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
 // The assembly, the model evaluator with its linear solver, Newton, the Uzawa loop and the
 // path's monitors, on the control group's communicator.
 void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials::VolumetricEnergy> &physicalVolumetric) {
-  const auto &D = deck.root();
   const RunOptions &options = options_;
   model::Scene &scene = *scene_;
   const double mu = scene.tissues[0].matrix->shearModulus();
@@ -416,15 +415,14 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
   assembler_ = Teuchos::rcp(new assembly::Assembler(scene, solverComm));
   LinearSolverContext context{assembler_->coordinates(), assembler_->rigidBodyModes(), solverComm->getSize(),
                               assembler_->layout().numGlobalDofs(), scene.symmetricTangent};
-  const auto &linearSection = D.sublist("Linear solver");
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
   if (incompressibility_.method == IncompressibilityMethod::mixed) {
     requireMixedCompatible(newtonParameters_, linear_, controlled_, scene);
     mixedPressure = Teuchos::rcp(new assembly::MixedPressureState(physicalVolumetric[0], mu));
   }
   model_ = Teuchos::rcp(new assembly::ModelEvaluator(
-      assembler_, mixedPressure.is_null() ? buildLinearSolver(linearSection, context)
-                                          : buildMixedBlockSolver(linearSection, context, mixedPressure)));
+      assembler_, mixedPressure.is_null() ? buildLinearSolver(linear_, context)
+                                          : buildMixedBlockSolver(linear_, context, mixedPressure)));
   model_->setMixedPressure(mixedPressure);
   for (const auto &x : scene.mesh.nodes) lengthScale_ = std::max(lengthScale_, x.norm());
   planes_ = model::findSymmetryPlanes(scene.mesh, scene.dirichlet);
@@ -447,9 +445,9 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
                   "the run\n", t.name.c_str(), uzawa_->penaltyRatios()[tissue]);
   });
   // What Linear solver/type = auto chose (the displacement block's preconditioner with mixed).
-  doc_["linear_solver"] = usesDirectSolve(linearSection, context) ? "direct (" + linear_.directSolver + ")"
-                                                                  : "iterative (" + linear_.preconditioner + ")";
-  if (linear_.type == LinearSolverType::automatic && usesDirectSolve(linearSection, context))
+  doc_["linear_solver"] = usesDirectSolve(linear_, context) ? "direct (" + linear_.directSolverName + ")"
+                                                                  : "iterative (" + linear_.preconditionerName + ")";
+  if (linear_.type == LinearSolverType::automatic && usesDirectSolve(linear_, context))
     warnIgnoredIterativeSettings(deck, assembler_->layout().numGlobalDofs());
 }
 

@@ -21,7 +21,7 @@
 
 #include "io/deck/Deck.hpp"
 #include "solvers/parameters/IncompressibilityParameters.hpp"
-#include "solvers/parameters/LinearSolverChoice.hpp"
+#include "solvers/parameters/LinearSolverParameters.hpp"
 #include "solvers/parameters/NewtonParameters.hpp"
 #include "solvers/parameters/OutputParameters.hpp"
 #include "solvers/parameters/TimeParameters.hpp"
@@ -163,7 +163,7 @@ private:
   TimeParameters time_;
   IncompressibilityParameters incompressibility_;
   NewtonParameters newtonParameters_;
-  LinearSolverChoice linear_;
+  LinearSolverParameters linear_;
   OutputParameters output_;
   bool controlled_ = false; // Control/type is not none
 

@@ -31,7 +31,7 @@ Teuchos::ParameterList mueluList(const std::vector<std::string> &overrides) {
   auto deck = io::Deck::fromFile(test::inputPath("verification/step44_block.xml"));
   for (const auto &o : overrides) deck.applyOverride(o, schema);
   deck.validate(schema);
-  const auto p = solvers::stratimikosParameters(deck.root().sublist("Linear solver"), {});
+  const auto p = solvers::stratimikosParameters(solvers::parseLinearSolverParameters(deck.root().sublist("Linear solver")), {});
   return p->sublist("Preconditioner Types").sublist("MueLu");
 }
 }  // namespace
@@ -111,7 +111,7 @@ TEST(LinearStrategyLists, EachSmootherIsWhatTheDeckSays) {
     deck.applyOverride("Linear solver/preconditioner=FROSch", schema);
     deck.applyOverride("Linear solver/FROSch coarse space=RGDSW", schema);
     deck.validate(schema);
-    const auto p = solvers::stratimikosParameters(deck.root().sublist("Linear solver"), {});
+    const auto p = solvers::stratimikosParameters(solvers::parseLinearSolverParameters(deck.root().sublist("Linear solver")), {});
     EXPECT_EQ(p->get<std::string>("Preconditioner Type"), "FROSch");
     const auto &f = p->sublist("Preconditioner Types").sublist("FROSch");
     EXPECT_EQ(f.get<std::string>("CoarseOperator Type"), "RGDSWCoarseOperator");

@@ -191,8 +191,8 @@ TEST(NewtonSolver, ConvergesQuadraticallyAndTheReactionsBalanceTheWeight) {
   const auto assembler = Teuchos::rcp(new assembly::Assembler(scene, world()));
   solvers::LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), world()->getSize(),
                                        assembler->layout().numGlobalDofs(), true};
-  const Teuchos::ParameterList linear = solvers::linearSolverParameters(); // every default
-  const auto model = Teuchos::rcp(new assembly::ModelEvaluator(assembler, solvers::buildLinearSolver(linear, context)));
+  const auto model = Teuchos::rcp(
+      new assembly::ModelEvaluator(assembler, solvers::buildLinearSolver(solvers::LinearSolverParameters{}, context)));
   model->setTime(1.0);
   solvers::NewtonParameters parameters;
   parameters.residualTolerance = 1e-12;
@@ -235,7 +235,7 @@ TEST(UzawaLoop, BringsANearlyIncompressibleBlockToItsDilatationTolerance) {
   solvers::LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), world()->getSize(),
                                        assembler->layout().numGlobalDofs(), true};
   const auto model = Teuchos::rcp(new assembly::ModelEvaluator(
-      assembler, solvers::buildLinearSolver(solvers::linearSolverParameters(), context)));
+      assembler, solvers::buildLinearSolver(solvers::LinearSolverParameters{}, context)));
   model->setTime(1.0);
   const solvers::NewtonSolver newton(model, solvers::NewtonParameters{}, kSide, 1e-10);
   const solvers::UzawaLoop uzawa(*assembler, newton, incompressibility, physical);

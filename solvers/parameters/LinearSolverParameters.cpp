@@ -1,0 +1,130 @@
+#include "solvers/parameters/LinearSolverParameters.hpp"
+
+#include "io/deck/ParameterSpec.hpp"
+
+namespace glossa::solvers {
+
+Teuchos::ParameterList linearSolverParameters() {
+  Teuchos::ParameterList p;
+  io::declareString(p, "type", "auto",
+                    "auto: direct on one rank up to 'direct up to' unknowns, iterative otherwise; iterative: Belos Krylov "
+                    "solver with the 'preconditioner'; direct: the 'direct solver'",
+                    {"auto", "iterative", "direct"});
+  io::declareString(p, "direct solver", "MUMPS",
+                    "MUMPS: multifrontal LU (LDL^T for a symmetric tangent), analysed once per run and "
+                    "refactored every Newton iteration, inside one Krylov iteration (MPI-parallel); KLU2: "
+                    "Amesos2 KLU2 (slow on 3D meshes, kept for comparison; one rank)",
+                    {"MUMPS", "KLU2"});
+  io::declareInt(p, "direct up to", 8000,
+                 "type = auto: the largest number of unknowns solved directly (the measured crossover with "
+                 "MueLu on the step-44 block lies between 6,591 and 14,739; doc/incompressibility.md)",
+                 io::Range::atLeast(0));
+  io::declareInt(p, "direct reuse iterations", 10,
+                 "MUMPS: 0 refactors the tangent at every Newton iteration; k > 0 factors at the first "
+                 "iteration of each Newton solve and keeps the factors as the Krylov method's preconditioner "
+                 "while a solve takes at most k iterations (measured: doc/incompressibility.md)",
+                 io::Range::atLeast(0));
+  io::declareString(p, "Krylov method", "auto",
+                    "auto: CG while the tangent is symmetric, GMRES otherwise", {"auto", "cg", "gmres"});
+  io::declareString(p, "preconditioner", "MueLu",
+                    "MueLu: smoothed-aggregation AMG with rigid-body modes; FROSch: two-level "
+                    "overlapping Schwarz (ShyLU_DDFROSch, one subdomain per rank, KLU2 subdomain and "
+                    "coarse solves); Ifpack2: the 'Ifpack2 type' alone; none",
+                    {"MueLu", "FROSch", "Ifpack2", "none"});
+  io::declareString(p, "FROSch coarse space", "GDSW",
+                    "GDSW or RGDSW (reduced dimension) energy-minimising coarse space, translations "
+                    "and rotations (from the nodal coordinates)", {"GDSW", "RGDSW"});
+  io::declareInt(p, "FROSch overlap", 1, "layers of matrix-graph overlap added to each rank's subdomain",
+                 io::Range::closed(0, 10));
+  io::declareDouble(p, "tolerance", 1e-6, "",
+                    "relative residual reduction of each linear solve (Newton still converges to "
+                    "its own tolerance; 1e-6 is also step-44's choice)",
+                    io::Range::open(0.0, 1.0));
+  io::declareInt(p, "maximum iterations", 2000, "Krylov iteration limit per solve", io::Range::atLeast(1));
+  io::declareInt(p, "GMRES restart", 200, "Krylov vectors kept by GMRES", io::Range::atLeast(10));
+  io::declareString(p, "MueLu smoother", "Chebyshev",
+                    "Chebyshev (polynomial, every level); symmetric Gauss-Seidel (point, every level); "
+                    "node-block Gauss-Seidel (symmetric, on each node's 3x3 block, 6x6 on coarse levels); "
+                    "vertex-patch (Ifpack2 BLOCK RELAXATION: symmetric Gauss-Seidel on overlapping "
+                    "patches, each node with its matrix-graph neighbours, i.e. the 27 nodes of the "
+                    "elements around a vertex; on 'vertex-patch levels', Chebyshev elsewhere)",
+                    {"Chebyshev", "symmetric Gauss-Seidel", "node-block Gauss-Seidel", "vertex-patch"});
+  io::declareInt(p, "smoother degree", 6,
+                 "Chebyshev degree, or Gauss-Seidel sweeps (point and node-block: 2 is the measured choice, "
+                 "set it when choosing them); the Chebyshev levels of the vertex-patch smoother use it as "
+                 "their degree (6 with eigenvalue ratio 100: the default, doc/incompressibility.md)",
+                 io::Range::closed(1, 20));
+  io::declareString(p, "vertex-patch levels", "finest",
+                    "where the vertex-patch smoother runs: finest (Chebyshev on the coarse levels) or all",
+                    {"finest", "all"});
+  io::declareInt(p, "patch sweeps", 1, "symmetric Gauss-Seidel sweeps of the vertex-patch smoother",
+                 io::Range::closed(1, 10));
+  io::declareInt(p, "Chebyshev eigenvalue iterations", 50,
+                 "power iterations estimating the largest eigenvalue: an underestimate makes the degree-6 "
+                 "smoother indefinite and breaks CG (20 did on the active-muscle block, 10 for nu >= 0.49 "
+                 "on the step-44 block; doc/incompressibility.md)", io::Range::closed(5, 200));
+  io::declareDouble(p, "Chebyshev eigenvalue ratio", 100.0, "",
+                    "lambda_max / lambda_min of the interval the Chebyshev smoother damps",
+                    io::Range::atLeast(2.0));
+  io::declareString(p, "MueLu reuse", "RP",
+                    "what MueLu keeps between Newton iterations: none (rebuild), RP (aggregates and "
+                    "transfer operators; coarse matrices and smoothers recomputed), RAP (also the "
+                    "coarse matrices and their smoothers and coarse solve, stale; only the finest "
+                    "smoother is rebuilt), full (the whole hierarchy, stale); the vertex-patch "
+                    "smoother always uses none (Ifpack2 13.2's overlapping block relaxation returns "
+                    "NaN when reused; it runs on one rank only)",
+                    {"none", "RP", "RAP", "full"});
+  io::declareString(p, "MueLu reuse scope", "Newton solve",
+                    "how long a reused hierarchy lives: Newton solve (rebuilt at the start of every "
+                    "Newton solve, i.e. every Uzawa iteration and load step) or run (kept across "
+                    "Uzawa iterations and load steps; only with MueLu reuse = RP, RAP or full)",
+                    {"Newton solve", "run"});
+  io::declareInt(p, "coarse size", 2000, "MueLu stops coarsening below this many rows", io::Range::atLeast(10));
+  io::declareString(p, "Ifpack2 type", "symmetric Gauss-Seidel",
+                    "single-level preconditioner when preconditioner = Ifpack2",
+                    {"symmetric Gauss-Seidel", "Chebyshev", "ILUT"});
+  io::declareBool(p, "verbose", false, "print the Krylov solver's convergence history");
+  return p;
+}
+
+LinearSolverParameters parseLinearSolverParameters(const Teuchos::ParameterList &s) {
+  LinearSolverParameters p;
+  const std::string type = s.get<std::string>("type");
+  p.type = type == "direct" ? LinearSolverType::direct : type == "iterative" ? LinearSolverType::iterative : LinearSolverType::automatic;
+  p.directSolverName = s.get<std::string>("direct solver");
+  p.directSolver = p.directSolverName == "KLU2" ? DirectSolver::klu2 : DirectSolver::mumps;
+  p.directUpTo = s.get<int>("direct up to");
+  p.directReuseIterations = s.get<int>("direct reuse iterations");
+  const std::string krylov = s.get<std::string>("Krylov method");
+  p.krylovMethod = krylov == "cg" ? KrylovMethod::cg : krylov == "gmres" ? KrylovMethod::gmres : KrylovMethod::automatic;
+  p.preconditionerName = s.get<std::string>("preconditioner");
+  const std::string &prec = p.preconditionerName;
+  p.preconditioner = prec == "FROSch"    ? Preconditioner::frosch
+                     : prec == "Ifpack2" ? Preconditioner::ifpack2
+                     : prec == "none"    ? Preconditioner::none
+                                         : Preconditioner::mueLu;
+  p.froschCoarseSpace = s.get<std::string>("FROSch coarse space") == "GDSW" ? FroschCoarseSpace::gdsw : FroschCoarseSpace::rgdsw;
+  p.froschOverlap = s.get<int>("FROSch overlap");
+  p.tolerance = s.get<double>("tolerance");
+  p.maximumIterations = s.get<int>("maximum iterations");
+  p.gmresRestart = s.get<int>("GMRES restart");
+  const std::string smoother = s.get<std::string>("MueLu smoother");
+  p.mueLuSmoother = smoother == "symmetric Gauss-Seidel"    ? MueLuSmoother::symmetricGaussSeidel
+                    : smoother == "node-block Gauss-Seidel" ? MueLuSmoother::nodeBlockGaussSeidel
+                    : smoother == "vertex-patch"            ? MueLuSmoother::vertexPatch
+                                                            : MueLuSmoother::chebyshev;
+  p.smootherDegree = s.get<int>("smoother degree");
+  p.vertexPatchLevels = s.get<std::string>("vertex-patch levels") == "all" ? VertexPatchLevels::all : VertexPatchLevels::finest;
+  p.patchSweeps = s.get<int>("patch sweeps");
+  p.chebyshevEigenvalueIterations = s.get<int>("Chebyshev eigenvalue iterations");
+  p.chebyshevEigenvalueRatio = s.get<double>("Chebyshev eigenvalue ratio");
+  p.mueLuReuse = s.get<std::string>("MueLu reuse");
+  p.keptForTheRun = s.get<std::string>("MueLu reuse scope") == "run";
+  p.coarseSize = s.get<int>("coarse size");
+  const std::string ifpack2 = s.get<std::string>("Ifpack2 type");
+  p.ifpack2Type = ifpack2 == "ILUT" ? Ifpack2Type::ilut : ifpack2 == "Chebyshev" ? Ifpack2Type::chebyshev : Ifpack2Type::symmetricGaussSeidel;
+  p.verbose = s.get<bool>("verbose");
+  return p;
+}
+
+} // namespace glossa::solvers

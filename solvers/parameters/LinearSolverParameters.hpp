@@ -1,0 +1,52 @@
+#pragma once
+// The deck's "Linear solver" section, declared and parsed once: the solver type, the Krylov
+// method and its limits, the preconditioner and each preconditioner's settings. Translated into
+// Stratimikos by solvers/LinearSolverFactory.
+
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace glossa::solvers {
+
+enum class LinearSolverType { automatic, iterative, direct };
+enum class DirectSolver { mumps, klu2 };
+enum class KrylovMethod { automatic, cg, gmres };
+enum class Preconditioner { mueLu, frosch, ifpack2, none };
+enum class MueLuSmoother { chebyshev, symmetricGaussSeidel, nodeBlockGaussSeidel, vertexPatch };
+enum class VertexPatchLevels { finest, all };
+enum class FroschCoarseSpace { gdsw, rgdsw };
+enum class Ifpack2Type { symmetricGaussSeidel, chebyshev, ilut };
+
+// The defaults are the declared ones (linearSolverParameters()).
+struct LinearSolverParameters {
+  LinearSolverType type = LinearSolverType::automatic;
+  DirectSolver directSolver = DirectSolver::mumps;
+  int directUpTo = 8000;
+  int directReuseIterations = 10;
+  KrylovMethod krylovMethod = KrylovMethod::automatic;
+  Preconditioner preconditioner = Preconditioner::mueLu;
+  FroschCoarseSpace froschCoarseSpace = FroschCoarseSpace::gdsw;
+  int froschOverlap = 1;
+  double tolerance = 1e-6;
+  int maximumIterations = 2000;
+  int gmresRestart = 200;
+  MueLuSmoother mueLuSmoother = MueLuSmoother::chebyshev;
+  int smootherDegree = 6;
+  VertexPatchLevels vertexPatchLevels = VertexPatchLevels::finest;
+  int patchSweeps = 1;
+  int chebyshevEigenvalueIterations = 50;
+  double chebyshevEigenvalueRatio = 100.0;
+  std::string mueLuReuse = "RP"; // MueLu's own "reuse: type" word, handed to it as it is
+  bool keptForTheRun = false;      // MueLu reuse scope = run: one solver object across Newton solves
+  int coarseSize = 2000;
+  Ifpack2Type ifpack2Type = Ifpack2Type::symmetricGaussSeidel;
+  bool verbose = false;
+  // The deck's words, for summary.json.
+  std::string directSolverName = "MUMPS", preconditionerName = "MueLu";
+};
+
+Teuchos::ParameterList linearSolverParameters();
+LinearSolverParameters parseLinearSolverParameters(const Teuchos::ParameterList &section);
+
+} // namespace glossa::solvers
