@@ -12,6 +12,7 @@
 #include "input/MaterialFactory.hpp"
 #include "model/MuscleHistory.hpp"
 #include "input/TimeFunctionParameters.hpp"
+#include "solvers/parameters/TimeParameters.hpp"
 #include "model/TimeFunction.hpp"
 
 namespace glossa::app {
@@ -111,8 +112,8 @@ private:
 } // namespace
 
 int runPointDriver(const io::Deck &deck, const std::filesystem::path &csv) {
-  const double endTime = deck.root().sublist("Time").get<double>("end time");
-  const double nominal = std::min(deck.root().sublist("Time").get<double>("step size"), endTime);
+  const solvers::StepSizeRule steps = solvers::parseTimeParameters(deck.root().sublist("Time")).steps;
+  const double endTime = steps.endTime, nominal = std::min(steps.nominal, endTime);
   // One element around the point carries the Material section's fibres (their direction fields
   // are evaluated at its centroid, the point's position).
   const Eigen::Vector3d x = vec3(deck.root().sublist("Point").get<Array<double>>("position"));

@@ -10,6 +10,7 @@
 #include "mesh/ReferenceCoordinates.hpp"
 #include "input/SceneFactory.hpp"
 #include "solvers/Simulation.hpp"
+#include "solvers/parameters/TimeParameters.hpp"
 
 namespace glossa::app {
 
@@ -91,9 +92,8 @@ io::Deck reversedGravity(const io::Deck &deck, double factor) {
 }
 
 // The zero-strain reference coordinates to `output` and its report beside it (.json). Rank 0.
-void writeZeroStrain(const io::Deck &deck, const ZeroStrainResult &result, const std::vector<Eigen::Vector3d> &X,
-                     const std::filesystem::path &output, bool quiet) {
-  const auto &z = deck.root().sublist("Zero strain");
+void writeZeroStrain(const io::Deck &deck, const ZeroStrainParameters &z, const ZeroStrainResult &result,
+                     const std::vector<Eigen::Vector3d> &X, const std::filesystem::path &output, bool quiet) {
   char line[256];
   std::snprintf(line, sizeof line, "under the deck's gravity: max |x - X_img| = %.6e m, mean %.6e m",
                 result.maxDistance, result.meanDistance);
@@ -110,10 +110,10 @@ void writeZeroStrain(const io::Deck &deck, const ZeroStrainResult &result, const
   report["iterations"] = result.iterations;
   report["solves"] = result.solves;
   report["mesh_size"] = result.meshSize;
-  if (result.method == "inverse")
+  if (z.method == ZeroStrainMethod::inverse)
     report["tolerance"] = result.tolerance;
   else
-    report["gravity_factor"] = z.get<double>("gravity factor");
+    report["gravity_factor"] = z.gravityFactor;
   report["max_distance"] = result.maxDistance;
   report["mean_distance"] = result.meanDistance;
   report["seconds"] = result.seconds;
@@ -148,20 +148,29 @@ Teuchos::ParameterList zeroStrainParameters() {
   return p;
 }
 
+ZeroStrainParameters parseZeroStrainParameters(const Teuchos::ParameterList &z) {
+  ZeroStrainParameters p;
+  p.method = z.get<std::string>("method") == "approximate" ? ZeroStrainMethod::approximate : ZeroStrainMethod::inverse;
+  p.gravityFactor = z.get<double>("gravity factor");
+  p.tolerance = z.get<double>("tolerance");
+  p.maximumIterations = z.get<int>("maximum iterations");
+  return p;
+}
+
 ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
                                    const std::filesystem::path &output, bool quiet) {
   const auto start = Clock::now();
   const bool root = comm->getRank() == 0;
-  const auto &D = deck.root();
-  const auto &z = D.sublist("Zero strain");
+  const ZeroStrainParameters z = parseZeroStrainParameters(deck.root().sublist("Zero strain"));
   requireImagedGeometryUnderGravity(deck);
 
   ZeroStrainResult result;
-  result.method = z.get<std::string>("method");
-  const mesh::HexMesh imaged = input::buildScene(deck, D.sublist("Time").get<double>("end time")).mesh;
+  result.method = z.method == ZeroStrainMethod::approximate ? "approximate" : "inverse";
+  const double endTime = solvers::parseTimeParameters(deck.root().sublist("Time")).steps.endTime;
+  const mesh::HexMesh imaged = input::buildScene(deck, endTime).mesh;
   const std::vector<Eigen::Vector3d> &Ximg = imaged.nodes;
   result.meshSize = meanEdgeLength(imaged);
-  result.tolerance = z.get<double>("tolerance") * result.meshSize;
+  result.tolerance = z.tolerance * result.meshSize;
   result.history = nlohmann::json::array();
 
   std::filesystem::path runs = output;
@@ -202,9 +211,9 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   };
 
   std::vector<Eigen::Vector3d> X = Ximg;
-  if (result.method == "approximate") {
+  if (z.method == ZeroStrainMethod::approximate) {
     // The deck's gravity reversed and scaled, on the imaged geometry.
-    const io::Deck unload = reversedGravity(deck, z.get<double>("gravity factor"));
+    const io::Deck unload = reversedGravity(deck, z.gravityFactor);
     const auto [x, seconds] = forward(unload, Ximg, "unload");
     record("unload", distance(x, Ximg), seconds);
     X = x;
@@ -216,7 +225,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
     result.maxDistance = d.max;
     result.meanDistance = d.mean;
   } else {
-    const int maxIterations = z.get<int>("maximum iterations");
+    const int maxIterations = z.maximumIterations;
     for (int k = 0;; ++k) {
       const auto [x, seconds] = forward(deck, X, "iteration_" + std::to_string(k));
       const Distance d = distance(x, Ximg);
@@ -236,7 +245,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   for (const auto &x : X)
     for (int c = 0; c < 3; ++c) result.reference.push_back(x(c));
 
-  if (root) writeZeroStrain(deck, result, X, output, quiet);
+  if (root) writeZeroStrain(deck, z, result, X, output, quiet);
   comm->barrier();
   return result;
 }

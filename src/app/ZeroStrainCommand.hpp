@@ -20,8 +20,17 @@
 
 namespace glossa::app {
 
-// The deck section "Zero strain" (method, tolerance, maximum iterations, gravity factor).
+// The deck section "Zero strain" (method, tolerance, maximum iterations, gravity factor),
+// declared and parsed once.
 Teuchos::ParameterList zeroStrainParameters();
+enum class ZeroStrainMethod { approximate, inverse };
+struct ZeroStrainParameters {
+  ZeroStrainMethod method = ZeroStrainMethod::inverse;
+  double gravityFactor = 1.2;    // approximate: the reversed gravity's multiple of the deck's
+  double tolerance = 1e-3;       // inverse: of the mean element edge
+  int maximumIterations = 10;    // inverse: reference updates
+};
+ZeroStrainParameters parseZeroStrainParameters(const Teuchos::ParameterList &section);
 
 struct ZeroStrainResult {
   std::string method;

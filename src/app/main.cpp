@@ -224,7 +224,8 @@ int main(int argc, char **argv) {
     if (a.command == "validate") {
       const auto deck = loadDeck(a, schema);
       // Building the scene checks what needs the mesh too (set names, named points).
-      const auto scene = glossa::input::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
+      const auto scene =
+          glossa::input::buildScene(deck, glossa::solvers::parseTimeParameters(deck.root().sublist("Time")).steps.endTime);
       if (root)
         for (const std::string &note : scene.meshNotes) std::fprintf(stderr, "glossa: note: %s\n", note.c_str());
       if (root) std::cout << deck.toXml();
