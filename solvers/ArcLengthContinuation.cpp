@@ -1,5 +1,6 @@
 #include "solvers/ArcLengthContinuation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Teuchos_oblackholestream.hpp>
@@ -53,9 +54,13 @@ private:
 // who records it and may end the path.
 class PointHandler : public LOCA::Thyra::SaveDataStrategy {
 public:
-  PointHandler(assembly::ModelEvaluator &model, CorrectorObserver &observer, const ArcLengthCallback &onPoint)
-      : model_(model), observer_(observer), onPoint_(onPoint) {}
+  PointHandler(assembly::ModelEvaluator &model, CorrectorObserver &observer, const ArcLengthCallback &onPoint,
+               const ArcLengthSettings &settings)
+      : model_(model), observer_(observer), onPoint_(onPoint), settings_(settings) {}
   void saveSolution(const NOX::Abstract::Vector &x, double p) override {
+    // Once the path has ended, LOCA may still try a last step towards its parameter bound
+    // (past a load maximum it fails): nothing after the end is the caller's.
+    if (stop) return;
     const RCP<const assembly::Vector> u = displacementOf(x);
     // The next corrector's three-field iterates start from the exact condensation here.
     model_.resetIterates(*u);
@@ -71,6 +76,11 @@ public:
     point.newtonIterations = observer_.newton;
     observer_.newton = 0;
     if (!onPoint_(point, *u)) stop = true;
+    // The path ends at the end time's load, or back at no load. LOCA caps its last step at the
+    // bound but may not stop there (measured: it turned and went back down the branch it came up).
+    const double near = 1e-6 * std::max(settings_.endTime, settings_.stepSize);
+    if (!stop && (p >= settings_.endTime - near || p <= near)) stop = true;
+    if (!stop && steps_ >= settings_.maximumSteps) stop = exhausted = true;
   }
   void preProcessContinuationStep(LOCA::Abstract::Iterator::StepStatus status) override {
     // A failed corrector left its iterates in the three-field bases: back to the last point.
@@ -79,7 +89,8 @@ public:
     MumpsPreconditionerFactory::beginNewtonSolve(); // for the predictor's solve
   }
   int steps() const { return std::max(steps_, 0); }
-  bool stop = false;
+  bool stop = false;      // the caller ended the path, or it took its steps
+  bool exhausted = false; // it took its steps
 
 private:
   assembly::ModelEvaluator &model_;
@@ -87,6 +98,7 @@ private:
   const ArcLengthCallback &onPoint_;
   RCP<assembly::Vector> last_;
   int steps_ = -1;
+  const ArcLengthSettings &settings_;
 };
 
 // Ends the path when the caller said so (LOCA asks after every step).
@@ -116,13 +128,10 @@ RCP<Teuchos::ParameterList> locaParameters(const ArcLengthSettings &s, const RCP
   stepper.set("Initial Value", s.startTime);
   stepper.set("Max Value", s.endTime);
   stepper.set("Min Value", 0.0);
-  stepper.set("Max Steps", s.maximumSteps);
+  stepper.set("Max Steps", 4 * s.maximumSteps); // a backstop: PointHandler counts the converged ones
   stepper.set("Max Nonlinear Iterations", s.maximumNewtonIterations);
   stepper.set("Compute Eigenvalues", false);
   stepper.set("Return Failed on Reaching Max Steps", true);
-  // Where the caller ends the path, it ends: no last natural-continuation step towards the
-  // end time (past a load maximum there is none).
-  stepper.set("Hit Continuation Bound", false);
   // Tangent: the predictor solves K du/dt = -df/dt (LOCA's finite difference in t at fixed u).
   params->sublist("LOCA").sublist("Predictor").set("Method", "Tangent");
   Teuchos::ParameterList &step = params->sublist("LOCA").sublist("Step Size");
@@ -159,7 +168,7 @@ ArcLengthOutcome followPath(const RCP<assembly::ModelEvaluator> &model, const as
   auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
   NOX::Thyra::Vector initialGuess(Thyra::createVector(RCP<assembly::Vector>(uCopy), model->get_x_space()));
   auto group = rcp(new LOCA::Thyra::Group(globalData, initialGuess, model, p, 0));
-  auto handler = rcp(new PointHandler(*model, *observer, onPoint));
+  auto handler = rcp(new PointHandler(*model, *observer, onPoint, settings));
   group->setSaveDataStrategy(handler);
 
   using namespace NOX::StatusTest;
@@ -174,12 +183,12 @@ ArcLengthOutcome followPath(const RCP<assembly::ModelEvaluator> &model, const as
   try {
     LOCA::Stepper stepper(globalData, group, rcp(new CallerStop(*handler)), tests, params);
     const LOCA::Abstract::Iterator::IteratorStatus status = stepper.run();
-    outcome.completed = status == LOCA::Abstract::Iterator::Finished || handler->stop;
-    if (!outcome.completed)
-      outcome.failure = handler->steps() >= settings.maximumSteps
-                            ? "the path took Time/arc length steps = " + std::to_string(settings.maximumSteps) +
-                                  " steps without reaching its end"
-                            : "LOCA's corrector failed below the minimum step size";
+    outcome.completed = (status == LOCA::Abstract::Iterator::Finished || handler->stop) && !handler->exhausted;
+    if (handler->exhausted)
+      outcome.failure = "the path took Time/arc length steps = " + std::to_string(settings.maximumSteps) +
+                        " steps without reaching its end";
+    else if (!outcome.completed)
+      outcome.failure = "LOCA's corrector failed below the minimum step size";
   } catch (const std::exception &e) {
     outcome.failure = std::string("arc-length continuation failed: ") + e.what();
   }
