@@ -146,10 +146,13 @@ RCP<Teuchos::ParameterList> locaParameters(const ArcLengthSettings &s, const RCP
   nox.sublist("Direction").sublist("Newton").sublist("Linear Solver").set("Tolerance", s.linearTolerance);
   nox.sublist("Printing").set("Output Information", NOX::Utils::Error);
   nox.sublist("Solver Options").set<RCP<NOX::Observer>>("User Defined Pre/Post Operator", observer);
-  // LOCA prints its status tests' verdict whatever the print level: the log is Glossa's.
+  // LOCA prints its status tests' verdict and step-size messages whatever the print level: the
+  // log is Glossa's.
   params->sublist("LOCA").sublist("Utilities").set("Output Information", 0);
   auto quiet = rcp(new Teuchos::oblackholestream);
   params->sublist("LOCA").sublist("Utilities").set<RCP<std::ostream>>("Output Stream", quiet);
+  // Its step-size messages too ("minimum step size bound"): Glossa names why a path ended.
+  params->sublist("LOCA").sublist("Utilities").set<RCP<std::ostream>>("Error Stream", quiet);
   nox.sublist("Printing").set<RCP<std::ostream>>("Output Stream", quiet);
   return params;
 }
