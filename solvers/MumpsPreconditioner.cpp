@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -44,6 +45,10 @@ public:
     id_.icntl[6] = 7;   // ICNTL(7): ordering chosen by MUMPS (METIS or SCOTCH here)
   }
   ~MumpsFactorization() {
+    // Ending the instance is collective (MUMPS frees the communicator it duplicated). While an
+    // exception unwinds on one rank the others are elsewhere, and it deadlocked: a deleted output
+    // directory on 2 ranks left both waiting until killed. The job is ending then: leave it.
+    if (std::uncaught_exceptions() > 0) return;
     id_.job = -2;
     dmumps_c(&id_);
   }
