@@ -93,15 +93,20 @@ void prepareOutputDirectory(const std::filesystem::path &dir) {
     std::filesystem::remove(dir / file);
 }
 
-// The mesh node with the largest |v| (gathered on every rank). Collective.
-std::size_t largestMotionNode(const assembly::Assembler &assembler, const assembly::Vector &v) {
+// The mesh node with the largest |v| and that |v| (gathered on every rank). Collective.
+struct LargestMotion {
+  std::size_t node = 0;
+  double norm = 0.0;
+};
+LargestMotion largestMotion(const assembly::Assembler &assembler, const assembly::Vector &v) {
   const std::vector<double> all = assembler.gatherDisplacement(v);
-  std::size_t best = 0;
+  LargestMotion best;
   double largest = -1.0;
   for (std::size_t n = 0; 3 * n + 2 < all.size(); ++n) {
     const double m = Eigen::Vector3d(all[3 * n], all[3 * n + 1], all[3 * n + 2]).squaredNorm();
-    if (m > largest) largest = m, best = n;
+    if (m > largest) largest = m, best.node = n;
   }
+  best.norm = std::sqrt(std::max(largest, 0.0));
   return best;
 }
 
@@ -864,7 +869,7 @@ bool Simulation::rollBack() {
     assembly::Vector motion(trial_->state.u, Teuchos::Copy);
     if (trial_->attempt.unstable) motion.update(-1.0, committed_->u, 1.0);
     else motion.assign(committed_->u);
-    limit_->refused(t_, trial_->time, trial_->attempt.unstable, largestMotionNode(*assembler_, motion));
+    limit_->refused(t_, trial_->time, trial_->attempt.unstable, largestMotion(*assembler_, motion).node);
   }
   const bool stepLeft = steps_->cutBack();
   if (limit_ && (limit_->located(steps_->stepSize()) || (!stepLeft && limit_->located(0.0)))) {
@@ -1084,10 +1089,7 @@ void Simulation::followArcLength() {
       doc_["load_maximum"] = {{"time", highest}, {"step", stepNumber_ - 1}};
       if (talk_) std::printf("  note: the path passed a load maximum near t = %.6g and follows the falling branch\n", highest);
     }
-    const std::vector<double> all = assembler_->gatherDisplacement(u);
-    double largest = 0.0;
-    for (std::size_t n = 0; 3 * n + 2 < all.size(); ++n)
-      largest = std::max(largest, Eigen::Vector3d(all[3 * n], all[3 * n + 1], all[3 * n + 2]).norm());
+    const double largest = largestMotion(*assembler_, u).norm;
     if (stopRequested()) return false;
     return !(settings.stopAtDisplacement > 0.0 && largest >= settings.stopAtDisplacement);
   };

@@ -103,10 +103,10 @@ public:
         Xf.row(k) = mesh.nodes[nodes[k]].transpose();
         uf.row(k) = target.displacement(nodes[k]).transpose();
       }
-      loads::FaceTangent Kf = loads::FaceTangent::Zero(); // read only with K
+      loads::FaceTangent Kf; // filled, and read, only with a tangent
       const loads::FaceForces ff =
           loads::followerPressureForces(Xf, uf, load_.pressure.atGaussPoints(Xf, time), target.K ? &Kf : nullptr);
-      target.subtract(nodes.data(), 4, ff.data(), Kf.data());
+      target.subtract(nodes.data(), 4, ff.data(), target.K ? Kf.data() : nullptr);
     }
     return true;
   }
