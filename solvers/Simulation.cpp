@@ -336,6 +336,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   steps_ = std::make_unique<StepSizeController>(time_.steps);
   scene_ = std::make_unique<model::Scene>(input::buildScene(deck, steps_->endTime()));
   model::Scene &scene = *scene_;
+  if (options.adjustScene) options.adjustScene(scene);
   // Each tissue's law stays the physical one for the Uzawa loop; the tangent gets its kappa_t.
   std::vector<materials::VolumetricEnergy> physicalVolumetric;
   for (auto &tissue : scene.tissues) {

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -73,6 +74,10 @@ struct RunOptions {
   // glossa run --restart DIR: continue the run whose output directory is DIR from its latest
   // checkpoint (the deck must be the one it was started with); empty: a new run.
   std::filesystem::path restartDirectory = {};
+  // If set, changes the scene built from the deck before anything else is set up (glossa
+  // zero-strain: the reference positions of an iterate, gravity reversed), so that a command
+  // driving runs needs no rewritten deck or intermediate file. The deck's checks have run.
+  std::function<void(model::Scene &)> adjustScene = {};
 };
 
 class Simulation {

@@ -8,7 +8,6 @@
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "io/output/RoundTripText.hpp"
-#include "mesh/BoxGenerator.hpp"
 #include "input/MaterialFactory.hpp"
 #include "model/MuscleHistory.hpp"
 #include "input/TimeFunctionParameters.hpp"
@@ -46,49 +45,40 @@ Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 // The path F(t) of the deck's Point section.
 class DeformationPath {
 public:
-  DeformationPath(const io::Deck &deck, double endTime) {
+  enum class Kind { uniaxial, simpleShear, table };
+
+  // Parses and checks the Point section (its only reader).
+  static DeformationPath fromDeck(const io::Deck &deck, double endTime) {
     const ParameterList &p = deck.root().sublist("Point");
-    kind_ = p.get<std::string>("path");
-    e_ = vec3(p.get<Array<double>>("direction"));
-    m_ = vec3(p.get<Array<double>>("shear plane normal"));
-    amplitude_ = p.get<double>("amplitude");
-    scale_ = input::parseTimeFunction(p.sublist("time function"), endTime);
-    if (!(e_.norm() > 0.0)) throw io::DeckError(deck.where({"Point", "direction"}) + " is zero");
-    e_.normalize();
-    if (kind_ == "simple shear") {
-      if (!(m_.norm() > 0.0) || std::abs(e_.dot(m_.normalized())) > 1e-12)
+    DeformationPath path;
+    const auto kind = p.get<std::string>("path");
+    path.kind_ = kind == "uniaxial" ? Kind::uniaxial : kind == "simple shear" ? Kind::simpleShear : Kind::table;
+    path.e_ = vec3(p.get<Array<double>>("direction"));
+    path.m_ = vec3(p.get<Array<double>>("shear plane normal"));
+    path.amplitude_ = p.get<double>("amplitude");
+    path.scale_ = input::parseTimeFunction(p.sublist("time function"), endTime);
+    path.position_ = vec3(p.get<Array<double>>("position"));
+    if (!(path.e_.norm() > 0.0)) throw io::DeckError(deck.where({"Point", "direction"}) + " is zero");
+    path.e_.normalize();
+    if (path.kind_ == Kind::simpleShear) {
+      if (!(path.m_.norm() > 0.0) || std::abs(path.e_.dot(path.m_.normalized())) > 1e-12)
         throw io::DeckError(deck.where({"Point", "shear plane normal"}) +
                             " must be non-zero and orthogonal to 'direction'");
-      m_.normalize();
+      path.m_.normalize();
     }
-    if (kind_ == "table") {
-      const auto &t = p.get<Array<double>>("times");
-      const auto &F = p.get<Array<double>>("F");
-      if (t.empty() || F.size() != 9 * t.size())
-        throw io::DeckError(deck.where({"Point", "F"}) + ": needs 9 values per entry of 'times' (" +
-                            std::to_string(t.size()) + " times, " + std::to_string(F.size()) + " values)");
-      for (Teuchos::Array<double>::size_type k = 0; k < t.size(); ++k) {
-        if (k > 0 && !(t[k] > t[k - 1]))
-          throw io::DeckError(deck.where({"Point", "times"}) + " must increase strictly");
-        Eigen::Matrix3d M;
-        for (int i = 0; i < 9; ++i) M(i / 3, i % 3) = F[9 * k + i];
-        if (!(M.determinant() > 0.0))
-          throw io::DeckError(deck.where({"Point", "F"}) + ": row " + std::to_string(k) + " has det F <= 0");
-        times_.push_back(t[k]);
-        table_.push_back(M);
-      }
-    }
+    if (path.kind_ == Kind::table) path.readTable(deck, p.get<Array<double>>("times"), p.get<Array<double>>("F"));
+    return path;
   }
 
-  double parameter(double t) const { return kind_ == "table" ? 0.0 : amplitude_ * scale_(t); }
+  double parameter(double t) const { return kind_ == Kind::table ? 0.0 : amplitude_ * scale_(t); }
 
   Eigen::Matrix3d operator()(double t) const {
-    if (kind_ == "uniaxial") {
+    if (kind_ == Kind::uniaxial) {
       const double lambda = 1.0 + parameter(t);
       const Eigen::Matrix3d ee = e_ * e_.transpose();
       return lambda * ee + (Eigen::Matrix3d::Identity() - ee) / std::sqrt(lambda);
     }
-    if (kind_ == "simple shear") return Eigen::Matrix3d::Identity() + parameter(t) * e_ * m_.transpose();
+    if (kind_ == Kind::simpleShear) return Eigen::Matrix3d::Identity() + parameter(t) * e_ * m_.transpose();
     if (t <= times_.front()) return table_.front();
     for (std::size_t k = 1; k < times_.size(); ++k)
       if (t <= times_[k]) {
@@ -99,10 +89,26 @@ public:
   }
 
   const Eigen::Vector3d &direction() const { return e_; }
+  const Eigen::Vector3d &position() const { return position_; }
 
 private:
-  std::string kind_;
-  Eigen::Vector3d e_, m_;
+  void readTable(const io::Deck &deck, const Array<double> &t, const Array<double> &F) {
+    if (t.empty() || F.size() != 9 * t.size())
+      throw io::DeckError(deck.where({"Point", "F"}) + ": needs 9 values per entry of 'times' (" +
+                          std::to_string(t.size()) + " times, " + std::to_string(F.size()) + " values)");
+    for (Teuchos::Array<double>::size_type k = 0; k < t.size(); ++k) {
+      if (k > 0 && !(t[k] > t[k - 1])) throw io::DeckError(deck.where({"Point", "times"}) + " must increase strictly");
+      Eigen::Matrix3d M;
+      for (int i = 0; i < 9; ++i) M(i / 3, i % 3) = F[9 * k + i];
+      if (!(M.determinant() > 0.0))
+        throw io::DeckError(deck.where({"Point", "F"}) + ": row " + std::to_string(k) + " has det F <= 0");
+      times_.push_back(t[k]);
+      table_.push_back(M);
+    }
+  }
+
+  Kind kind_ = Kind::uniaxial;
+  Eigen::Vector3d e_, m_, position_;
   double amplitude_ = 0.0;
   model::TimeFunction scale_ = model::TimeFunction::constant();
   std::vector<double> times_;
@@ -114,14 +120,10 @@ private:
 int runPointDriver(const io::Deck &deck, const std::filesystem::path &csv) {
   const solvers::StepSizeRule steps = solvers::parseTimeParameters(deck.root().sublist("Time")).steps;
   const double endTime = steps.endTime, nominal = std::min(steps.nominal, endTime);
-  // One element around the point carries the Material section's fibres (their direction fields
-  // are evaluated at its centroid, the point's position).
-  const Eigen::Vector3d x = vec3(deck.root().sublist("Point").get<Array<double>>("position"));
-  const double h = 1e-6;
-  const mesh::HexMesh cell = mesh::generateBox(x - Eigen::Vector3d::Constant(h / 2), Eigen::Vector3d::Constant(h), {1, 1, 1});
-  const input::BuiltMaterial material = input::buildMaterial(deck, cell, endTime);
+  const DeformationPath path = DeformationPath::fromDeck(deck, endTime);
+  // The Material section at the point (its fibre direction fields evaluated at the position).
+  const input::BuiltMaterial material = input::buildPointMaterial(deck, path.position(), endTime);
   const model::MuscleArchitecture &muscles = material.muscles;
-  const DeformationPath path(deck, endTime);
 
   model::MuscleHistory history(muscles, {0});
   const int region = muscles.hasFibres() ? muscles.elementRegion[0] : -1;

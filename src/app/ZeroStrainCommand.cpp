@@ -6,7 +6,6 @@
 
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
-#include "loads/BodyForce.hpp"
 #include "mesh/ReferenceCoordinates.hpp"
 #include "input/SceneFactory.hpp"
 #include "solvers/Simulation.hpp"
@@ -49,46 +48,22 @@ Distance distance(const std::vector<Eigen::Vector3d> &x, const std::vector<Eigen
 }
 
 // glossa zero-strain maps the mesh as read (the imaged geometry) under the deck's gravity alone.
-void requireImagedGeometryUnderGravity(const io::Deck &deck) {
-  const auto &D = deck.root();
-  if (!D.sublist("Mesh").get<std::string>("reference coordinates file").empty())
+void requireImagedGeometryUnderGravity(const io::Deck &deck, const model::Scene &imaged) {
+  if (!imaged.mesh.imagedNodes.empty())
     throw io::DeckError(
         deck.where({"Mesh", "reference coordinates file"}) +
         ": glossa zero-strain starts from the mesh as read (the imaged geometry); leave it empty");
-  const auto &loads = D.sublist("Loads");
-  int gravityLoads = 0;
-  for (auto it = loads.begin(); it != loads.end(); ++it) {
-    const std::string &name = loads.name(it);
-    if (loads.sublist(name).get<std::string>("type") != "gravity")
-      throw io::DeckError(deck.where({"Loads", name, "type"}) +
-                          ": glossa zero-strain needs a deck loaded by gravity "
-                          "alone (the configuration gravity maps onto the imaged geometry); '" +
-                          name + "' is a " + loads.sublist(name).get<std::string>("type") + " load");
-    ++gravityLoads;
-  }
-  if (gravityLoads == 0)
+  auto refuse = [&](const std::string &name, const std::string &kind) {
+    throw io::DeckError(deck.where({"Loads", name, "type"}) +
+                        ": glossa zero-strain needs a deck loaded by gravity alone (the configuration "
+                        "gravity maps onto the imaged geometry); '" + name + "' is a " + kind + " load");
+  };
+  for (const auto &l : imaged.tractions) refuse(l.name, "dead traction");
+  for (const auto &l : imaged.pressures) refuse(l.name, "follower pressure");
+  for (const auto &l : imaged.bodyForces)
+    if (!l.gravity) refuse(l.name, "body force");
+  if (imaged.bodyForces.empty())
     throw io::DeckError(deck.where({"Loads"}) + ": glossa zero-strain needs at least one gravity load");
-}
-
-// The deck with every gravity load reversed and scaled by `factor` (the paper's approximate
-// zero-strain configuration, §8.1).
-io::Deck reversedGravity(const io::Deck &deck, double factor) {
-  io::Deck unload = deck;
-  auto &L = unload.root().sublist("Loads");
-  for (auto it = L.begin(); it != L.end(); ++it) {
-    auto &l = L.sublist(L.name(it));
-    const std::string posture = l.get<std::string>("posture");
-    const double g = l.get<double>("g");
-    Eigen::Vector3d a = loads::postureGravity(posture == "custom" ? "upright" : posture, g);
-    if (posture == "custom") {
-      const auto &d = l.get<Teuchos::Array<double>>("direction");
-      a = g * Eigen::Vector3d(d[0], d[1], d[2]).normalized();  // non-zero: buildScene checked it
-    }
-    l.set("posture", std::string("custom"));
-    l.set("direction", Teuchos::Array<double>(std::vector<double>{-a.x(), -a.y(), -a.z()}));
-    l.set("g", factor * a.norm());
-  }
-  return unload;
 }
 
 // The zero-strain reference coordinates to `output` and its report beside it (.json). Rank 0.
@@ -162,14 +137,14 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   const auto start = Clock::now();
   const bool root = comm->getRank() == 0;
   const ZeroStrainParameters z = parseZeroStrainParameters(deck.root().sublist("Zero strain"));
-  requireImagedGeometryUnderGravity(deck);
 
   ZeroStrainResult result;
   result.method = z.method == ZeroStrainMethod::approximate ? "approximate" : "inverse";
   const double endTime = solvers::parseTimeParameters(deck.root().sublist("Time")).steps.endTime;
-  const mesh::HexMesh imaged = input::buildScene(deck, endTime).mesh;
-  const std::vector<Eigen::Vector3d> &Ximg = imaged.nodes;
-  result.meshSize = meanEdgeLength(imaged);
+  const model::Scene imaged = input::buildScene(deck, endTime);
+  requireImagedGeometryUnderGravity(deck, imaged);
+  const std::vector<Eigen::Vector3d> &Ximg = imaged.mesh.nodes;
+  result.meshSize = meanEdgeLength(imaged.mesh);
   result.tolerance = z.tolerance * result.meshSize;
   result.history = nlohmann::json::array();
 
@@ -179,22 +154,20 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   if (root) std::filesystem::create_directories(runs);
   comm->barrier();
 
-  // One run of `base` from the reference X: returns x = X + u at the end time.
-  auto forward = [&](const io::Deck &base, const std::vector<Eigen::Vector3d> &X, const std::string &label) {
+  // One run of the deck from the reference X, its gravity times `gravityFactor`: x = X + u at the
+  // end time. The scene is the deck's with these two changes (RunOptions::adjustScene).
+  auto forward = [&](const std::vector<Eigen::Vector3d> &X, double gravityFactor, const std::string &label) {
     const auto t0 = Clock::now();
-    const std::filesystem::path file = std::filesystem::absolute(runs / (label + "_reference.txt"));
-    if (root)
-      mesh::writeReferenceCoordinates(file.string(), X,
-                                      {"glossa zero-strain: the reference of run " + label});
-    comm->barrier();
-    io::Deck d = base;
-    d.root().sublist("Mesh").set("reference coordinates file", file.string());
     std::vector<double> u;
     solvers::RunOptions options;
     options.outputDirectory = runs / label;
     options.quiet = true;
     options.finalDisplacement = &u;
-    const auto summary = solvers::runSimulation(d, comm, options);
+    options.adjustScene = [&](model::Scene &scene) {
+      model::useReferenceNodes(scene, X);
+      for (auto &gravity : scene.bodyForces) gravity.acceleration *= gravityFactor;
+    };
+    const auto summary = solvers::runSimulation(deck, comm, options);
     if (!summary.value("converged", false))
       throw std::runtime_error("glossa zero-strain: the forward run " + label + " did not converge (" +
                                summary.value("failure", std::string("no reason given")) + "); results in " +
@@ -213,11 +186,10 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   std::vector<Eigen::Vector3d> X = Ximg;
   if (z.method == ZeroStrainMethod::approximate) {
     // The deck's gravity reversed and scaled, on the imaged geometry.
-    const io::Deck unload = reversedGravity(deck, z.gravityFactor);
-    const auto [x, seconds] = forward(unload, Ximg, "unload");
+    const auto [x, seconds] = forward(Ximg, -z.gravityFactor, "unload");
     record("unload", distance(x, Ximg), seconds);
     X = x;
-    const auto [xg, checkSeconds] = forward(deck, X, "check");
+    const auto [xg, checkSeconds] = forward(X, 1.0, "check");
     const Distance d = distance(xg, Ximg);
     record("check", d, checkSeconds);
     result.iterations = 1;
@@ -227,7 +199,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   } else {
     const int maxIterations = z.maximumIterations;
     for (int k = 0;; ++k) {
-      const auto [x, seconds] = forward(deck, X, "iteration_" + std::to_string(k));
+      const auto [x, seconds] = forward(X, 1.0, "iteration_" + std::to_string(k));
       const Distance d = distance(x, Ximg);
       record("iteration_" + std::to_string(k), d, seconds);
       result.maxDistance = d.max;

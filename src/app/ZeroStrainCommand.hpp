@@ -6,8 +6,9 @@
 //  inverse:    the fixed point X_{k+1} = X_k + (X_img - x(X_k)), X_0 = X_img, x(X_k) = X_k + u
 //              the configuration the deck's gravity produces from the reference X_k, until
 //              max_n |x(X_k) - X_img| <= tolerance h (h the mean element edge of X_img).
-// Every solve is the deck's own run (solvers::runSimulation) with Mesh/reference coordinates file
-// pointing at the current iterate: no solver set-up is duplicated here.
+// Every solve is the deck's own run (solvers::runSimulation) with its scene adjusted
+// (RunOptions::adjustScene: the current iterate as reference positions, the gravity reversed for
+// approximate): no solver set-up is duplicated here and no deck is rewritten.
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>

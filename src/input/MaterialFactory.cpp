@@ -141,6 +141,40 @@ FamilySpec readFamily(const io::Deck &deck, const mesh::HexMesh &m, const std::s
   return spec;
 }
 
+// One family at a single material point (glossa point): every family acts there, pointing as its
+// field gives at `x`; fields sampled from a mesh (polylines, file) and element sets are refused.
+FamilySpec readPointFamily(const io::Deck &deck, const std::string &name, const MuscleArchitecture &muscles,
+                           const Eigen::Vector3d &x) {
+  const ParameterList &f = deck.root().sublist("Material").sublist("Fibre families").sublist(name);
+  const std::vector<std::string> here{"Material", "Fibre families", name};
+  auto at = [&](const char *parameter) {
+    auto where = here;
+    where.emplace_back(parameter);
+    return where;
+  };
+  if (!f.get<std::string>("element set").empty())
+    throw io::DeckError(deck.where(at("element set")) +
+                        ": glossa point evaluates one material point, which lies in no element set; leave it empty");
+  FamilySpec spec;
+  spec.name = name;
+  spec.elements = {0};
+  spec.group = muscleGroupAt(deck, muscles, at("muscle group"), false);
+  const auto field = f.get<std::string>("direction field");
+  try {
+    if (field == "constant")
+      spec.directions = constantDirections(vec3(f.get<Array<double>>("direction")), 1);
+    else if (field == "radial fan")
+      spec.directions = {radialFanDirection(x, vec3(f.get<Array<double>>("fan centre")),
+                                            vec3(f.get<Array<double>>("fan plane normal")))};
+    else
+      throw io::DeckError(deck.where(at("direction field")) + ": '" + field +
+                          "' is sampled from a mesh; glossa point takes constant or radial fan");
+  } catch (const std::invalid_argument &e) {
+    throw io::DeckError(deck.where(at("direction field")) + ": " + e.what());
+  }
+  return spec;
+}
+
 MuscleGroup readGroup(const io::Deck &deck, const std::string &name, double endTime) {
   const ParameterList &g = deck.root().sublist("Material").sublist("Muscle groups").sublist(name);
   MuscleGroup group;
@@ -360,6 +394,83 @@ ParameterList tissueParameters() {
   return t;
 }
 
+// Per element (of `numElements`): the families present, in deck order, their directions, and the
+// region (tissue and families) whose point law they share (eq. 14's rule of mixtures: the
+// total fibre fraction divided evenly among the families present).
+void assignFibreRegions(const io::Deck &deck, const std::vector<FamilySpec> &families, std::size_t numElements,
+                        BuiltMaterial &built) {
+  const ParameterList &mat = deck.root().sublist("Material");
+  MuscleArchitecture &muscles = built.muscles;
+  const ParameterList &law = mat.sublist("Fibre law");
+  const auto form = materials::matrixStressFormFromName(law.get<std::string>("stress form"));
+  built.symmetricTangent = families.empty() || form != materials::MatrixStressForm::FibreDirectionRemoved;
+  if (!families.empty()) {
+    // Per element: the families present (in deck order) and their directions.
+    std::vector<std::vector<int>> present(numElements);
+    std::vector<std::vector<Eigen::Vector3d>> directions(numElements);
+    std::vector<std::vector<PointDirections>> pointDirections(numElements);
+    const bool perPoint = std::any_of(families.begin(), families.end(),
+                                      [](const FamilySpec &f) { return !f.pointDirections.empty(); });
+    for (std::size_t f = 0; f < families.size(); ++f)
+      for (std::size_t k = 0; k < families[f].elements.size(); ++k) {
+        const auto e = static_cast<std::size_t>(families[f].elements[k]);
+        present[e].push_back(static_cast<int>(f));
+        directions[e].push_back(families[f].directions[k]);
+        if (!perPoint) continue;
+        PointDirections N;
+        if (families[f].pointDirections.empty())
+          N.fill(families[f].directions[k]);
+        else
+          N = families[f].pointDirections[k];
+        pointDirections[e].push_back(N);
+      }
+    const double total = law.get<double>("total fibre fraction");
+    auto hill = [&](int group) { return hillFibre(mat, muscles, group); };
+    // A region: the families present and the tissue whose matrix they reinforce.
+    std::map<std::pair<int, std::vector<int>>, int> regionOf;
+    muscles.elementRegion.assign(numElements, -1);
+    muscles.directions.resize(numElements);
+    if (perPoint) muscles.pointDirections.resize(numElements);
+    for (std::size_t e = 0; e < numElements; ++e) {
+      if (present[e].empty()) continue;
+      // The point law holds a fixed number of families; the deck may declare more, as long as
+      // no element carries more than that many (the tongue: 21 bundles, at most 3 per element).
+      if (present[e].size() > static_cast<std::size_t>(materials::kMaxFibreFamilies)) {
+        std::string names;
+        for (int f : present[e]) names += (names.empty() ? "" : ", ") + families[f].name;
+        throw io::DeckError(deck.where({"Material", "Fibre families"}) + ": element " + std::to_string(e) + " carries " +
+                            std::to_string(present[e].size()) + " fibre families (" + names + "); at most " +
+                            std::to_string(materials::kMaxFibreFamilies) + " per element");
+      }
+      const int tissue = built.elementTissue[e];
+      auto [it, inserted] = regionOf.emplace(std::pair{tissue, present[e]}, static_cast<int>(muscles.regions.size()));
+      if (inserted) {
+        FibreRegion region;
+        std::vector<materials::MuscleMaterial::Family> laws;
+        const double phi = total / static_cast<double>(present[e].size());
+        for (int f : present[e]) {
+          laws.push_back({materials::FibreFamily{Eigen::Vector3d::UnitX(), phi}, hill(families[f].group)});
+          region.familyGroup.push_back(families[f].group);
+          region.familyNames.push_back(families[f].name);
+        }
+        region.law = std::make_shared<materials::MuscleMaterial>(built.tissues[tissue].matrix, std::move(laws), form);
+        muscles.regions.push_back(std::move(region));
+      }
+      muscles.elementRegion[e] = it->second;
+      materials::FamilyDirections N(3, static_cast<Eigen::Index>(present[e].size()));
+      for (std::size_t k = 0; k < present[e].size(); ++k) N.col(static_cast<Eigen::Index>(k)) = directions[e][k];
+      muscles.directions[e] = N;
+      if (perPoint)
+        for (std::size_t q = 0; q < 8; ++q) {
+          materials::FamilyDirections Nq(3, static_cast<Eigen::Index>(present[e].size()));
+          for (std::size_t k = 0; k < present[e].size(); ++k) Nq.col(static_cast<Eigen::Index>(k)) = pointDirections[e][k][q];
+          muscles.pointDirections[e][q] = Nq;
+        }
+    }
+  }
+
+}
+
 } // namespace
 
 ParameterList materialParameters() {
@@ -441,75 +552,29 @@ BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &m, double
   for (auto it = externals.begin(); it != externals.end(); ++it)
     muscles.external.push_back(readExternalMuscle(deck, m, externals.name(it), muscles));
 
-  const ParameterList &law = mat.sublist("Fibre law");
-  const auto form = materials::matrixStressFormFromName(law.get<std::string>("stress form"));
-  built.symmetricTangent = families.empty() || form != materials::MatrixStressForm::FibreDirectionRemoved;
-  if (!families.empty()) {
-    // Per element: the families present (in deck order) and their directions.
-    std::vector<std::vector<int>> present(m.numElements());
-    std::vector<std::vector<Eigen::Vector3d>> directions(m.numElements());
-    std::vector<std::vector<PointDirections>> pointDirections(m.numElements());
-    const bool perPoint = std::any_of(families.begin(), families.end(),
-                                      [](const FamilySpec &f) { return !f.pointDirections.empty(); });
-    for (std::size_t f = 0; f < families.size(); ++f)
-      for (std::size_t k = 0; k < families[f].elements.size(); ++k) {
-        const auto e = static_cast<std::size_t>(families[f].elements[k]);
-        present[e].push_back(static_cast<int>(f));
-        directions[e].push_back(families[f].directions[k]);
-        if (!perPoint) continue;
-        PointDirections N;
-        if (families[f].pointDirections.empty())
-          N.fill(families[f].directions[k]);
-        else
-          N = families[f].pointDirections[k];
-        pointDirections[e].push_back(N);
-      }
-    const double total = law.get<double>("total fibre fraction");
-    auto hill = [&](int group) { return hillFibre(mat, muscles, group); };
-    // A region: the families present and the tissue whose matrix they reinforce.
-    std::map<std::pair<int, std::vector<int>>, int> regionOf;
-    muscles.elementRegion.assign(m.numElements(), -1);
-    muscles.directions.resize(m.numElements());
-    if (perPoint) muscles.pointDirections.resize(m.numElements());
-    for (std::size_t e = 0; e < m.numElements(); ++e) {
-      if (present[e].empty()) continue;
-      // The point law holds a fixed number of families; the deck may declare more, as long as
-      // no element carries more than that many (the tongue: 21 bundles, at most 3 per element).
-      if (present[e].size() > static_cast<std::size_t>(materials::kMaxFibreFamilies)) {
-        std::string names;
-        for (int f : present[e]) names += (names.empty() ? "" : ", ") + families[f].name;
-        throw io::DeckError(deck.where({"Material", "Fibre families"}) + ": element " + std::to_string(e) + " carries " +
-                            std::to_string(present[e].size()) + " fibre families (" + names + "); at most " +
-                            std::to_string(materials::kMaxFibreFamilies) + " per element");
-      }
-      const int tissue = built.elementTissue[e];
-      auto [it, inserted] = regionOf.emplace(std::pair{tissue, present[e]}, static_cast<int>(muscles.regions.size()));
-      if (inserted) {
-        FibreRegion region;
-        std::vector<materials::MuscleMaterial::Family> laws;
-        const double phi = total / static_cast<double>(present[e].size());
-        for (int f : present[e]) {
-          laws.push_back({materials::FibreFamily{Eigen::Vector3d::UnitX(), phi}, hill(families[f].group)});
-          region.familyGroup.push_back(families[f].group);
-          region.familyNames.push_back(families[f].name);
-        }
-        region.law = std::make_shared<materials::MuscleMaterial>(built.tissues[tissue].matrix, std::move(laws), form);
-        muscles.regions.push_back(std::move(region));
-      }
-      muscles.elementRegion[e] = it->second;
-      materials::FamilyDirections N(3, static_cast<Eigen::Index>(present[e].size()));
-      for (std::size_t k = 0; k < present[e].size(); ++k) N.col(static_cast<Eigen::Index>(k)) = directions[e][k];
-      muscles.directions[e] = N;
-      if (perPoint)
-        for (std::size_t q = 0; q < 8; ++q) {
-          materials::FamilyDirections Nq(3, static_cast<Eigen::Index>(present[e].size()));
-          for (std::size_t k = 0; k < present[e].size(); ++k) Nq.col(static_cast<Eigen::Index>(k)) = pointDirections[e][k][q];
-          muscles.pointDirections[e][q] = Nq;
-        }
-    }
-  }
-
+  assignFibreRegions(deck, families, m.numElements(), built);
   built.plainQ1 = mat.get<std::string>("element") == "Q1";
+  return built;
+}
+
+BuiltMaterial buildPointMaterial(const io::Deck &deck, const Eigen::Vector3d &x, double endTime) {
+  const ParameterList &mat = deck.root().sublist("Material");
+  for (const char *section : {"Tissues", "External muscles"})
+    if (mat.sublist(section).numParams() > 0)
+      throw io::DeckError(deck.where({"Material", section}) +
+                          ": glossa point evaluates the Material section's own law at one point; " +
+                          "leave this section empty");
+  BuiltMaterial built;
+  built.tissues.push_back(buildTissue(deck, {"Material"}, mat, "Material"));
+  built.elementTissue.assign(1, 0);
+  MuscleArchitecture &muscles = built.muscles;
+  const ParameterList &groups = mat.sublist("Muscle groups");
+  for (auto it = groups.begin(); it != groups.end(); ++it) muscles.groups.push_back(readGroup(deck, groups.name(it), endTime));
+  const ParameterList &fibres = mat.sublist("Fibre families");
+  std::vector<FamilySpec> families;
+  for (auto it = fibres.begin(); it != fibres.end(); ++it)
+    families.push_back(readPointFamily(deck, fibres.name(it), muscles, x));
+  assignFibreRegions(deck, families, 1, built);
   return built;
 }
 

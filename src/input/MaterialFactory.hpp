@@ -34,4 +34,10 @@ struct BuiltMaterial {
 // fibre direction fields refer to `mesh`; `endTime` scales default ramps of the neural inputs.
 BuiltMaterial buildMaterial(const io::Deck &deck, const mesh::HexMesh &mesh, double endTime);
 
+// The material at one point `x` (glossa point), no mesh needed: the Material section's law and
+// every fibre family, directed as its field gives at x, as a material of one "element" (index 0).
+// A deck with Tissues, External muscles, a family on an element set or a direction field sampled
+// from a mesh (polylines, file) is refused with a DeckError naming the parameter.
+BuiltMaterial buildPointMaterial(const io::Deck &deck, const Eigen::Vector3d &x, double endTime);
+
 } // namespace glossa::input

@@ -316,25 +316,16 @@ TimeFunction timeFunction(const io::Deck &deck, const std::vector<std::string> &
 // Mesh/reference coordinates file (§8.1): the zero-strain configuration replaces the node
 // positions after everything that selects by geometry (face sets by box and normal, named points,
 // fibre directions from the polylines) has been done on the mesh as read: those are labels of the
-// imaged anatomy. Named points move with their nodes.
-void replaceReferenceCoordinates(const io::Deck &deck, mesh::HexMesh &m) {
+// imaged anatomy (model::useReferenceNodes).
+void replaceReferenceCoordinates(const io::Deck &deck, Scene &scene) {
   const std::string file = deck.root().sublist("Mesh").get<std::string>("reference coordinates file");
   if (file.empty()) return;
   std::filesystem::path q(file);
   if (q.is_relative()) q = std::filesystem::path(deck.file()).parent_path() / q;
   try {
-    m.imagedNodes = m.nodes;
-    m.nodes = mesh::readReferenceCoordinates(q.string(), m.numNodes());
+    useReferenceNodes(scene, mesh::readReferenceCoordinates(q.string(), scene.mesh.numNodes()));
   } catch (const std::runtime_error &e) {
     throw io::DeckError(deck.where({"Mesh", "reference coordinates file"}) + ": " + e.what());
-  }
-  for (auto &[name, point] : m.namedPoints) {
-    if (!point.probe()) {
-      point.position = m.nodes[point.node];
-      continue;
-    }
-    point.position.setZero(); // the same local coordinates in the element's new shape
-    for (const auto &[n, w] : point.weights) point.position += w * m.nodes[n];
   }
 }
 
@@ -459,6 +450,7 @@ void buildLoads(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Sc
       } else {
         body.acceleration = loads::postureGravity(posture, g);
       }
+      body.gravity = type == "gravity";
       body.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
       scene.bodyForces.push_back(std::move(body));
       continue;
@@ -528,10 +520,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
   if (scene.tracedPoints.empty())
     scene.meshNotes.push_back("no named points: traces.csv and final_displacement will be empty; name points "
                               "in the deck's 'Named points' (any position inside the mesh) to trace them");
-  replaceReferenceCoordinates(deck, m);
-  // External muscles keep their bony origins; their insertions are the nodes' reference positions.
-  for (auto &muscle : scene.muscles.external)
-    for (std::size_t i = 0; i < muscle.nodes.size(); ++i) muscle.fibres[i].insertion = m.nodes[muscle.nodes[i]];
+  replaceReferenceCoordinates(deck, scene);
   checkScene(deck, scene);
   return scene;
 }

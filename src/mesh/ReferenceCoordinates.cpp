@@ -78,4 +78,20 @@ void writeReferenceCoordinates(const std::string &path, const std::vector<Eigen:
   if (std::fclose(f) != 0) throw io::OutputError(path + ": error writing the reference coordinates file");
 }
 
+void replaceReferenceNodes(HexMesh &m, std::vector<Eigen::Vector3d> reference) {
+  if (reference.size() != m.numNodes())
+    throw std::invalid_argument("replaceReferenceNodes: " + std::to_string(reference.size()) + " positions for " +
+                                std::to_string(m.numNodes()) + " nodes");
+  if (m.imagedNodes.empty()) m.imagedNodes = m.nodes;
+  m.nodes = std::move(reference);
+  for (auto &[name, point] : m.namedPoints) {
+    if (!point.probe()) {
+      point.position = m.nodes[point.node];
+      continue;
+    }
+    point.position.setZero();
+    for (const auto &[n, w] : point.weights) point.position += w * m.nodes[n];
+  }
+}
+
 }  // namespace glossa::mesh

@@ -13,7 +13,15 @@
 #include <string>
 #include <vector>
 
+#include "mesh/HexMesh.hpp"
+
 namespace glossa::mesh {
+
+// Makes `reference` the mesh's node positions and keeps the positions as they were (the imaged
+// geometry) in imagedNodes. Everything selected by geometry (face sets, named points, fibre
+// directions) stays a label of the imaged anatomy; named points move with their nodes (a probe
+// keeps its local coordinates in its element's new shape). `reference` has one entry per node.
+void replaceReferenceNodes(HexMesh &m, std::vector<Eigen::Vector3d> reference);
 
 // Reads the file for a mesh of `numNodes` nodes. Throws std::runtime_error with "FILE:LINE:"
 // for a malformed line, a node index out of range, a repeated node or a non-finite value, and

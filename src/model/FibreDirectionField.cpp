@@ -25,22 +25,29 @@ std::vector<Eigen::Vector3d> constantDirections(const Eigen::Vector3d &direction
   return std::vector<Eigen::Vector3d>(count, direction.normalized());
 }
 
+Eigen::Vector3d radialFanDirection(const Eigen::Vector3d &x, const Eigen::Vector3d &centre,
+                                   const Eigen::Vector3d &planeNormal) {
+  const bool inPlane = planeNormal.norm() > 0.0;
+  Eigen::Vector3d d = x - centre;
+  if (inPlane) d -= d.dot(planeNormal.normalized()) * planeNormal.normalized();
+  // A point closer to the centre than 1e-9 of its distance scale has no radial direction.
+  if (!(d.norm() > 1e-9 * std::max(x.norm(), centre.norm())))
+    throw std::invalid_argument(describe(x) + " lies on the fan's centre" + (inPlane ? " line" : "") +
+                                ": its radial direction is undefined");
+  return d.normalized();
+}
+
 std::vector<Eigen::Vector3d> radialFanDirections(const mesh::HexMesh &mesh, const std::vector<mesh::ElementId> &elements,
                                                  const Eigen::Vector3d &centre, const Eigen::Vector3d &planeNormal) {
-  const bool inPlane = planeNormal.norm() > 0.0;
-  const Eigen::Vector3d n = inPlane ? planeNormal.normalized() : Eigen::Vector3d::Zero();
   std::vector<Eigen::Vector3d> out;
   out.reserve(elements.size());
   for (const auto e : elements) {
     const Eigen::Vector3d centroid = mesh.elementCoordinates(e).colwise().mean().transpose();
-    Eigen::Vector3d d = centroid - centre;
-    if (inPlane) d -= d.dot(n) * n;
-    // A centroid closer to the centre than 1e-9 of its distance scale has no radial direction.
-    if (!(d.norm() > 1e-9 * std::max(centroid.norm(), centre.norm())))
-      throw std::invalid_argument("element " + std::to_string(e) + " (centroid " + describe(centroid) +
-                                  ") lies on the fan's centre" + (inPlane ? " line" : "") +
-                                  ": its radial direction is undefined");
-    out.push_back(d.normalized());
+    try {
+      out.push_back(radialFanDirection(centroid, centre, planeNormal));
+    } catch (const std::invalid_argument &why) {
+      throw std::invalid_argument("element " + std::to_string(e) + ", centroid " + why.what());
+    }
   }
   return out;
 }

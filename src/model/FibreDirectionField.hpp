@@ -19,6 +19,12 @@ namespace glossa::model {
 // Throws std::invalid_argument for a zero direction.
 std::vector<Eigen::Vector3d> constantDirections(const Eigen::Vector3d &direction, std::size_t count);
 
+// The unit vector from `centre` to the point x, with its component along `planeNormal` removed
+// when planeNormal is not zero (a fan lying in that plane). Throws std::invalid_argument when it
+// is zero (x on the fan's centre or centre line).
+Eigen::Vector3d radialFanDirection(const Eigen::Vector3d &x, const Eigen::Vector3d &centre,
+                                   const Eigen::Vector3d &planeNormal);
+
 // N_e = the unit vector from `centre` to the centroid of element e, with its component along
 // `planeNormal` removed when planeNormal is not zero (a fan lying in that plane). Throws
 // std::invalid_argument naming the element when the result is zero.

@@ -65,6 +65,7 @@ struct BodyForceLoad {
   std::string name;
   std::vector<mesh::ElementId> elements; // sorted
   Eigen::Vector3d acceleration = Eigen::Vector3d::Zero(); // [m/s^2]
+  bool gravity = false; // Loads/type = gravity (not a general body force): glossa zero-strain's load
   TimeFunction scale = TimeFunction::constant();
 };
 
@@ -102,5 +103,10 @@ struct Scene {
     return tissues[elementTissue.empty() ? 0 : static_cast<std::size_t>(elementTissue[element])];
   }
 };
+
+// Makes `reference` the scene's reference node positions (a zero-strain configuration, §8.1): the
+// mesh keeps the positions it had as the imaged geometry (mesh::replaceReferenceNodes) and the
+// external muscles' insertions move with their nodes, while their bony origins stay.
+void useReferenceNodes(Scene &scene, std::vector<Eigen::Vector3d> reference);
 
 } // namespace glossa::model

@@ -106,3 +106,26 @@ TEST(PointDriver, TableOfTheWrongSizeIsADeckError) {
         << e.what();
   }
 }
+
+// The point's material needs no mesh: a radial fan is evaluated at the point's position. With the
+// fan's centre at the origin and the point on the y axis, the fibre is along y, across a uniaxial
+// stretch lambda along x: lambda_f = 1 / sqrt(lambda) (incompressible, transversely isotropic).
+TEST(PointDriver, RadialFanIsEvaluatedAtThePointsPosition) {
+  const auto t = runPoint({"Material/Fibre families/axial/direction field=radial fan",
+                           "Material/Fibre families/axial/fan centre=0,0,0", "Point/position=0,0.01,0"},
+                          "fan");
+  ASSERT_GT(t.size(), 2u);
+  for (const auto &row : t)
+    EXPECT_NEAR(row.at("lambda_f_axial"), 1.0 / std::sqrt(1.0 + row.at("path_parameter")), 1e-12);
+}
+
+TEST(PointDriver, DirectionFieldsSampledFromAMeshAreDeckErrors) {
+  try {
+    runPoint({"Material/Fibre families/axial/direction field=polylines"}, "polylines");
+    FAIL() << "expected a DeckError";
+  } catch (const io::DeckError &e) {
+    EXPECT_NE(std::string(e.what()).find("Material/Fibre families/axial/direction field"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("glossa point takes constant or radial fan"), std::string::npos) << e.what();
+  }
+}
