@@ -71,7 +71,9 @@ int main(int argc, char **argv) {
     io::Deck deck = io::Deck::fromFile(path);
     deck.validate(schema);
     const model::Scene scene = input::buildScene(deck, deck.root().sublist("Time").get<double>("end time"));
-    const assembly::Assembler assembler(scene, comm);
+    assembly::DofLayout layout = assembly::distributeScene(scene, comm);
+    const model::MuscleHistory history(scene.muscles, layout.localElements);
+    const assembly::Assembler assembler(scene, std::move(layout), history, comm);
     auto K = assembler.createMatrix();
     assembly::Vector u(assembler.ownedMap()), f(assembler.ownedMap());
     {

@@ -1,42 +1,46 @@
 #include "solvers/ControlSensitivity.hpp"
 
+#include <Thyra_DetachedMultiVectorView.hpp>
+#include <Thyra_MultiVectorStdOps.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+
 namespace glossa::solvers {
 
-ControlPointSensitivity controlPointSensitivity(assembly::Assembler &assembler, const NewtonSolver &newton,
-                                                const assembly::Vector &u, const std::vector<double> &lambda,
-                                                double time, const std::vector<int> &groups,
-                                                const std::vector<mesh::NodeId> &points) {
-  model::MuscleHistory &history = assembler.muscleHistory();
+using Extract = Thyra::TpetraOperatorVectorExtraction<double, assembly::LO, assembly::GO, assembly::Node>;
+using MEB = Thyra::ModelEvaluatorBase;
+
+ControlPointSensitivity controlPointSensitivity(const NewtonSolver &newton, const assembly::Vector &u,
+                                                const std::vector<int> &groups) {
+  assembly::ModelEvaluator &model = newton.model();
+  const auto xSpace = model.get_x_space();
+  const auto ownedMap = u.getMap();
+  MEB::InArgs<double> in = model.getNominalValues();
+  in.set_x(Thyra::createConstVector<double, assembly::LO, assembly::GO, assembly::Node>(Teuchos::rcpFromRef(u), xSpace));
+  MEB::OutArgs<double> out = model.createOutArgs();
+  const auto dfdp = Thyra::createMembers(model.get_f_space(), model.get_p_space(assembly::ModelEvaluator::kNeuralInputs));
+  const auto dgdx = Thyra::createMembers(xSpace, model.get_g_space(0));
+  out.set_DfDp(assembly::ModelEvaluator::kNeuralInputs, MEB::Derivative<double>(dfdp, MEB::DERIV_MV_BY_COL));
+  out.set_DgDx(0, MEB::Derivative<double>(dgdx, MEB::DERIV_TRANS_MV_BY_ROW));
+  model.evalModel(in, out);
+
+  // W X = -DfDp for the columns asked.
   const auto n = groups.size();
-  assembly::MultiVector rhs(assembler.ownedMap(), n), x(assembler.ownedMap(), n);
-  // Step in alpha: truncation O(h^2) and round-off O(eps / h) of the residual's scale balance
-  // near 1e-5; one-sided three-point differences keep alpha inside [0, 1].
-  constexpr double h = 1e-5;
-  assembly::Vector f(assembler.ownedMap());
-  for (std::size_t j = 0; j < n; ++j) {
-    const int g = groups[j];
-    const double alpha = history.trialActivation()[g];
-    const double side = alpha + 2.0 * h <= 1.0 ? 1.0 : -1.0;
-    auto column = rhs.getVectorNonConst(j);
-    const double weights[3] = {-1.5, 2.0, -0.5}; // d/da at a of f(a), f(a + s h), f(a + 2 s h)
-    for (int k = 0; k < 3; ++k) {
-      history.setTrialActivation(g, alpha + side * k * h);
-      const auto status = assembler.assemble(u, time, lambda, nullptr, &f, nullptr);
-      if (!status.valid) throw std::runtime_error("sensitivity: the converged state is inadmissible");
-      column->update(-weights[k] * side / h * history.trialActivationInputDerivative(g), f, 1.0);
-    }
-    history.setTrialActivation(g, alpha);
-  }
-  ControlPointSensitivity out;
-  out.krylovIterations = newton.solveTangent(u, rhs, x);
-  out.dxdu.resize(3 * static_cast<Eigen::Index>(points.size()), static_cast<Eigen::Index>(n));
-  for (std::size_t j = 0; j < n; ++j) {
-    const std::vector<double> all = assembler.gatherDisplacement(*x.getVector(j));
-    for (std::size_t p = 0; p < points.size(); ++p)
-      for (int c = 0; c < 3; ++c)
-        out.dxdu(3 * static_cast<Eigen::Index>(p) + c, static_cast<Eigen::Index>(j)) = all[3 * points[p] + c];
-  }
-  return out;
+  const auto DfDp = Extract::getConstTpetraMultiVector(dfdp);
+  assembly::MultiVector rhs(ownedMap, n), x(ownedMap, n);
+  for (std::size_t j = 0; j < n; ++j)
+    rhs.getVectorNonConst(j)->update(-1.0, *DfDp->getVector(static_cast<std::size_t>(groups[j])), 0.0);
+  ControlPointSensitivity result;
+  result.krylovIterations = newton.solveTangent(u, rhs, x);
+
+  // dg/dp = DgDx^T X (gradient form: DgDx's columns are d g_i / dx).
+  const auto X = Thyra::createMultiVector<double, assembly::LO, assembly::GO, assembly::Node>(Teuchos::rcpFromRef(x), xSpace);
+  const auto S = Thyra::createMembers(dgdx->domain(), static_cast<int>(n));
+  Thyra::apply(*dgdx, Thyra::TRANS, *X, S.ptr());
+  const Thyra::ConstDetachedMultiVectorView<double> view(*S);
+  result.dxdu.resize(view.subDim(), static_cast<Eigen::Index>(n));
+  for (Thyra::Ordinal i = 0; i < view.subDim(); ++i)
+    for (std::size_t j = 0; j < n; ++j) result.dxdu(i, static_cast<Eigen::Index>(j)) = view(i, static_cast<Thyra::Ordinal>(j));
+  return result;
 }
 
 } // namespace glossa::solvers

@@ -41,6 +41,8 @@ public:
   int solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x) const;
 
   double relativeResidualTolerance() const { return parameters_.residualTolerance; }
+  // The model it solves: its nominal time and multipliers are those of the next solve.
+  assembly::ModelEvaluator &model() const { return *model_; }
 
 private:
   Teuchos::RCP<assembly::ModelEvaluator> model_;

@@ -29,6 +29,7 @@
 #include "solvers/CommControlGroups.hpp"
 #include "solvers/ControlDriver.hpp"
 #include "solvers/parameters/ControlSection.hpp"
+#include "assembly/MuscleResponse.hpp"
 #include "solvers/ControlSensitivity.hpp"
 #include "solvers/LimitPointMonitor.hpp"
 #include "solvers/LinearSolverFactory.hpp"
@@ -282,12 +283,10 @@ public:
   InputSensitivity sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) override {
     const Trial &trial = *sim_.trial_;
     sim_.applyControlInputs(inputs);
-    sim_.assembler_->muscleHistory().beginStep(trial.time, trial.dt);
+    sim_.muscleHistory_->beginStep(trial.time, trial.dt);
     sim_.model_->setTime(trial.time);
-    sim_.model_->setLambda(&kept_.lambda);
-    const auto s = controlPointSensitivity(*sim_.assembler_, *sim_.newton_, kept_.u, kept_.lambda, trial.time, groups,
-                                           sim_.control_->pointNodes);
-    sim_.model_->setLambda(nullptr);
+    sim_.model_->setMultipliers(kept_.lambda);
+    const auto s = controlPointSensitivity(*sim_.newton_, kept_.u, groups);
     return {s.dxdu, s.krylovIterations};
   }
 
@@ -309,8 +308,8 @@ public:
   // solve), then its state, become the trial's.
   void adoptKept(Trial &trial) {
     sim_.applyControlInputs(trial.control.inputs);
-    sim_.assembler_->muscleHistory().beginStep(trial.time, trial.dt);
-    trial.attempt.muscle = sim_.assembler_->updateMuscleHistory(kept_.u);
+    sim_.muscleHistory_->beginStep(trial.time, trial.dt);
+    trial.attempt.muscle = assembly::updateMuscleHistory(*sim_.assembler_, kept_.u, *sim_.muscleHistory_);
     trial.state.assign(kept_);
     trial.attempt.uzawa = trial.control.solve;
     trial.attempt.ok = true;
@@ -355,6 +354,10 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
                         ")");
   groups_ = std::make_unique<CommControlGroups>(comm, controlGroups);
 
+  // Neural control (issue 5): per step, the controller picks the inputs of the controlled
+  // groups that keep the control points at their goals (eq. 25), each candidate a full step
+  // solve from the committed state; the winner's state is committed.
+  control_ = std::make_unique<ControlSetup>(buildControl(deck, scene));
   buildSolvers(deck, physicalVolumetric);
 
   // Checked before the output directory is cleared: a bad deck leaves an earlier run intact.
@@ -386,10 +389,10 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   stepStart_ = std::make_unique<StepState>(*committed_);
   previous_ = std::make_unique<StepState>(*committed_);
   extrapolate_ = time_.predictor == Predictor::linearExtrapolation;
-  const assembly::MuscleFields initialMuscle = assembler_->updateMuscleHistory(committed_->u);
+  const assembly::MuscleFields initialMuscle = assembly::updateMuscleHistory(*assembler_, committed_->u, *muscleHistory_);
   std::vector<double> initialInputs;
   for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g)
-    initialInputs.push_back(assembler_->muscleHistory().input(static_cast<int>(g), 0.0));
+    initialInputs.push_back(muscleHistory_->input(static_cast<int>(g), 0.0));
   if (!restart) {
     recorder_->record(0.0, committed_->u, committed_->lambda, true, initialMuscle, initialInputs);
     writeSummary();
@@ -398,10 +401,6 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   installStopSignalHandlers();
   if (root_) onStopSignal([this](int signal) { writeInterruptedSummary(signal); });
 
-  // Neural control (issue 5): per step, the controller picks the inputs of the controlled
-  // groups that keep the control points at their goals (eq. 25), each candidate a full step
-  // solve from the committed state; the winner's state is committed.
-  control_ = std::make_unique<ControlSetup>(buildControl(deck, scene));
   if (controlGroups > 1 &&
       !(control_->enabled && control_->parameters.type == control::ControllerType::geneticAlgorithm))
     throw io::DeckError("--control-groups " + std::to_string(controlGroups) +
@@ -418,7 +417,9 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
   model::Scene &scene = *scene_;
   const double mu = scene.tissues[0].matrix->shearModulus();
   const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = groups_->groupComm();
-  assembler_ = Teuchos::rcp(new assembly::Assembler(scene, solverComm));
+  assembly::DofLayout layout = assembly::distributeScene(scene, solverComm);
+  muscleHistory_ = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
+  assembler_ = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *muscleHistory_, solverComm));
   LinearSolverContext context{assembler_->coordinates(), assembler_->rigidBodyModes(), solverComm->getSize(),
                               assembler_->layout().numGlobalDofs(), scene.symmetricTangent};
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
@@ -426,9 +427,11 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
     requireMixedCompatible(newtonParameters_, linear_, controlled_, scene);
     mixedPressure = Teuchos::rcp(new assembly::MixedPressureState(physicalVolumetric[0], mu));
   }
+  // The control points are the model's response (their sensitivities to the neural inputs).
   model_ = Teuchos::rcp(new assembly::ModelEvaluator(
       assembler_, mixedPressure.is_null() ? buildLinearSolver(linear_, context)
-                                          : buildMixedBlockSolver(linear_, context, mixedPressure)));
+                                          : buildMixedBlockSolver(linear_, context, mixedPressure),
+      muscleHistory_.get(), control_->enabled ? control_->pointNodes : std::vector<mesh::NodeId>{}));
   model_->setMixedPressure(mixedPressure);
   for (const auto &x : scene.mesh.nodes) lengthScale_ = std::max(lengthScale_, x.norm());
   planes_ = model::findSymmetryPlanes(scene.mesh, scene.dirichlet);
@@ -636,7 +639,7 @@ void Simulation::writeCheckpoint() {
     part["previous_u"] = ownedValues(previous_->u);
     part["previous_lambda"] = previous_->lambda;
   }
-  part["muscle"] = toJson(assembler_->muscleHistory().snapshot());
+  part["muscle"] = toJson(muscleHistory_->snapshot());
   if (root_) part["run"] = runState();
   // Published only once every rank's part is on disk; a rank that cannot write stops them all.
   std::string error;
@@ -684,7 +687,7 @@ void Simulation::restoreState(const Restart &restart) {
     assignOwnedValues(previous_->u, part.at("previous_u"), "previous displacement");
     previous_->lambda = elementValues(part.at("previous_lambda"), previous_->lambda.size(), "previous multipliers");
   }
-  assembler_->muscleHistory().restore(muscleSnapshotFromJson(part.at("muscle")));
+  muscleHistory_->restore(muscleSnapshotFromJson(part.at("muscle")));
   stepNumber_ = run.at("step").get<int>();
   t_ = run.at("time").get<double>();
   previousDt_ = run.at("previous_dt").get<double>();
@@ -723,8 +726,8 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
   Attempt out;
   assembler_->applyDirichlet(state.u, time);
   model_->setTime(time);
-  model_->setLambda(&state.lambda);
-  assembler_->muscleHistory().beginStep(time, dt); // trial activation; lambda_c stays at its committed value
+  model_->setMultipliers(state.lambda);
+  muscleHistory_->beginStep(time, dt); // trial activation; lambda_c stays at its committed value
 
   // The Newton tolerance scales with the load: the external force and the step's initial residual.
   assembly::Vector f0(assembler_->ownedMap());
@@ -744,9 +747,8 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
                   n.iterations, n.linearIterations, e.max, e.mean, e.maxVolumeChange);
   };
   out.uzawa = uzawa_->solve(state.u, state.lambda, tolerance, onNewton, onUzawa);
-  model_->setLambda(nullptr);
   // The history at the converged state: lambda_c of every point with this step's activation.
-  if (out.uzawa.converged) out.muscle = assembler_->updateMuscleHistory(state.u);
+  if (out.uzawa.converged) out.muscle = assembly::updateMuscleHistory(*assembler_, state.u, *muscleHistory_);
   // What the Gauss points cannot see: the smallest det F at the elements' corners, at all corners
   // and at regular ones. Reported per step (summary.json, and a note when a corner has turned
   // over), not refused: in the tongue scenes, whose Gauss points and answers are sound, corners
@@ -795,7 +797,7 @@ void Simulation::refuseInsideOut(const StepState &state, Attempt &attempt) const
 }
 
 void Simulation::applyControlInputs(const std::vector<double> &inputs) {
-  for (int g : control_->groups) assembler_->muscleHistory().overrideInput(g, inputs[g]);
+  for (int g : control_->groups) muscleHistory_->overrideInput(g, inputs[g]);
 }
 
 Eigen::Matrix3Xd Simulation::controlPointDisplacement(const StepState &state) const {
@@ -829,10 +831,9 @@ bool Simulation::attemptStep() {
 
 void Simulation::checkPathStiffness(Trial &trial) {
   model_->setTime(trial.time);
-  model_->setLambda(&trial.state.lambda);
+  model_->setMultipliers(trial.state.lambda);
   const PathStiffness measured =
       pathStiffness(*assembler_, *newton_, trial.state.u, trial.time, trial.dt, trial.state.lambda);
-  model_->setLambda(nullptr);
   if (!measured.note.empty() && talk_)
     std::printf("  note: the stiffness along the path at t = %.6g was not measured: %s\n", trial.time, measured.note.c_str());
   Attempt &a = trial.attempt;
@@ -916,7 +917,7 @@ void Simulation::commitTrial() {
   std::unique_lock<std::recursive_mutex> output(summaryMutex_);
   record(trial);
   committedStretch_ = trial.attempt.muscle.groupMeanStretch;
-  assembler_->muscleHistory().commit();
+  muscleHistory_->commit();
   const UzawaResult &r = trial.attempt.uzawa;
   if (talk_ && onPath_) {
     std::printf("step %d  t = %.6g (load %.4g of the end time's)  newton %d  dilatation error %.1e  [%s elapsed]\n",
@@ -939,7 +940,7 @@ void Simulation::commitTrial() {
 }
 
 void Simulation::record(const Trial &trial) {
-  const model::MuscleHistory &history = assembler_->muscleHistory();
+  const model::MuscleHistory &history = *muscleHistory_;
   const UzawaResult &r = trial.attempt.uzawa;
   const assembly::MuscleFields &muscle = trial.attempt.muscle;
   const auto reactions = recorder_->record(t_, committed_->u, committed_->lambda,
@@ -1058,7 +1059,7 @@ void Simulation::followArcLength() {
   settings.startTime = t_;
   onPath_ = true;
   pathStart_ = {t_, stepNumber_};
-  model_->setLambda(&committed_->lambda);
+  model_->setMultipliers(committed_->lambda);
   model_->setTime(t_);
 
   double highest = t_; // the largest load so far, and whether the path has turned down from it
@@ -1095,7 +1096,6 @@ void Simulation::followArcLength() {
     return !(settings.stopAtDisplacement > 0.0 && largest >= settings.stopAtDisplacement);
   };
   const ArcLengthOutcome outcome = followPath(model_, committed_->u, settings, onPoint);
-  model_->setLambda(nullptr);
   doc_["path_following"] = {{"method", "arc length (LOCA)"}, {"steps", outcome.steps}, {"largest_time", highest}};
   if (!outcome.completed && failure_.empty()) {
     failure_ = outcome.failure;

@@ -40,6 +40,7 @@ namespace glossa::materials {
 class VolumetricEnergy;
 }
 namespace glossa::model {
+class MuscleHistory;
 struct Scene;
 struct SymmetryPlane;
 }
@@ -192,6 +193,9 @@ private:
   bool softeningSaid_ = false; // the note that the path has softened, once
   std::unique_ptr<model::Scene> scene_;
   std::unique_ptr<CommControlGroups> groups_;
+  // The activation and contractile stretches of the local elements: begun, updated and committed
+  // here, read by the assembler (declared first, so it outlives it).
+  std::unique_ptr<model::MuscleHistory> muscleHistory_;
   Teuchos::RCP<assembly::Assembler> assembler_;
   Teuchos::RCP<assembly::ModelEvaluator> model_;
   std::unique_ptr<NewtonSolver> newton_;

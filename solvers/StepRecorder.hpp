@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include "assembly/Assembler.hpp"
+#include "assembly/MuscleResponse.hpp"
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "io/output/TraceWriter.hpp"

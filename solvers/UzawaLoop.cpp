@@ -128,8 +128,11 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
   bool tight = !inexact_;
   std::vector<double> previousErrors; // after the last tight solve, per tissue
   for (int k = 1; k <= (measuresPhysicalLaw() ? maxIterations_ : 1); ++k) {
+    newton_.model().setMultipliers(lambda);
     NewtonResult n = tight ? newton_.solve(u, residualTolerance, onNewton)
                            : newton_.solve(u, looseTolerance, onNewton, innerTolerance_);
+    // Mixed: the element pressures were unknowns of the solve.
+    if (mixed_) lambda = newton_.model().multipliers();
     ++result.solves;
     result.newtonIterations += n.iterations;
     result.linearIterations += n.linearIterations;

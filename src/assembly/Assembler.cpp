@@ -1,6 +1,5 @@
 #include "assembly/Assembler.hpp"
 
-#include "control/MusclePruning.hpp"
 #include "assembly/ZoltanPartition.hpp"
 
 #include <algorithm>
@@ -26,14 +25,22 @@ Teuchos::RCP<const Map> makeMap(const std::vector<GlobalIndex> &gids, Tpetra::gl
 }
 } // namespace
 
-Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
-    : scene_(scene), comm_(std::move(comm)) {
-  const mesh::HexMesh &mesh = scene_.mesh;
+DofLayout distributeScene(const model::Scene &scene, const Teuchos::RCP<const Comm> &comm) {
   std::vector<int> owner;
-  if (scene_.partitioner != model::Partitioner::coordinateBisection && comm_->getSize() > 1)
-    owner = partitionElementsWithZoltan2(mesh, comm_,
-                                         scene_.partitioner == model::Partitioner::zoltan2Rcb ? "rcb" : "multijagged");
-  layout_ = buildDofLayout(mesh, comm_->getRank(), comm_->getSize(), std::move(owner));
+  if (scene.partitioner != model::Partitioner::coordinateBisection && comm->getSize() > 1)
+    owner = partitionElementsWithZoltan2(scene.mesh, comm,
+                                         scene.partitioner == model::Partitioner::zoltan2Rcb ? "rcb" : "multijagged");
+  return buildDofLayout(scene.mesh, comm->getRank(), comm->getSize(), std::move(owner));
+}
+
+Assembler::Assembler(const model::Scene &scene, DofLayout layout, const model::MuscleHistory &history,
+                     Teuchos::RCP<const Comm> comm)
+    : scene_(scene), comm_(std::move(comm)), layout_(std::move(layout)), history_(history) {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  if (history_.numElements() != layout_.localElements.size())
+    throw std::invalid_argument("Assembler: the muscle history has " + std::to_string(history_.numElements()) +
+                                " elements, the layout " + std::to_string(layout_.localElements.size()) +
+                                " local elements");
   ownedMap_ = makeMap(layout_.ownedDofs, layout_.numGlobalDofs(), comm_);
   overlapMap_ = makeMap(layout_.overlapDofs, Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), comm_);
   importer_ = Teuchos::rcp(new Import(ownedMap_, overlapMap_));
@@ -72,7 +79,6 @@ Assembler::Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm)
   for (const auto &t : scene_.tissues) stiffness = std::max(stiffness, t.volumetric.kappa() + 4.0 / 3.0 * t.matrix->shearModulus());
   dirichletScale_ = stiffness * h;
 
-  history_ = model::MuscleHistory(scene_.muscles, layout_.localElements);
   elementLids_.resize(layout_.localElements.size());
   elementGids_.resize(layout_.localElements.size());
   for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
@@ -404,98 +410,6 @@ fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix 
   return kernel(model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
                                       history_.familyActivation(i), history_.dt(), lambdaCOld, nullptr,
                                       scene_.muscles.pointDirectionsOf(e)));
-}
-
-MuscleFields Assembler::updateMuscleHistory(const Vector &u) {
-  const mesh::HexMesh &mesh = scene_.mesh;
-  const auto &muscles = scene_.muscles;
-  MuscleFields out;
-  const std::size_t n = layout_.localElements.size();
-  const std::size_t G = muscles.groups.size();
-  out.groups = static_cast<int>(G);
-  out.fibreStretch.assign(n * G, 0.0);
-  out.contractileStretch.assign(n * G, 0.0);
-  out.fibreStress.assign(n, 0.0);
-  // Per group: sums of lambda_f w, lambda_c w and w (then reduced over ranks), w the fibre length
-  // a point carries: L_f of the element along the family's reference direction (§6.1's
-  // length-weighted average fibre stretch, control::fibreLengthMeasure) times the point's share
-  // of the element's reference volume.
-  std::vector<double> weighted(3 * G, 0.0), weightedAll(3 * G, 0.0);
-  int localValid = 1;
-  Vector uOverlap(overlapMap_);
-  importToOverlap(u, uOverlap);
-  auto uData = uOverlap.getData(0);
-  if (muscles.hasFibres()) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto e = static_cast<std::size_t>(layout_.localElements[i]);
-      const int region = muscles.elementRegion[e];
-      if (region < 0) continue;
-      const model::FibreRegion &r = muscles.regions[region];
-      const fem::NodeMatrix X = mesh.elementCoordinates(layout_.localElements[i]);
-      const fem::NodeMatrix ue = elementDisplacement(i, uData);
-      std::array<Eigen::Matrix3d, 8> F;
-      std::array<double, 8> dV;
-      std::array<const double *, 8> lambdaCOld;
-      for (int q = 0; q < 8; ++q) lambdaCOld[q] = history_.committedLambdaC(i, q);
-      model::ElementMuscleResponse response;
-      const model::TissuePointLaw law(*r.law, muscles.directions[e], history_.familyActivation(i), history_.dt(),
-                                      lambdaCOld, &response, muscles.pointDirectionsOf(e));
-      materials::PointResponse ignored;
-      bool ok = fem::quadratureDeformationGradients(X, ue, F, dV);
-      for (int q = 0; ok && q < 8; ++q) ok = F[q].determinant() > 0.0 && law.evaluate(q, F[q], ignored);
-      if (!ok) {
-        localValid = 0;
-        continue;
-      }
-      const int families = r.law->familyCount();
-      std::vector<int> count(G, 0);
-      double volume = 0.0;
-      for (int q = 0; q < 8; ++q) volume += dV[q];
-      std::vector<double> fibreLength(static_cast<std::size_t>(families), 0.0);
-      for (int f = 0; f < families; ++f)
-        if (r.familyGroup[f] >= 0) fibreLength[f] = control::fibreLengthMeasure(X, muscles.directions[e].col(f));
-      for (int q = 0; q < 8; ++q) {
-        double* lambdaC = history_.trialLambdaC(i, q);
-        for (int f = 0; f < families; ++f) {
-          lambdaC[f] = response.lambdaC[q](f);
-          out.fibreStress[i] += r.law->families()[f].geometry.volumeFraction * response.T[q](f) / 8.0;
-          const int g = r.familyGroup[f];
-          if (g < 0) continue;
-          out.fibreStretch[i * G + g] += response.lambdaF[q](f);
-          out.contractileStretch[i * G + g] += response.lambdaC[q](f);
-          ++count[g];
-          const double w = fibreLength[f] * dV[q] / volume;
-          weighted[3 * g] += response.lambdaF[q](f) * w;
-          weighted[3 * g + 1] += response.lambdaC[q](f) * w;
-          weighted[3 * g + 2] += w;
-        }
-      }
-      for (std::size_t g = 0; g < G; ++g)
-        if (count[g] > 0) {
-          out.fibreStretch[i * G + g] /= count[g];
-          out.contractileStretch[i * G + g] /= count[g];
-        }
-    }
-  }
-  // The external fibres' lambda_c at the converged u (their forces are not needed here).
-  std::vector<double> external(2 * G, 0.0), externalAll(2 * G, 0.0);
-  if (!externalMuscles_->evaluate(loadTarget(uData, nullptr, nullptr, false), &history_, &external)) localValid = 0;
-  int globalValid = 0;
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
-  out.valid = globalValid == 1;
-  if (G > 0) {
-    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(3 * G), weighted.data(), weightedAll.data());
-    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(2 * G), external.data(), externalAll.data());
-  }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t g = 0; g < G; ++g) {
-    const double length = weightedAll[3 * g + 2];
-    out.groupMeanStretch.push_back(length > 0.0                   ? weightedAll[3 * g] / length
-                                   : externalAll[2 * g + 1] > 0.0 ? externalAll[2 * g] / externalAll[2 * g + 1]
-                                                                   : nan);
-    out.groupMeanContractileStretch.push_back(length > 0.0 ? weightedAll[3 * g + 1] / length : nan);
-  }
-  return out;
 }
 
 Vector Assembler::nodalForces(const Teuchos::ArrayRCP<const double> &uData, double time,

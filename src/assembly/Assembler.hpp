@@ -40,24 +40,6 @@ struct ElementFields {
   std::vector<double> referenceVolume;
 };
 
-// What the muscle point laws computed at the converged displacement of a step.
-struct MuscleFields {
-  bool valid = true; // false: a local contractile solve failed (on any rank)
-  int groups = 0;
-  // Per local element and group (index i * groups + g): the mean over the element's points and
-  // the group's families of the fibre stretch and the contractile stretch; 0 where the group is
-  // absent.
-  std::vector<double> fibreStretch, contractileStretch;
-  std::vector<double> fibreStress; // per local element: mean of sum_f phi_f T_f [Pa]
-  // Per group, over the whole mesh: the length-weighted mean fibre stretch of its internal
-  // families (the pruning measure of §6.1: each point weighted by the fibre length its element
-  // holds along the family's reference direction, control::fibreLengthMeasure, times its share
-  // of the element's volume); for a group with external fibres only, their reference-length-
-  // weighted mean stretch; NaN for a group with no fibres. The same mean of the contractile
-  // stretch lambda_c of the internal families (NaN without them), for f_cL at the group's mean.
-  std::vector<double> groupMeanStretch, groupMeanContractileStretch;
-};
-
 // The pressure blocks of the uncondensed (mixed) Q1-P0 system at a displacement
 // (Incompressibility/method = mixed): one pressure unknown per element, its coupling row
 // B_e = dv_e/du (the current volume's gradient, fem::elementVolumeGradient) with the columns of
@@ -75,13 +57,23 @@ struct Reaction {
   double power;
 };
 
+// Which rank owns which element, node and dof: the deck's partitioner (Zoltan2) or the built-in
+// bisection. Collective.
+DofLayout distributeScene(const model::Scene &scene, const Teuchos::RCP<const Comm> &comm);
+
 class Assembler {
 public:
-  Assembler(const model::Scene &scene, Teuchos::RCP<const Comm> comm);
+  // `history`, the muscle state of the layout's local elements (owned by the caller, who begins
+  // steps and commits them), is read by every assembly: the trial activation, the step and the
+  // committed lambda_c.
+  Assembler(const model::Scene &scene, DofLayout layout, const model::MuscleHistory &history,
+            Teuchos::RCP<const Comm> comm);
 
   const model::Scene &scene() const { return scene_; }
   const DofLayout &layout() const { return layout_; }
   Teuchos::RCP<const Map> ownedMap() const { return ownedMap_; }
+  // One entry per local element (GID = mesh element id): multipliers and element pressures.
+  Teuchos::RCP<const Map> elementMap() const { return pressureMap_; }
   Teuchos::RCP<const Comm> comm() const { return comm_; }
   std::size_t numLocalElements() const { return layout_.localElements.size(); }
 
@@ -145,14 +137,9 @@ public:
   static constexpr double kRegularCorner = 0.2;
   WorstCorner worstCorner(const Vector &u) const;
 
-  // The muscle history (activation per group, lambda_c per point) of this rank's elements: the
-  // caller begins each step and commits it once converged; assembly reads its trial activation
-  // and committed lambda_c.
-  model::MuscleHistory &muscleHistory() { return history_; }
   const model::MuscleHistory &muscleHistory() const { return history_; }
-  // Evaluates the muscle point laws at the converged u, writes the trial lambda_c into the
-  // history (commit separately) and returns the fields for output. Collective.
-  MuscleFields updateMuscleHistory(const Vector &u);
+  // The external muscles among the loads (null without them).
+  const ExternalMuscleForces *externalMuscles() const { return externalMuscles_; }
 
   // The reaction of every Dirichlet condition (scene order): the sum over its nodes of the
   // internal minus external force in its fixed components, i.e. the force the support exerts.
@@ -188,8 +175,16 @@ public:
   // A per-local-element field gathered by mesh element id on every rank. Collective.
   std::vector<double> gatherElementField(const std::vector<double> &local, int components) const;
 
-private:
+  // u with the ghosts of the local elements (the overlap map). Collective.
   void importToOverlap(const Vector &u, Vector &overlap) const;
+  Teuchos::RCP<const Map> overlapMap() const { return overlapMap_; }
+  // Local element i's nodal displacements from the overlap vector's data.
+  fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
+  // A load target at the overlap displacement, for evaluations outside assemble (MuscleResponse).
+  LoadTarget loadTarget(const Teuchos::ArrayRCP<const double> &uOverlap, Teuchos::ArrayRCP<double> *fData, FEMatrix *K,
+                        bool constrainedToo) const;
+
+private:
   // Owned f_int - f_body, less the surface loads (tractions, follower loads) too when asked, at
   // every dof, constrained ones included: reactions and face-set resultants sum it over nodes.
   Vector nodalForces(const Teuchos::ArrayRCP<const double> &uData, double time, const std::vector<double> &lambda,
@@ -204,9 +199,6 @@ private:
   bool addLoads(const Teuchos::ArrayRCP<const double> &uOverlap, double time, Teuchos::ArrayRCP<double> &fData,
                 FEMatrix *K, bool constrainedToo, const std::function<bool(const LoadContribution &)> &which) const;
   static bool everyLoad(const LoadContribution &) { return true; }
-  LoadTarget loadTarget(const Teuchos::ArrayRCP<const double> &uOverlap, Teuchos::ArrayRCP<double> *fData, FEMatrix *K,
-                        bool constrainedToo) const;
-  fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
   // The offsets of every element entry in K's values while K is open for assembly (its
   // owned-plus-shared pattern), found on first use for that pattern.
   const ElementScatter &elementScatter(const FEMatrix &K, const FEMatrix::local_matrix_host_type &local) const;
@@ -225,7 +217,7 @@ private:
   double dirichletScale_ = 1.0;
   mutable std::shared_ptr<const ElementScatter> scatter_;
   mutable const void *scatterPattern_ = nullptr;
-  model::MuscleHistory history_;
+  const model::MuscleHistory &history_;
   std::vector<std::unique_ptr<LoadContribution>> loads_; // the scene's loads (LoadContribution.hpp)
   const ExternalMuscleForces *externalMuscles_ = nullptr; // among them, for the muscle history
 };

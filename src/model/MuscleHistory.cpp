@@ -58,7 +58,19 @@ void MuscleHistory::beginStep(double tNew, double dt) {
 double MuscleHistory::trialActivationInputDerivative(int group) const {
   if (group < 0 || group >= static_cast<int>(alpha_.size()))
     throw std::out_of_range("MuscleHistory::trialActivationInputDerivative: no muscle group " + std::to_string(group));
-  return architecture_->groups[group].activation.stepInputDerivative(alpha_[group], inputTrial_[group], dt_);
+  return trialActivationInputDerivative(group, inputTrial_[group]);
+}
+
+double MuscleHistory::trialActivationForInput(int group, double input) const {
+  if (group < 0 || group >= static_cast<int>(alpha_.size()))
+    throw std::out_of_range("MuscleHistory::trialActivationForInput: no muscle group " + std::to_string(group));
+  return architecture_->groups[group].activation.step(alpha_[group], input, dt_);
+}
+
+double MuscleHistory::trialActivationInputDerivative(int group, double input) const {
+  if (group < 0 || group >= static_cast<int>(alpha_.size()))
+    throw std::out_of_range("MuscleHistory::trialActivationInputDerivative: no muscle group " + std::to_string(group));
+  return architecture_->groups[group].activation.stepInputDerivative(alpha_[group], input, dt_);
 }
 
 void MuscleHistory::setTrialActivation(int group, double alpha) {

@@ -49,6 +49,10 @@ public:
   // d alpha_trial / d u of a group at this step's input (after beginStep): the controller's
   // sensitivity of the activation to the neural input through the backward-Euler step.
   double trialActivationInputDerivative(int group) const;
+  // The trial activation of a group had its input this step been `input` in [0, 1], and its
+  // derivative in the input: the activation step from the committed activation over this dt.
+  double trialActivationForInput(int group, double input) const;
+  double trialActivationInputDerivative(int group, double input) const;
   // Replaces a group's trial activation (finite differences of the residual in alpha); the next
   // beginStep recomputes it from the input.
   void setTrialActivation(int group, double alpha);
@@ -56,6 +60,8 @@ public:
   double groupActivation(int group) const { return group < 0 ? 0.0 : alphaTrial_[group]; }
 
   void commit();
+  // The local elements it keeps lambda_c for.
+  std::size_t numElements() const { return region_.size(); }
 
   // The committed state, for a checkpoint (glossa run --restart), and its restoration: the trial
   // values become the committed ones, as after commit().

@@ -6,12 +6,19 @@
 // - on the §7.2 block, the corner P held far closer than the passive run's peak (tests/
 //   regression/s7_2_passive.csv) and than the GA's binary inputs allow, with e2 (the family the
 //   lateral pressure stretches) the group it drives, continuous inputs inside [0, 1], and a
-//   deterministic run.
+//   deterministic run;
+// - the model evaluator's neural-input parameter, response and multipliers (ModelParameters).
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <Thyra_DetachedVectorView.hpp>
+#include <Thyra_MultiVectorStdOps.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Thyra_VectorStdOps.hpp>
 
 #include "RunDeck.hpp"
+#include "assembly/ModelEvaluator.hpp"
+#include "input/SceneFactory.hpp"
 
 using namespace glossa;
 
@@ -60,4 +67,115 @@ TEST(GradientControl, HoldsTheCornerWithContinuousInputs) {
   // The input of e2 rises with the load (the breathing pressure grows over the first 0.6 s).
   EXPECT_GT(a.at("steps")[4].at("control").at("inputs").at("e2").get<double>(),
             a.at("steps")[1].at("control").at("inputs").at("e2").get<double>());
+}
+
+// The model evaluator's parameters and response on the §7.2 block (no solve): DfDp in the
+// neural inputs p2 against central differences of residuals evaluated at other inputs (the p2
+// path of an evaluation, independent of DfDp's own differences in the activation); g0 against
+// the gathered displacement and DgDx^T u = g (g is linear in u); a residual at multipliers given
+// as p1 equal to one at the same nominal multipliers.
+TEST(ModelParameters, InputDerivativeResponseAndMultipliers) {
+  using MEB = Thyra::ModelEvaluatorBase;
+  using Extract = Thyra::TpetraOperatorVectorExtraction<double, assembly::LO, assembly::GO, assembly::Node>;
+  const auto schema = app::deckSchema();
+  auto deck = io::Deck::fromFile(test::inputPath("paper/s7_2_gradient.xml"));
+  deck.applyOverride("Mesh/Box/cells={3,3,3}", schema);
+  deck.applyOverride("Material/Poisson's ratio=0.45", schema); // a finite kappa: the scene's own law
+  deck.validate(schema);
+  const model::Scene scene = input::buildScene(deck, 1.0);
+  const auto comm = Tpetra::getDefaultComm();
+  assembly::DofLayout layout = assembly::distributeScene(scene, comm);
+  model::MuscleHistory history(scene.muscles, layout.localElements);
+  const auto assembler = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), history, comm));
+  const std::vector<mesh::NodeId> nodes{0, 7, static_cast<mesh::NodeId>(scene.mesh.numNodes() - 1)};
+  assembly::ModelEvaluator model(assembler, Teuchos::null, &history, nodes);
+  const int groups = static_cast<int>(scene.muscles.groups.size());
+  ASSERT_GE(groups, 2);
+  for (int g = 0; g < groups; ++g) history.overrideInput(g, 0.3 + 0.2 * g);
+  history.beginStep(0.05, 0.05);
+  model.setTime(0.05);
+
+  // A smooth displacement: a 2 % stretch along x with a shear, so the fibres are stretched.
+  std::vector<double> all(3 * scene.mesh.numNodes());
+  for (std::size_t n = 0; n < scene.mesh.numNodes(); ++n) {
+    const Eigen::Vector3d &X = scene.mesh.nodes[n];
+    all[3 * n] = 0.02 * X(0) + 0.01 * X(1), all[3 * n + 1] = -0.01 * X(1), all[3 * n + 2] = -0.01 * X(2);
+  }
+  assembly::Vector u(assembler->ownedMap());
+  assembler->scatterDisplacement(all, u);
+  const auto x = Thyra::createConstVector<double, assembly::LO, assembly::GO, assembly::Node>(Teuchos::rcpFromRef(u),
+                                                                                           model.get_x_space());
+  std::vector<double> lambda(assembler->numLocalElements());
+  for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = 10.0 * static_cast<double>(i % 5);
+  model.setMultipliers(lambda);
+
+  auto residual = [&](const MEB::InArgs<double> &in) {
+    auto f = Thyra::createMember(model.get_f_space());
+    MEB::OutArgs<double> out = model.createOutArgs();
+    out.set_f(f);
+    model.evalModel(in, out);
+    return Extract::getTpetraVector(f);
+  };
+  MEB::InArgs<double> in = model.getNominalValues();
+  in.set_x(x);
+  const auto f0 = residual(in);
+  ASSERT_TRUE(model.lastStatus().valid) << "min J " << model.lastStatus().minJ;
+  ASSERT_GT(f0->norm2(), 0.0);
+
+  // DfDp and DgDx in one evaluation.
+  MEB::OutArgs<double> out = model.createOutArgs();
+  const auto dfdp = Thyra::createMembers(model.get_f_space(), model.get_p_space(assembly::ModelEvaluator::kNeuralInputs));
+  const auto dgdx = Thyra::createMembers(model.get_x_space(), model.get_g_space(0));
+  const auto g = Thyra::createMember(model.get_g_space(0));
+  out.set_DfDp(assembly::ModelEvaluator::kNeuralInputs, MEB::Derivative<double>(dfdp, MEB::DERIV_MV_BY_COL));
+  out.set_DgDx(0, MEB::Derivative<double>(dgdx, MEB::DERIV_TRANS_MV_BY_ROW));
+  out.set_g(0, g);
+  model.evalModel(in, out);
+
+  const double delta = 1e-4;
+  for (int j = 0; j < groups; ++j) {
+    auto shifted = [&](double s) {
+      MEB::InArgs<double> at = model.getNominalValues();
+      at.set_x(x);
+      auto p = Thyra::createMember(model.get_p_space(assembly::ModelEvaluator::kNeuralInputs));
+      Thyra::assign(p.ptr(), *at.get_p(assembly::ModelEvaluator::kNeuralInputs));
+      Thyra::set_ele(j, Thyra::get_ele(*p, j) + s, p.ptr());
+      at.set_p(assembly::ModelEvaluator::kNeuralInputs, p);
+      return residual(at);
+    };
+    assembly::Vector difference(assembler->ownedMap());
+    difference.update(0.5 / delta, *shifted(delta), -0.5 / delta, *shifted(-delta), 0.0);
+    const auto column = Extract::getConstTpetraMultiVector(dfdp)->getVector(static_cast<std::size_t>(j));
+    ASSERT_GT(difference.norm2(), 0.0) << "group " << j << " does not act on the residual";
+    difference.update(-1.0, *column, 1.0);
+    EXPECT_LT(difference.norm2(), 1e-5 * column->norm2()) << "group " << j;
+  }
+  // The nominal activations are back after the shifted evaluations.
+  EXPECT_EQ(residual(in)->norm2(), f0->norm2());
+
+  // g0 and DgDx.
+  const Thyra::ConstDetachedVectorView<double> gv(*g);
+  auto dgdxTu = Thyra::createMember(dgdx->domain());
+  Thyra::apply(*dgdx, Thyra::TRANS, *x, dgdxTu.ptr());
+  const Thyra::ConstDetachedVectorView<double> dv(*dgdxTu);
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    for (int c = 0; c < 3; ++c) {
+      const auto i = static_cast<Thyra::Ordinal>(3 * k + c);
+      EXPECT_EQ(gv[i], all[3 * nodes[k] + c]);
+      EXPECT_EQ(dv[i], all[3 * nodes[k] + c]);
+    }
+
+  // Multipliers as p1: the same residual as the nominal ones; zero ones differ.
+  auto given = Thyra::createMember(model.get_p_space(assembly::ModelEvaluator::kMultipliers));
+  Thyra::assign(given.ptr(), *in.get_p(assembly::ModelEvaluator::kMultipliers));
+  MEB::InArgs<double> withP1 = model.getNominalValues();
+  withP1.set_x(x);
+  withP1.set_p(assembly::ModelEvaluator::kMultipliers, given);
+  auto same = residual(withP1);
+  same->update(-1.0, *f0, 1.0);
+  EXPECT_EQ(same->normInf(), 0.0);
+  Thyra::assign(given.ptr(), 0.0);
+  auto other = residual(withP1);
+  other->update(-1.0, *f0, 1.0);
+  EXPECT_GT(other->normInf(), 0.0);
 }

@@ -80,11 +80,21 @@ std::vector<mesh::NodeId> meshNodeOfNumber(const assembly::DofLayout &layout) {
   for (std::size_t n = 0; n < node.size(); ++n) node[static_cast<std::size_t>(layout.nodeNumber[n])] = static_cast<mesh::NodeId>(n);
   return node;
 }
+// The assembler with the muscle history it reads, owned beside it as the simulation does.
+struct AssemblerWithHistory {
+  AssemblerWithHistory(const model::Scene &scene, const Teuchos::RCP<const assembly::Comm> &comm)
+      : layout(assembly::distributeScene(scene, comm)), history(scene.muscles, layout.localElements),
+        assembler(Teuchos::rcp(new assembly::Assembler(scene, layout, history, comm))) {}
+  assembly::DofLayout layout;
+  model::MuscleHistory history;
+  Teuchos::RCP<assembly::Assembler> assembler;
+};
 } // namespace
 
 TEST(Assembler, GraphCouplesEachNodeWithTheNodesOfItsElements) {
   const model::Scene scene = block(0.3);
-  const assembly::Assembler assembler(scene, world());
+  const AssemblerWithHistory built(scene, world());
+  const assembly::Assembler &assembler = *built.assembler;
   const auto K = assembler.createMatrix();
   std::vector<std::set<mesh::NodeId>> neighbours(scene.mesh.nodes.size());
   for (const auto &hex : scene.mesh.elements)
@@ -112,7 +122,8 @@ TEST(Assembler, GraphCouplesEachNodeWithTheNodesOfItsElements) {
 TEST(Assembler, DirichletDofsHoldTheirValuesWithNoResidualAndADiagonalRow) {
   const Eigen::Vector3d g(1e-4, -2e-4, 3e-4);
   const model::Scene scene = block(0.3, g);
-  const assembly::Assembler assembler(scene, world());
+  const AssemblerWithHistory built(scene, world());
+  const assembly::Assembler &assembler = *built.assembler;
   assembly::Vector u(assembler.ownedMap()), f(assembler.ownedMap());
   deform(assembler, u);
   assembler.applyDirichlet(u, 1.0);
@@ -156,7 +167,8 @@ TEST(Assembler, DirichletDofsHoldTheirValuesWithNoResidualAndADiagonalRow) {
 
 TEST(Assembler, TangentIsTheCentralDifferenceOfTheResidual) {
   const model::Scene scene = block(0.45);
-  const assembly::Assembler assembler(scene, world());
+  const AssemblerWithHistory built(scene, world());
+  const assembly::Assembler &assembler = *built.assembler;
   const auto map = assembler.ownedMap();
   assembly::Vector u(map), v(map), Kv(map), fPlus(map), fMinus(map), f(map);
   deform(assembler, u);
@@ -188,7 +200,8 @@ TEST(Assembler, TangentIsTheCentralDifferenceOfTheResidual) {
 
 TEST(NewtonSolver, ConvergesQuadraticallyAndTheReactionsBalanceTheWeight) {
   const model::Scene scene = block(0.3);
-  const auto assembler = Teuchos::rcp(new assembly::Assembler(scene, world()));
+  const AssemblerWithHistory built(scene, world());
+  const auto assembler = built.assembler;
   solvers::LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), world()->getSize(),
                                        assembler->layout().numGlobalDofs(), true};
   const auto model = Teuchos::rcp(
@@ -231,7 +244,8 @@ TEST(UzawaLoop, BringsANearlyIncompressibleBlockToItsDilatationTolerance) {
       solvers::UzawaLoop::tangentKappa(incompressibility, physical[0].kappa(), kMu));
   const double kappa = materials::bulkModulus(kMu, 0.4999), kappaAL = 30.0 * kMu;
   EXPECT_NEAR(scene.tissues[0].volumetric.kappa(), 1.0 / (1.0 / kappa + 1.0 / kappaAL), 1e-9 * kappaAL);
-  const auto assembler = Teuchos::rcp(new assembly::Assembler(scene, world()));
+  const AssemblerWithHistory built(scene, world());
+  const auto assembler = built.assembler;
   solvers::LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), world()->getSize(),
                                        assembler->layout().numGlobalDofs(), true};
   const auto model = Teuchos::rcp(new assembly::ModelEvaluator(
@@ -241,9 +255,8 @@ TEST(UzawaLoop, BringsANearlyIncompressibleBlockToItsDilatationTolerance) {
   const solvers::UzawaLoop uzawa(*assembler, newton, incompressibility, physical);
   assembly::Vector u(assembler->ownedMap());
   std::vector<double> lambda(assembler->numLocalElements(), 0.0);
-  model->setLambda(&lambda);
+  model->setMultipliers(lambda);
   const solvers::UzawaResult r = uzawa.solve(u, lambda, 1e-10 * assembler->externalForceNorm(1.0), nullptr, nullptr);
-  model->setLambda(nullptr);
   ASSERT_TRUE(r.converged);
   EXPECT_GE(r.solves, 2); // the multipliers had to move
   EXPECT_LT(r.dilatation.max, 1e-6);
