@@ -66,11 +66,12 @@ Teuchos::ParameterList linearSolverParameters() {
   io::declareDouble(p, "Chebyshev eigenvalue ratio", 100.0, "",
                     "lambda_max / lambda_min of the interval the Chebyshev smoother damps",
                     io::Range::atLeast(2.0));
-  io::declareString(p, "MueLu reuse", "RP",
+  io::declareString(p, "MueLu reuse", "RAP",
                     "what MueLu keeps between Newton iterations: none (rebuild), RP (aggregates and "
-                    "transfer operators; coarse matrices and smoothers recomputed), RAP (also the "
-                    "coarse matrices and their smoothers and coarse solve, stale; only the finest "
-                    "smoother is rebuilt), full (the whole hierarchy, stale); the vertex-patch "
+                    "transfer operators; coarse matrices and smoothers recomputed), RAP (the default: "
+                    "also the coarse matrices and their smoothers and coarse solve, stale; only the "
+                    "finest smoother is rebuilt; measured in doc/incompressibility.md), full (the "
+                    "whole hierarchy, stale); the vertex-patch "
                     "smoother always uses none (Ifpack2 13.2's overlapping block relaxation returns "
                     "NaN when reused; it runs on one rank only)",
                     {"none", "RP", "RAP", "full"});

@@ -37,7 +37,7 @@ struct LinearSolverParameters {
   int patchSweeps = 1;
   int chebyshevEigenvalueIterations = 50;
   double chebyshevEigenvalueRatio = 100.0;
-  std::string mueLuReuse = "RP"; // MueLu's own "reuse: type" word, handed to it as it is
+  std::string mueLuReuse = "RAP"; // MueLu's own "reuse: type" word, handed to it as it is
   bool keptForTheRun = false;      // MueLu reuse scope = run: one solver object across Newton solves
   int coarseSize = 2000;
   Ifpack2Type ifpack2Type = Ifpack2Type::symmetricGaussSeidel;
