@@ -2,6 +2,7 @@
 
 #include <Teko_BlockUpperTriInverseOp.hpp>
 #include <Teko_Utilities.hpp>
+#include <Thyra_PhysicallyBlockedLinearOpBase.hpp>
 #include <Thyra_DefaultDiagonalLinearOp.hpp>
 #include <Thyra_DefaultIdentityLinearOp.hpp>
 #include <Thyra_DefaultLinearOpSource.hpp>
@@ -28,7 +29,7 @@ Teuchos::RCP<const Thyra::LinearOpBase<double>> diagonalOp(const RCP<const Thyra
   return Thyra::diagonal<double>(Thyra::createVector(RCP<assembly::Vector>(v), space));
 }
 
-// The solve object NOX holds for one tangent K.
+// The solve object NOX holds for the blocked tangent A = [K, B^T; B, -C] of the model evaluator.
 class MixedBlockSolve : public Thyra::LinearOpWithSolveBase<double> {
 public:
   MixedBlockSolve(RCP<assembly::MixedPressureState> state, RCP<Thyra::PreconditionerFactoryBase<double>> precFactory,
@@ -37,27 +38,28 @@ public:
 
   void initialize(const RCP<const Thyra::LinearOpSourceBase<double>> &source) {
     source_ = source;
-    K_ = source->getOp();
+    A_ = Teuchos::rcp_dynamic_cast<const Thyra::PhysicallyBlockedLinearOpBase<double>>(source->getOp(), true);
+    const auto K = A_->getBlock(0, 0);
     // K_hat^{-1}: one preconditioner object for the life of this solve object, so that MueLu's
     // "reuse: type" applies from one tangent to the next.
     if (!precFactory_.is_null()) {
       if (prec_.is_null()) prec_ = precFactory_->createPrec();
-      precFactory_->initializePrec(source, prec_.get());
+      precFactory_->initializePrec(Thyra::defaultLinearOpSource<double>(K), prec_.get());
     }
     blockSolve_.reset();
   }
   RCP<const Thyra::LinearOpSourceBase<double>> source() const { return source_; }
 
-  RCP<const Thyra::VectorSpaceBase<double>> range() const override { return K_.is_null() ? Teuchos::null : K_->range(); }
+  RCP<const Thyra::VectorSpaceBase<double>> range() const override { return A_.is_null() ? Teuchos::null : A_->range(); }
   RCP<const Thyra::VectorSpaceBase<double>> domain() const override {
-    return K_.is_null() ? Teuchos::null : K_->domain();
+    return A_.is_null() ? Teuchos::null : A_->domain();
   }
 
 protected:
   bool opSupportedImpl(Thyra::EOpTransp t) const override { return t == Thyra::NOTRANS; }
   void applyImpl(const Thyra::EOpTransp t, const Thyra::MultiVectorBase<double> &X,
                  const Teuchos::Ptr<Thyra::MultiVectorBase<double>> &Y, const double alpha, const double beta) const override {
-    K_->apply(t, X, Y, alpha, beta);
+    A_->apply(t, X, Y, alpha, beta);
   }
   bool solveSupportsImpl(Thyra::EOpTransp t) const override { return t == Thyra::NOTRANS; }
   bool solveSupportsSolveMeasureTypeImpl(Thyra::EOpTransp t, const Thyra::SolveMeasureType &) const override {
@@ -67,37 +69,8 @@ protected:
   Thyra::SolveStatus<double> solveImpl(const Thyra::EOpTransp, const Thyra::MultiVectorBase<double> &B,
                                        const Teuchos::Ptr<Thyra::MultiVectorBase<double>> &X,
                                        const Teuchos::Ptr<const Thyra::SolveCriteria<double>> criteria) const override {
-    assembly::MixedPressureState &s = *state_;
-    TEUCHOS_TEST_FOR_EXCEPTION(s.coupling.volumeGradient.is_null(), std::logic_error,
-                               "mixed block solve before the pressure blocks were linearised");
     if (blockSolve_.is_null()) buildBlockSolve();
-
-    // Right-hand side [b; v - V theta(p)] for b = F (see below). A solve with several columns (sensitivities) is a
-    // linear solve with the tangent: its pressure rows are homogeneous.
-    const int columns = B.domain()->dim();
-    auto rhs = Teuchos::rcp_dynamic_cast<Thyra::ProductMultiVectorBase<double>>(Thyra::createMembers(A_->range(), columns), true);
-    Thyra::assign(rhs->getNonconstMultiVectorBlock(0).ptr(), B);
-    auto pressureRhs = rhs->getNonconstMultiVectorBlock(1);
-    Thyra::assign(pressureRhs.ptr(), 0.0);
-    if (columns == 1) {
-      // NOX solves J x = F and steps by -x (NOX::Thyra::Group::computeNewton): the pressure rows
-      // get +r and the pressure step is -x_p.
-      Thyra::assign(pressureRhs.ptr(), *Thyra::createConstVector(RCP<const assembly::Vector>(s.constraintResidual), pressureSpace_));
-    }
-    const RCP<Thyra::MultiVectorBase<double>> xAll = Thyra::createMembers(A_->domain(), columns);
-    Thyra::assign(xAll.ptr(), 0.0);
-    auto x = Teuchos::rcp_dynamic_cast<Thyra::ProductMultiVectorBase<double>>(xAll, true);
-    Thyra::SolveStatus<double> status = blockSolve_->solve(Thyra::NOTRANS, *rhs, xAll.ptr(), criteria);
-
-    Thyra::assign(X, *x->getMultiVectorBlock(0));
-    if (columns == 1) {
-      auto dp = Extract::getConstTpetraMultiVector(x->getMultiVectorBlock(1));
-      auto data = dp->getData(0);
-      auto sigma = s.pressureScale->getData(0);
-      s.increment.resize(data.size());
-      for (std::size_t i = 0; i < s.increment.size(); ++i) s.increment[i] = -sigma[i] * data[i];
-      s.pending = true;
-    }
+    Thyra::SolveStatus<double> status = blockSolve_->solve(Thyra::NOTRANS, B, X, criteria);
     // NOX counts Krylov iterations from these (Stratimikos' Belos adapter sets both names).
     if (status.extraParameters.is_null()) status.extraParameters = Teuchos::parameterList();
     return status;
@@ -105,29 +78,20 @@ protected:
 
 private:
   void buildBlockSolve() const {
-    assembly::MixedPressureState &s = *state_;
-    const auto uSpace = K_->range();
-    pressureSpace_ = Thyra::createVectorSpace<double, assembly::LO, assembly::GO, assembly::Node>(s.coupling.pressureMap);
-    auto Bop = Thyra::constTpetraLinearOp<double, assembly::LO, assembly::GO, assembly::Node>(
-        pressureSpace_, uSpace, s.coupling.volumeGradient);
-    Teko::BlockedLinearOp A = Teko::createBlockedOp();
-    Teko::beginBlockFill(A, 2, 2);
-    A->setBlock(0, 0, K_);
-    A->setBlock(0, 1, Thyra::adjoint<double>(Bop));
-    A->setBlock(1, 0, Bop);
-    A->setBlock(1, 1, diagonalOp(pressureSpace_, *s.compliance, -1.0));
-    Teko::endBlockFill(A);
-    A_ = A;
-
+    const assembly::MixedPressureState &s = *state_;
+    TEUCHOS_TEST_FOR_EXCEPTION(s.schurDiagonal.is_null(), std::logic_error,
+                               "mixed block solve before the pressure blocks were linearised");
+    const auto uSpace = A_->getBlock(0, 0)->range();
+    const auto pressureSpace = A_->getBlock(1, 0)->range();
     // P^{-1} = [K_hat B^T; 0 -S_hat]^{-1}, S_hat = C + M_p / mu (diagonal, inverted exactly).
     auto inverseSchur = rcp(new assembly::Vector(*s.schurDiagonal, Teuchos::Copy));
     inverseSchur->reciprocal(*s.schurDiagonal);
     const Teko::LinearOp invK = prec_.is_null() ? Thyra::identity<double>(uSpace) : prec_->getUnspecifiedPrecOp();
-    const Teko::LinearOp invS = diagonalOp(pressureSpace_, *inverseSchur, -1.0);
+    const Teko::LinearOp invS = diagonalOp(pressureSpace, *inverseSchur, -1.0);
+    Teko::BlockedLinearOp A = Teuchos::rcp_const_cast<Thyra::PhysicallyBlockedLinearOpBase<double>>(A_);
     const Teko::LinearOp P = Teko::createBlockUpperTriInverseOp(A, {invK, invS}, "mixed Q1-P0 block preconditioner");
-
     blockSolve_ = krylov_->createOp();
-    Thyra::initializePreconditionedOp<double>(*krylov_, Teko::LinearOp(A), Thyra::unspecifiedPrec<double>(P),
+    Thyra::initializePreconditionedOp<double>(*krylov_, Teko::LinearOp(A_), Thyra::unspecifiedPrec<double>(P),
                                               blockSolve_.ptr());
   }
 
@@ -135,10 +99,8 @@ private:
   RCP<Thyra::PreconditionerFactoryBase<double>> precFactory_;
   RCP<Thyra::LinearOpWithSolveFactoryBase<double>> krylov_;
   RCP<const Thyra::LinearOpSourceBase<double>> source_;
-  RCP<const Thyra::LinearOpBase<double>> K_;
+  RCP<const Thyra::PhysicallyBlockedLinearOpBase<double>> A_;
   RCP<Thyra::PreconditionerBase<double>> prec_;
-  mutable RCP<const Thyra::VectorSpaceBase<double>> pressureSpace_;
-  mutable RCP<const Thyra::LinearOpBase<double>> A_;
   mutable RCP<Thyra::LinearOpWithSolveBase<double>> blockSolve_;
 };
 

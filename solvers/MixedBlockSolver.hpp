@@ -1,11 +1,10 @@
 #pragma once
 // The linear solve of Incompressibility/method = mixed (issue 8, strategy d): NOX hands it the
-// displacement tangent K at fixed element pressures; it solves the uncondensed block system of
-// assembly::MixedPressureState,
-//   [ K  B^T ] [du]   [ b               ]
-//   [ B  -C  ] [dp] = [ -(v - V theta(p)) ],
-// returns du to NOX and leaves dp in the state for the model evaluator to apply. Belos GMRES
-// (the system is symmetric indefinite) with Teko's block upper-triangular preconditioner
+// model evaluator's blocked tangent over [u; p~] (assembly::MixedPressureState),
+//   [ K  B^T ] [du ]   [ b_u ]
+//   [ B  -C  ] [dp~] = [ b_p ],
+// and it returns both parts. Belos GMRES (the system is symmetric indefinite) with Teko's block
+// upper-triangular preconditioner
 //   P = [ K_hat  B^T ; 0  -S_hat ],   K_hat^{-1}: the deck's preconditioner of K (MueLu by
 //   default), S_hat = C + M_p / mu: the Schur complement B K^{-1} B^T + C with K^{-1} replaced by
 //   (mu times the P0 mass matrix M_p = diag(V_e))^{-1}, exact in its C part (kappa = inf: C = 0).

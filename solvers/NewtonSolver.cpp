@@ -26,8 +26,7 @@ public:
   void runPostIterate(const NOX::Solver::Generic &solver) override {
     // The accepted iterate becomes the base of the next three-field linearisation.
     const auto &x = dynamic_cast<const NOX::Thyra::Vector &>(solver.getSolutionGroup().getX());
-    model_.advanceIterates(*Thyra::TpetraOperatorVectorExtraction<double, assembly::LO, assembly::GO,
-                                                                  assembly::Node>::getConstTpetraVector(x.getThyraRCPVector()));
+    model_.advanceIterates(*model_.displacementOf(x.getThyraVector()));
     const double normF = solver.getSolutionGroup().getNormF();
     const int krylov = solver.getSolverStatistics()->linearSolve.lastLinearSolve_NumIterations;
     r_.residualNorms.push_back(normF);
@@ -83,9 +82,7 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, 
 
   model_->resetIterates(u);
   MumpsPreconditionerFactory::beginNewtonSolve();
-  auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
-  auto xThyra = Thyra::createVector(RCP<assembly::Vector>(uCopy), model_->get_x_space());
-  NOX::Thyra::Vector initialGuess(xThyra);
+  NOX::Thyra::Vector initialGuess(model_->initialGuess(u));
   RCP<NOX::Thyra::Group> group;
   if (keepLinearSolver_ && !group_.is_null()) {
     // setX invalidates F and the Jacobian but keeps the linear solver object and with it the
@@ -159,15 +156,15 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, 
   result.elementInverted = !model_->lastStatus().valid;
   if (result.converged) {
     const auto &x = dynamic_cast<const NOX::Thyra::Vector &>(solver->getSolutionGroup().getX());
-    auto solved = Thyra::TpetraOperatorVectorExtraction<double, assembly::LO, assembly::GO, assembly::Node>::getConstTpetraVector(
-        x.getThyraRCPVector());
-    u.assign(*solved);
+    model_->acceptSolution(x.getThyraVector(), u);
   }
   return result;
 }
 
 int NewtonSolver::solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs,
                                assembly::MultiVector &x) const {
+  TEUCHOS_TEST_FOR_EXCEPTION(!model_->mixedPressure().is_null(), std::logic_error,
+                             "tangent solves are of the condensed tangent; the mixed method has none");
   model_->resetIterates(u);
   auto in = model_->createInArgs();
   auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));

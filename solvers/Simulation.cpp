@@ -153,12 +153,10 @@ namespace {
 // Incompressibility/method = mixed carries the element pressures in the Newton iterate: it needs
 // the mixed element, a full Newton step (the pressure increment is not line-searched), an
 // iterative block solve, and no controller (its sensitivities are condensed solves).
-void requireMixedCompatible(const NewtonParameters &newton, const LinearSolverParameters &linear, bool controlled,
+void requireMixedCompatible(const LinearSolverParameters &linear, bool controlled,
                             const model::Scene &scene) {
   const std::string why = "Incompressibility/method = mixed needs ";
   if (scene.formulation != model::ElementFormulation::Q1P0) throw io::DeckError(why + "Material/element = Q1P0");
-  if (newton.lineSearch != LineSearch::fullStep)
-    throw io::DeckError(why + "Nonlinear solver/line search = full step (its pressure increment is not line-searched)");
   if (linear.type == LinearSolverType::direct)
     throw io::DeckError(why + "Linear solver/type = iterative or auto (the block system is solved by GMRES; "
                               "auto may precondition its displacement block by a direct solve)");
@@ -424,7 +422,7 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
                               assembler_->layout().numGlobalDofs(), scene.symmetricTangent};
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
   if (incompressibility_.method == IncompressibilityMethod::mixed) {
-    requireMixedCompatible(newtonParameters_, linear_, controlled_, scene);
+    requireMixedCompatible(linear_, controlled_, scene);
     mixedPressure = Teuchos::rcp(new assembly::MixedPressureState(physicalVolumetric[0], mu));
   }
   // The control points are the model's response (their sensitivities to the neural inputs).

@@ -15,7 +15,7 @@ Teuchos::ParameterList incompressibilityParameters() {
                     "unknowns beside the displacements, no condensation and no Uzawa loop (any nu "
                     "up to 0.5), each Newton step a block solve by GMRES with a Teko block-triangular "
                     "preconditioner (MueLu on the displacement block, the scaled pressure mass "
-                    "matrix for the Schur complement; needs Q1-P0 and the full-step line search)",
+                    "matrix for the Schur complement; needs Q1-P0)",
                     {"augmented Lagrangian", "penalty", "mixed"});
   io::declareDouble(p, "penalty ratio", 30.0, "",
                     "kappa_AL / mu in augmented-Lagrangian mode, mu the law's small-strain shear "

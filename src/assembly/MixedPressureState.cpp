@@ -27,21 +27,14 @@ void MixedPressureState::linearise(const Assembler &assembler, const Vector &u, 
   }
   sigma = Teuchos::null;
   coupling.volumeGradient->leftScale(*pressureScale);
-  increment.assign(pressure.size(), 0.0);
-  pending = false;
 }
 
-const std::vector<double> &MixedPressureState::trialPressure(const std::vector<double> &pressure) const {
-  if (!pending) return pressure;
-  trial_.resize(pressure.size());
-  for (std::size_t i = 0; i < pressure.size(); ++i) trial_[i] = pressure[i] + increment[i];
-  return trial_;
-}
-
-void MixedPressureState::commit(std::vector<double> &pressure) {
-  if (pending)
-    for (std::size_t i = 0; i < pressure.size(); ++i) pressure[i] += increment[i];
-  pending = false;
+std::vector<double> MixedPressureState::pressureScales(const Assembler &assembler) const {
+  const Vector zero(assembler.ownedMap());
+  const PressureCoupling reference = assembler.pressureCoupling(zero);
+  std::vector<double> sigma(reference.referenceVolume.size());
+  for (std::size_t i = 0; i < sigma.size(); ++i) sigma[i] = shearModulus / std::cbrt(reference.referenceVolume[i]);
+  return sigma;
 }
 
 } // namespace glossa::assembly

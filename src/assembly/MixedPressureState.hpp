@@ -9,9 +9,9 @@
 // which the condensed form cannot express). Eliminating dp element by element gives back the
 // condensed three-field Newton step, so both give the same iterates (doc/incompressibility.md).
 //
-// This state is shared by the model evaluator, which linearises it with every tangent and applies
-// the pending pressure increment to trial evaluations, and the block solver, which reads the
-// blocks and writes the increment.
+// The model evaluator makes the scaled pressures p~_e = p_e / sigma_e unknowns beside the
+// displacements (a product space) and linearises this state at every evaluation; the block
+// solver reads its blocks.
 
 #include <vector>
 
@@ -36,20 +36,10 @@ struct MixedPressureState {
   Teuchos::RCP<Vector> schurDiagonal;      // sigma_e^2 (C_e + V_e / mu): minus the Schur-complement approximation
   Teuchos::RCP<Vector> constraintResidual; // sigma_e (v_e - V_e theta_phys(p_e))
 
-  // The pressure increment of the last block solve (unscaled, Pa). A trial evaluation sees p + increment; the
-  // accepted Newton iterate commits it (the line search must be the full step).
-  std::vector<double> increment;
-  bool pending = false;
-
   // Forms the blocks at displacement u and element pressures p (local elements). Collective.
   void linearise(const Assembler &assembler, const Vector &u, const std::vector<double> &pressure);
-  // p + increment if one is pending, else p.
-  const std::vector<double> &trialPressure(const std::vector<double> &pressure) const;
-  // p += increment; nothing pending afterwards.
-  void commit(std::vector<double> &pressure);
-
-private:
-  mutable std::vector<double> trial_;
+  // sigma_e of every local element: it depends on the reference volume alone.
+  std::vector<double> pressureScales(const Assembler &assembler) const;
 };
 
 } // namespace glossa::assembly

@@ -6,6 +6,11 @@
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Thyra_DefaultSpmdVectorSpace.hpp>
+#include <Thyra_DefaultScaledAdjointLinearOp.hpp>
+#include <Thyra_DefaultProductVectorSpace.hpp>
+#include <Thyra_DefaultProductVector.hpp>
+#include <Thyra_DefaultDiagonalLinearOp.hpp>
+#include <Thyra_DefaultBlockedLinearOp.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
@@ -19,7 +24,8 @@ ModelEvaluator::ModelEvaluator(Teuchos::RCP<const Assembler> assembler,
                                model::MuscleHistory *history, std::vector<mesh::NodeId> responseNodes)
     : assembler_(std::move(assembler)), solverFactory_(std::move(solverFactory)), history_(history),
       responseNodes_(std::move(responseNodes)) {
-  space_ = Thyra::createVectorSpace<double, LO, GO, Node>(assembler_->ownedMap());
+  uSpace_ = Thyra::createVectorSpace<double, LO, GO, Node>(assembler_->ownedMap());
+  space_ = uSpace_;
   matrix_ = assembler_->createMatrix();
   lambda_.assign(assembler_->numLocalElements(), 0.0);
   const auto comm = Thyra::convertTpetraToThyraComm(assembler_->ownedMap()->getComm());
@@ -58,6 +64,48 @@ void ModelEvaluator::setMultipliers(const std::vector<double> &lambda) {
                              "setMultipliers: " << lambda.size() << " values for " << lambda_.size() << " elements");
   lambda_ = lambda;
   tangentCached_ = false;
+}
+
+void ModelEvaluator::setMixedPressure(Teuchos::RCP<MixedPressureState> state) {
+  pressure_ = std::move(state);
+  if (pressure_.is_null()) {
+    space_ = uSpace_;
+    return;
+  }
+  space_ = Thyra::productVectorSpace<double>(Teuchos::tuple(uSpace_, elementSpace_)());
+  sigma_ = pressure_->pressureScales(*assembler_);
+  auto x0 = Thyra::createMember(space_);
+  Thyra::V_S(x0.ptr(), 0.0);
+  nominal_.set_x(x0);
+}
+
+Teuchos::RCP<Thyra::VectorBase<double>> ModelEvaluator::initialGuess(const Vector &u) const {
+  auto uCopy = Teuchos::rcp(new Vector(u, Teuchos::Copy));
+  auto xu = Thyra::createVector(Teuchos::RCP<Vector>(uCopy), uSpace_);
+  if (pressure_.is_null()) return xu;
+  auto xp = Thyra::createMember(elementSpace_);
+  auto data = Extract::getTpetraVector(xp)->getDataNonConst(0);
+  for (std::size_t i = 0; i < lambda_.size(); ++i) data[i] = lambda_[i] / sigma_[i];
+  const auto product = Teuchos::rcp_dynamic_cast<const Thyra::DefaultProductVectorSpace<double>>(space_, true);
+  return Thyra::defaultProductVector<double>(product, Teuchos::tuple<Teuchos::RCP<Thyra::VectorBase<double>>>(xu, xp)());
+}
+
+Teuchos::RCP<const Vector> ModelEvaluator::displacementOf(const Thyra::VectorBase<double> &x) const {
+  const Thyra::VectorBase<double> *u = &x;
+  Teuchos::RCP<const Thyra::VectorBase<double>> block;
+  if (!pressure_.is_null()) {
+    block = dynamic_cast<const Thyra::ProductVectorBase<double> &>(x).getVectorBlock(0);
+    u = block.get();
+  }
+  return Extract::getConstTpetraVector(Teuchos::rcpFromRef(*u));
+}
+
+void ModelEvaluator::acceptSolution(const Thyra::VectorBase<double> &x, Vector &u) {
+  u.assign(*displacementOf(x));
+  if (pressure_.is_null()) return;
+  const auto p = dynamic_cast<const Thyra::ProductVectorBase<double> &>(x).getVectorBlock(1);
+  const auto data = Extract::getConstTpetraVector(p)->getData(0);
+  for (std::size_t i = 0; i < lambda_.size(); ++i) lambda_[i] = sigma_[i] * data[i];
 }
 
 MEB::InArgs<double> ModelEvaluator::getNominalValues() const {
@@ -101,17 +149,17 @@ void ModelEvaluator::resetIterates(const Vector &u) {
   // With pressures as unknowns the kernel's volumetric energy is zero and the element pressure is
   // the multiplier itself: the three-field iterates would carry nothing.
   mixed_ = assembler_->scene().formulation == model::ElementFormulation::Q1P0 && pressure_.is_null();
-  if (!pressure_.is_null()) pressure_->pending = false;
   if (mixed_) bases_ = assembler_->mixedBases(u, lambda_, nullptr);
 }
 
 void ModelEvaluator::advanceIterates(const Vector &u) {
-  if (!pressure_.is_null()) pressure_->commit(lambda_);
   if (mixed_) bases_ = assembler_->mixedBases(u, lambda_, &bases_);
 }
 
 Teuchos::RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const {
-  // One matrix serves every W: NOX asks for it once per group.
+  // One matrix serves every W: NOX asks for it once per group. Mixed: a blocked operator whose
+  // blocks every evaluation of W fills (K this matrix, the others the pressure state's).
+  if (!pressure_.is_null()) return Thyra::defaultBlockedLinearOp<double>();
   return Thyra::tpetraLinearOp<double, LO, GO, Node>(space_, space_, matrix_);
 }
 
@@ -143,10 +191,10 @@ private:
 
 void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::OutArgs<double> &out) const {
   const auto start = std::chrono::steady_clock::now();
-  const Teuchos::RCP<const Vector> x = Extract::getConstTpetraVector(in.get_x());
+  const Teuchos::RCP<const Vector> x = displacementOf(*in.get_x());
   const Teuchos::RCP<Thyra::VectorBase<double>> fThyra = out.get_f();
   const Teuchos::RCP<Thyra::LinearOpBase<double>> W = out.get_W_op();
-  Teuchos::RCP<Vector> f = fThyra.is_null() ? Teuchos::null : Extract::getTpetraVector(fThyra);
+  Teuchos::RCP<Vector> f = fThyra.is_null() || !pressure_.is_null() ? Teuchos::null : Extract::getTpetraVector(fThyra);
   const Teuchos::RCP<const Thyra::VectorBase<double>> p = in.get_p(kTime);
   const double time = p.is_null() ? time_ : Thyra::get_ele(*p, 0);
   // The multipliers given (p1), else the nominal ones.
@@ -164,6 +212,13 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
   if (groups_ > 0 && !out.get_DfDp(kNeuralInputs).isEmpty())
     evaluateInputDerivative(*x, time, lambdaIn, inputs.get(), *out.get_DfDp(kNeuralInputs).getMultiVector());
 
+  if (!pressure_.is_null()) {
+    TEUCHOS_TEST_FOR_EXCEPTION(lambdaGiven || !inputs.is_null(), std::logic_error,
+                               "with pressure unknowns the multipliers and inputs are the nominal ones");
+    evaluateMixed(in, out, time);
+    assemblySeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return;
+  }
   FEMatrix *K = nullptr;
   if (!W.is_null()) {
     auto op = Extract::getTpetraOperator(W);
@@ -171,14 +226,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
     TEUCHOS_TEST_FOR_EXCEPTION(K == nullptr, std::logic_error, "W_op is not the model's FECrsMatrix");
   }
   if (f.is_null() && !K) return;
-  TEUCHOS_TEST_FOR_EXCEPTION(!pressure_.is_null() && (lambdaGiven || !inputs.is_null()), std::logic_error,
-                             "with pressure unknowns the multipliers and inputs are the nominal ones");
-  if (K && !pressure_.is_null()) {
-    // A tangent at a trial point: the point is the iterate, so its pressure is too.
-    pressure_->commit(lambda_);
-    pressure_->linearise(*assembler_, *x, lambda_);
-  }
-  const std::vector<double> &lambda = pressure_.is_null() ? lambdaIn : pressure_->trialPressure(lambda_);
+  const std::vector<double> &lambda = lambdaIn;
   // Only at the nominal inputs may the tangent be kept for the next request.
   const bool nominal = inputs.is_null();
   if (K == matrix_.get() && f.is_null() && nominal && tangentIsCachedAt(*x, time, lambda)) {
@@ -191,8 +239,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
     assemblySeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return;
   }
-  // With pressures as unknowns a tangent also linearises the pressure blocks: no shared pass.
-  const bool withTangent = !f.is_null() && !K && pressure_.is_null() && nominal;
+  const bool withTangent = !f.is_null() && !K && nominal;
   Vector fScratch(assembler_->ownedMap());
   if (withTangent) {
     lastStatus_ = assembler_->assemble(*x, time, lambda, mixed_ ? &bases_ : nullptr, f.get(), matrix_.get(),
@@ -215,6 +262,45 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
   if (!f.is_null()) ++residualEvaluations_;
   if (K || withTangent) ++tangentEvaluations_;
   assemblySeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void ModelEvaluator::evaluateMixed(const MEB::InArgs<double> &in, const MEB::OutArgs<double> &out, double time) const {
+  const auto &x = dynamic_cast<const Thyra::ProductVectorBase<double> &>(*in.get_x());
+  const Teuchos::RCP<const Vector> u = Extract::getConstTpetraVector(x.getVectorBlock(0));
+  const auto scaled = Extract::getConstTpetraVector(x.getVectorBlock(1))->getData(0);
+  std::vector<double> p(sigma_.size());
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = sigma_[i] * scaled[i];
+  const auto fThyra = out.get_f();
+  Teuchos::RCP<Thyra::ProductVectorBase<double>> f =
+      fThyra.is_null() ? Teuchos::null : Teuchos::rcp_dynamic_cast<Thyra::ProductVectorBase<double>>(fThyra, true);
+  const auto W = out.get_W_op();
+  Vector fScratch(assembler_->ownedMap());
+  Teuchos::RCP<Vector> fu = f.is_null() ? Teuchos::null : Extract::getTpetraVector(f->getNonconstVectorBlock(0));
+  // The displacement rows at the pressures p (the kernel's volumetric energy is zero: the element
+  // pressure is p_e itself), with K at fixed pressure when W is asked.
+  lastStatus_ = assembler_->assemble(*u, time, p, nullptr, fu.is_null() ? (W.is_null() ? nullptr : &fScratch) : fu.get(),
+                                     W.is_null() ? nullptr : matrix_.get());
+  // The pressure rows: sigma_e (v_e - V_e theta_phys(p_e)), and the blocks.
+  pressure_->linearise(*assembler_, *u, p);
+  if (!f.is_null()) {
+    Extract::getTpetraVector(f->getNonconstVectorBlock(1))->assign(*pressure_->constraintResidual);
+    if (!lastStatus_.valid) Thyra::V_S(fThyra.ptr(), std::numeric_limits<double>::quiet_NaN());
+    ++residualEvaluations_;
+  }
+  if (!W.is_null()) {
+    auto blocked = Teuchos::rcp_dynamic_cast<Thyra::PhysicallyBlockedLinearOpBase<double>>(W, true);
+    const auto product = Teuchos::rcp_dynamic_cast<const Thyra::ProductVectorSpaceBase<double>>(space_, true);
+    auto B = Thyra::constTpetraLinearOp<double, LO, GO, Node>(elementSpace_, uSpace_, pressure_->coupling.volumeGradient);
+    auto minusC = Teuchos::rcp(new Vector(*pressure_->compliance, Teuchos::Copy));
+    minusC->scale(-1.0);
+    blocked->beginBlockFill(product, product);
+    blocked->setBlock(0, 0, Thyra::tpetraLinearOp<double, LO, GO, Node>(uSpace_, uSpace_, matrix_));
+    blocked->setBlock(0, 1, Thyra::adjoint<double>(B));
+    blocked->setBlock(1, 0, B);
+    blocked->setBlock(1, 1, Thyra::diagonal<double>(Thyra::createVector(Teuchos::RCP<Vector>(minusC), elementSpace_)));
+    blocked->endBlockFill();
+    ++tangentEvaluations_;
+  }
 }
 
 void ModelEvaluator::evaluateResponse(const Vector &x, const MEB::OutArgs<double> &out) const {

@@ -1,8 +1,10 @@
 #pragma once
 // Serves the problem to NOX, LOCA and the controllers through Thyra (Trilinos' model-evaluator
-// interface): x is the owned displacement vector, f = f_int - f_ext, W the condensed tangent
-// (with element pressures as unknowns, setMixedPressure: the tangent at fixed pressure, whose
-// block system solvers/MixedBlockSolver solves).
+// interface): x is the owned displacement vector, f = f_int - f_ext, W the condensed tangent.
+// With element pressures as unknowns (setMixedPressure, Incompressibility/method = mixed) x is
+// the product [u; p~] of the displacements and the scaled element pressures p~_e = p_e / sigma_e
+// (MixedPressureState), f = [f_int - f_ext; sigma_e (v_e - V_e theta_phys(p_e))] and W the 2 x 2
+// blocked tangent [K, (sigma B)^T; sigma B, -C~], which solvers/MixedBlockSolver solves.
 //
 // Parameters, each with a nominal value that an evaluation uses when it is not given:
 //   p0 "time" (length 1): every load's and prescribed motion's time; LOCA's arc-length
@@ -45,10 +47,15 @@ public:
   // read them back after a solve.
   void setMultipliers(const std::vector<double> &lambda);
   const std::vector<double> &multipliers() const { return lambda_; }
-  // Incompressibility/method = mixed: every tangent also linearises the pressure blocks, trial
-  // evaluations see the block solver's pending pressure increment, and accepted iterates commit it.
-  void setMixedPressure(Teuchos::RCP<MixedPressureState> state) { pressure_ = std::move(state); }
+  // Incompressibility/method = mixed, before the first evaluation: x becomes [u; p~] (above);
+  // every evaluation linearises the pressure blocks into `state`, which the block solver reads.
+  void setMixedPressure(Teuchos::RCP<MixedPressureState> state);
   Teuchos::RCP<MixedPressureState> mixedPressure() const { return pressure_; }
+  // x for displacements u and the nominal multipliers (mixed: the pressures); the displacement
+  // part of an x; and u (and, mixed, the nominal pressures) from a solution x.
+  Teuchos::RCP<Thyra::VectorBase<double>> initialGuess(const Vector &u) const;
+  Teuchos::RCP<const Vector> displacementOf(const Thyra::VectorBase<double> &x) const;
+  void acceptSolution(const Thyra::VectorBase<double> &x, Vector &u);
   // Three-field Newton iterates (Q1-P0): reset to the exact condensation at u before a solve,
   // advanced to every accepted Newton iterate (fem::MixedBase).
   void resetIterates(const Vector &u);
@@ -82,7 +89,9 @@ private:
 
   Teuchos::RCP<const Assembler> assembler_;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
-  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;         // x and f: u, or [u; p~]
+  Teuchos::RCP<const Thyra::VectorSpaceBase<double>> uSpace_;        // the owned displacements
+  std::vector<double> sigma_; // mixed: the pressure scale sigma_e = mu / V_e^(1/3) per element
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> timeSpace_;     // p0, locally replicated
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> elementSpace_;  // p1, one entry per element
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> inputSpace_;    // p2, locally replicated
@@ -94,9 +103,12 @@ private:
   Thyra::ModelEvaluatorBase::InArgs<double> prototypeInArgs_, nominal_;
   Thyra::ModelEvaluatorBase::OutArgs<double> prototypeOutArgs_;
   double time_ = 0.0;
-  mutable std::vector<double> lambda_; // nominal p1; mixed: the pressures, committed by evaluations
+  std::vector<double> lambda_; // nominal p1; mixed: the pressures of the last accepted solution
   Teuchos::RCP<MixedPressureState> pressure_;
   std::vector<fem::MixedBase> bases_;
+  // An evaluation of the mixed problem at x = [u; p~].
+  void evaluateMixed(const Thyra::ModelEvaluatorBase::InArgs<double> &in,
+                     const Thyra::ModelEvaluatorBase::OutArgs<double> &out, double time) const;
   // The responses and derivatives an evaluation asked for, at its x, time and multipliers.
   void evaluateResponse(const Vector &x, const Thyra::ModelEvaluatorBase::OutArgs<double> &out) const;
   void evaluateInputDerivative(const Vector &x, double time, const std::vector<double> &lambda,
