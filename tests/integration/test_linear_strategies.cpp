@@ -86,11 +86,11 @@ TEST(LinearStrategyLists, EachSmootherIsWhatTheDeckSays) {
     EXPECT_EQ(m.sublist("smoother: params").get<int>("partitioner: overlap"), 0);
     EXPECT_EQ(m.sublist("smoother: params").get<int>("relaxation: sweeps"), 2);
     EXPECT_EQ(m.sublist("smoother: params").get<std::string>("relaxation: container"), "Dense");
-    EXPECT_EQ(m.get<std::string>("reuse: type"), "RP");
+    EXPECT_EQ(m.get<std::string>("reuse: type"), "RAP"); // the default
   }
   {
-    const auto m = mueluList({"Linear solver/MueLu reuse=RAP"});
-    EXPECT_EQ(m.get<std::string>("reuse: type"), "RAP");
+    const auto m = mueluList({"Linear solver/MueLu reuse=RP"});
+    EXPECT_EQ(m.get<std::string>("reuse: type"), "RP");
   }
   {
     const auto m = mueluList({"Linear solver/MueLu smoother=vertex-patch"});
