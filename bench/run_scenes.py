@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Time per step and per Newton iteration of every scene deck (issue 4), run on demand:
 
-  /usr/bin/python3 bench/run_scenes.py [--repeats 3] [--ranks 1,2] [--glossa build/glossa]
+  /usr/bin/python3 bench/run_scenes.py [--repeats 3] [--ranks 1,2] [--glossa build/glossa] [--only 's7_1_*']
 
-Runs inputs/paper/*.xml (and any deck given with --deck) and writes bench/results/scenes.csv:
+Runs inputs/paper/*.xml (those matching --only, a glob on the file name; and any deck given with
+--deck) and writes bench/results/scenes.csv:
 steps, Newton, Krylov and Uzawa iterations, wall time (median over repeats), seconds per step and
 per Newton iteration, the assembly share, and the largest dilatation error. Standard library only.
 """
@@ -36,8 +37,10 @@ def main():
     p.add_argument("--repeats", default=3, type=int)
     p.add_argument("--ranks", default="1", type=lambda s: [int(x) for x in s.split(",")])
     p.add_argument("--deck", action="append", default=[])
+    p.add_argument("--only", default="*", help="glob on the file names of inputs/paper (default: every deck)")
     args = p.parse_args()
-    decks = sorted(glob.glob(os.path.join(ROOT, "inputs", "paper", "*.xml"))) + args.deck
+    decks = sorted(glob.glob(os.path.join(ROOT, "inputs", "paper", args.only + ("" if args.only.endswith(".xml") else ".xml"))))
+    decks += args.deck
     rows = []
     for deck in decks:
         for ranks in args.ranks:

@@ -91,7 +91,8 @@ HillFibreResponse HillMuscleFibre::evaluate(const HillFibreInput &in) const {
     const ContractileTension c = contractile_.evaluate(lambdaC, (lambdaC - in.lambdaCOld) / in.dt, in.alpha);
     return ValueSlope{s.T - c.T, s.dLambdaC - c.dLambdaC - c.dRate / in.dt};
   };
-  const ScalarSolveResult root = solver_.solve(residual, lo, in.lambdaF, in.lambdaCOld);
+  const ScalarSolveResult root =
+      solver_.solve(residual, lo, in.lambdaF, std::isfinite(in.lambdaCStart) ? in.lambdaCStart : in.lambdaCOld);
   r.iterations = root.iterations;
   switch (root.status) {
     case ScalarSolveStatus::Converged:

@@ -21,6 +21,8 @@
 //    curve: lambda_c stays at the jump, T_s is the series tension there, and the tangent is that
 //    of a locked contractile element, dT_s/dlambda_f at fixed lambda_c.
 
+#include <limits>
+
 #include "materials/BracketedNewtonSolver.hpp"
 #include "materials/ContractileElement.hpp"
 #include "materials/ParallelElement.hpp"
@@ -49,6 +51,9 @@ struct HillFibreInput {
   double alpha = 0.0;       // activation in [0, 1]
   double dt = 1.0;          // time step [s], > 0
   double lambdaCOld = 1.0;  // committed contractile stretch
+  // Where the local solve for lambda_c starts (not finite: lambdaCOld): any start inside its
+  // bracket finds the same root to the solve's tolerance.
+  double lambdaCStart = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct HillFibreResponse {

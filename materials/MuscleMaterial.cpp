@@ -1,5 +1,6 @@
 #include "materials/MuscleMaterial.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -51,7 +52,8 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
     const Family &family = families_[f];
     const Eigen::Vector3d N = ownDirections ? family.geometry.N : Eigen::Vector3d(in.directions.col(f));
     const FibreStretch s = fibreStretch(in.F, N);
-    const HillFibreResponse h = family.fibre.evaluate({s.lambdaBar, in.alpha(f), in.dt, in.lambdaCOld(f)});
+    const double start = in.lambdaCStart.size() == n ? in.lambdaCStart(f) : std::numeric_limits<double>::quiet_NaN();
+    const HillFibreResponse h = family.fibre.evaluate({s.lambdaBar, in.alpha(f), in.dt, in.lambdaCOld(f), start});
     if (!succeeded(h.status)) {
       r.status = h.status;
       r.failedFamily = f;

@@ -32,6 +32,7 @@ struct MusclePointInput {
   double dt = 1.0;          // time step [s]
   FamilyValues alpha;       // activation of each family's muscle group, in [0, 1]
   FamilyValues lambdaCOld;  // committed contractile stretch per family
+  FamilyValues lambdaCStart; // where each family's local solve starts (empty: lambdaCOld)
   // Reference fibre directions at this point (unit columns, one per family) when the direction
   // varies over the body (a fan, a field read from a file); empty: each family's own N.
   FamilyDirections directions;

@@ -77,6 +77,11 @@ NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const NewtonPara
 
 NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
                                  double updateTolerance) const {
+  return solve(u, [residualTolerance](double) { return residualTolerance; }, onIteration, updateTolerance);
+}
+
+NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toleranceRule,
+                                 const IterationCallback &onIteration, double updateTolerance) const {
   using namespace NOX::StatusTest;
   NewtonResult result;
 
@@ -97,6 +102,7 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, 
   group->computeF();
   const double normF0 = group->getNormF();
   result.residualNorms.push_back(normF0);
+  const double residualTolerance = toleranceRule(normF0);
 
   auto normF = rcp(new NormFAboveRoundOff(residualTolerance, *model_));
   auto update = rcp(new NormWRMS(updateTolerance < 0.0 ? parameters_.updateTolerance : updateTolerance,

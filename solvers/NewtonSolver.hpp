@@ -28,10 +28,16 @@ public:
   NewtonSolver(Teuchos::RCP<assembly::ModelEvaluator> model, const NewtonParameters &parameters,
                double lengthScale, double linearTolerance, bool keepLinearSolver = false);
 
+  // The absolute residual tolerance of a solve, from the norm of its initial residual (a caller
+  // that scales the tolerance by the residual at the start needs no assembly of its own).
+  using ToleranceRule = std::function<double(double initialResidualNorm)>;
+
   // Solves from the initial guess u (owned vector), overwriting it with the solution when
   // converged. `residualTolerance` is absolute (the caller scales it by the load).
   // `updateTolerance` < 0: the deck's relative update tolerance.
   NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
+                     double updateTolerance = -1.0) const;
+  NewtonResult solve(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration,
                      double updateTolerance = -1.0) const;
 
   // Solves K(u) x_j = b_j for every column of `rhs` with the tangent at u (the model's time and

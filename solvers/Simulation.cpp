@@ -727,13 +727,15 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
   model_->setMultipliers(state.lambda);
   muscleHistory_->beginStep(time, dt); // trial activation; lambda_c stays at its committed value
 
-  // The Newton tolerance scales with the load: the external force and the step's initial residual.
-  assembly::Vector f0(assembler_->ownedMap());
-  std::vector<double> lambdaNow = state.lambda;
-  assembler_->assemble(state.u, time, lambdaNow, nullptr, &f0, nullptr);
-  double reference = std::max(assembler_->externalForceNorm(time), f0.norm2());
-  if (!(reference > 0.0)) reference = 1.0;
-  const double tolerance = newton_->relativeResidualTolerance() * reference;
+  // The Newton tolerance scales with the load: the external force and the step's initial
+  // residual, which the first Newton solve assembles anyway.
+  const double externalForce = assembler_->externalForceNorm(time);
+  const double relative = newton_->relativeResidualTolerance();
+  const NewtonSolver::ToleranceRule tolerance = [externalForce, relative](double initialResidualNorm) {
+    double reference = std::max(externalForce, initialResidualNorm);
+    if (!(reference > 0.0)) reference = 1.0;
+    return relative * reference;
+  };
 
   const bool progress = detail_ && !quiet;
   auto onNewton = [&](int k, double normF, int krylov) {

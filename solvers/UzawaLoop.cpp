@@ -117,20 +117,33 @@ DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) con
 }
 
 UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, double residualTolerance,
-                             const NewtonSolver::IterationCallback &onNewton,
-                             const std::function<void(int, const NewtonResult &, const DilatationError &)> &onUzawa) const {
+                             const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const {
+  return solve(u, lambda, [residualTolerance](double) { return residualTolerance; }, onNewton, onUzawa);
+}
+
+UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
+                             const NewtonSolver::ToleranceRule &toleranceRule,
+                             const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const {
   UzawaResult result;
-  // Inexact: while the multipliers are still far from their fixed point, solving each Newton
-  // problem to 1e-8 is wasted (the next update changes the problem by more than that); the
-  // residual tolerance is relative to the same load scale as the tight one.
-  const double looseTolerance =
-      std::max(residualTolerance, residualTolerance * innerTolerance_ / newton_.relativeResidualTolerance());
+  // The tight tolerance, fixed by the first solve's initial residual. Inexact: while the
+  // multipliers are still far from their fixed point, solving each Newton problem to 1e-8 is
+  // wasted (the next update changes the problem by more than that); the loose residual tolerance
+  // is relative to the same load scale as the tight one.
+  double residualTolerance = -1.0;
+  auto tightTolerance = [&](double initialNorm) {
+    if (residualTolerance < 0.0) residualTolerance = toleranceRule(initialNorm);
+    return residualTolerance;
+  };
+  auto looseTolerance = [&](double initialNorm) {
+    const double t = tightTolerance(initialNorm);
+    return std::max(t, t * innerTolerance_ / newton_.relativeResidualTolerance());
+  };
   bool tight = !inexact_;
   std::vector<double> previousErrors; // after the last tight solve, per tissue
   for (int k = 1; k <= (measuresPhysicalLaw() ? maxIterations_ : 1); ++k) {
     newton_.model().setMultipliers(lambda);
-    NewtonResult n = tight ? newton_.solve(u, residualTolerance, onNewton)
-                           : newton_.solve(u, looseTolerance, onNewton, innerTolerance_);
+    NewtonResult n = tight ? newton_.solve(u, NewtonSolver::ToleranceRule(tightTolerance), onNewton)
+                           : newton_.solve(u, NewtonSolver::ToleranceRule(looseTolerance), onNewton, innerTolerance_);
     // Mixed: the element pressures were unknowns of the solve.
     if (mixed_) lambda = newton_.model().multipliers();
     ++result.solves;

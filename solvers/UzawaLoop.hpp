@@ -34,10 +34,13 @@ public:
   static double tangentKappa(const IncompressibilityParameters &parameters, double materialKappa, double mu);
 
   // Solves at fixed time; u and lambda are updated in place (the caller keeps copies to roll
-  // back). `residualTolerance` is absolute.
+  // back). `residualTolerance` is absolute, or given by the norm of the first Newton solve's
+  // initial residual (the rule is asked once; every solve of the loop uses its answer).
+  using UzawaCallback = std::function<void(int, const NewtonResult &, const DilatationError &)>;
   UzawaResult solve(assembly::Vector &u, std::vector<double> &lambda, double residualTolerance,
-                    const NewtonSolver::IterationCallback &onNewton,
-                    const std::function<void(int, const NewtonResult &, const DilatationError &)> &onUzawa) const;
+                    const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const;
+  UzawaResult solve(assembly::Vector &u, std::vector<double> &lambda, const NewtonSolver::ToleranceRule &residualTolerance,
+                    const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const;
 
   DilatationError dilatationError(const assembly::ElementFields &fields) const;
 

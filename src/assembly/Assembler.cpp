@@ -406,10 +406,14 @@ fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix 
   };
   if (region < 0) return kernel(fem::UniformPointLaw(*tissue.matrix));
   std::array<const double *, 8> lambdaCOld;
-  for (int q = 0; q < 8; ++q) lambdaCOld[q] = history_.committedLambdaC(i, q);
+  std::array<double *, 8> lambdaCStart;
+  for (int q = 0; q < 8; ++q) {
+    lambdaCOld[q] = history_.committedLambdaC(i, q);
+    lambdaCStart[q] = history_.lambdaCStart(i, q);
+  }
   return kernel(model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
                                       history_.familyActivation(i), history_.dt(), lambdaCOld, nullptr,
-                                      scene_.muscles.pointDirectionsOf(e)));
+                                      scene_.muscles.pointDirectionsOf(e), lambdaCStart));
 }
 
 Vector Assembler::nodalForces(const Teuchos::ArrayRCP<const double> &uData, double time,

@@ -42,10 +42,14 @@ MuscleFields updateMuscleHistory(const Assembler &assembler, const Vector &u, mo
       std::array<Eigen::Matrix3d, 8> F;
       std::array<double, 8> dV;
       std::array<const double *, 8> lambdaCOld;
-      for (int q = 0; q < 8; ++q) lambdaCOld[q] = history.committedLambdaC(i, q);
+      std::array<double *, 8> lambdaCStart; // the converged iterate's roots: found at once
+      for (int q = 0; q < 8; ++q) {
+        lambdaCOld[q] = history.committedLambdaC(i, q);
+        lambdaCStart[q] = history.lambdaCStart(i, q);
+      }
       model::ElementMuscleResponse response;
       const model::TissuePointLaw law(*r.law, muscles.directions[e], history.familyActivation(i), history.dt(),
-                                      lambdaCOld, &response, muscles.pointDirectionsOf(e));
+                                      lambdaCOld, &response, muscles.pointDirectionsOf(e), lambdaCStart);
       materials::PointResponse ignored;
       bool ok = fem::quadratureDeformationGradients(X, ue, F, dV);
       for (int q = 0; ok && q < 8; ++q) ok = F[q].determinant() > 0.0 && law.evaluate(q, F[q], ignored);

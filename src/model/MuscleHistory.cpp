@@ -23,6 +23,7 @@ MuscleHistory::MuscleHistory(const MuscleArchitecture &architecture, const std::
   // The zero-strain configuration is the optimal length: lambda_c = 1 (MuscleMaterial::initialLambdaC).
   lambdaC_.assign(n, 1.0);
   lambdaCTrial_ = lambdaC_;
+  lambdaCStart_ = lambdaC_;
   for (const auto &m : architecture.external) externalLambdaC_.emplace_back(m.fibres.size(), 1.0);
   externalLambdaCTrial_ = externalLambdaC_;
   for (const auto &g : architecture.groups) alpha_.push_back(g.initialActivation);
@@ -52,6 +53,7 @@ void MuscleHistory::beginStep(double tNew, double dt) {
     alphaTrial_[g] = architecture_->groups[g].activation.step(alpha_[g], inputTrial_[g], dt);
   }
   lambdaCTrial_ = lambdaC_;
+  lambdaCStart_ = lambdaC_;
   externalLambdaCTrial_ = externalLambdaC_;
 }
 
@@ -101,6 +103,10 @@ double *MuscleHistory::trialLambdaC(std::size_t i, int q) {
   return lambdaCTrial_.data() + offset_[i] + static_cast<std::size_t>(q * familyCount(i));
 }
 
+double *MuscleHistory::lambdaCStart(std::size_t i, int q) const {
+  return lambdaCStart_.data() + offset_[i] + static_cast<std::size_t>(q * familyCount(i));
+}
+
 void MuscleHistory::commit() {
   lambdaC_ = lambdaCTrial_;
   externalLambdaC_ = externalLambdaCTrial_;
@@ -118,7 +124,7 @@ void MuscleHistory::restore(const Snapshot &state) {
   for (std::size_t m = 0; fits && m < externalLambdaC_.size(); ++m)
     fits = state.externalLambdaC[m].size() == externalLambdaC_[m].size();
   if (!fits) throw std::invalid_argument("MuscleHistory::restore: the state is another mesh's or partition's");
-  lambdaC_ = lambdaCTrial_ = state.lambdaC;
+  lambdaC_ = lambdaCTrial_ = lambdaCStart_ = state.lambdaC;
   alpha_ = alphaTrial_ = state.alpha;
   inputTrial_ = state.input;
   externalLambdaC_ = externalLambdaCTrial_ = state.externalLambdaC;

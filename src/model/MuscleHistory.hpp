@@ -43,6 +43,13 @@ public:
   const double *committedLambdaC(std::size_t localElement, int q) const;
   double *trialLambdaC(std::size_t localElement, int q);
   int familyCount(std::size_t localElement) const;
+  // Where the next local solve for lambda_c of point q starts, and where it leaves its root: a
+  // cache, not state (any start inside the solve's bracket finds the root to its tolerance, 1e-14
+  // of lambda_c), reset to the committed values by beginStep and restore so that a step's
+  // evaluations do not depend on what ran before it (a restart repeats them bit for bit). Within
+  // a step, Newton's iterates move lambda_c little: started from the last one, the local solve
+  // takes fewer iterations.
+  double *lambdaCStart(std::size_t localElement, int q) const;
   // lambda_c of fibre k of external muscle m (every rank keeps all; the node's owner updates it).
   double committedExternalLambdaC(std::size_t muscle, std::size_t k) const { return externalLambdaC_[muscle][k]; }
   double &trialExternalLambdaC(std::size_t muscle, std::size_t k) { return externalLambdaCTrial_[muscle][k]; }
@@ -80,6 +87,7 @@ private:
   std::vector<int> region_;         // per local element
   std::vector<std::size_t> offset_; // per local element: first lambda_c value (8 points x families)
   std::vector<double> lambdaC_, lambdaCTrial_;
+  mutable std::vector<double> lambdaCStart_;
   std::vector<std::vector<double>> externalLambdaC_, externalLambdaCTrial_;
   std::vector<double> alpha_, alphaTrial_, inputTrial_;
   std::vector<std::optional<double>> override_;

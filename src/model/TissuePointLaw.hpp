@@ -23,11 +23,15 @@ public:
   // `lambdaCOld(q)` points at familyCount() committed values for point q.
   // `pointDirections`, when not null, gives the directions per point (the element's directions
   // varying inside it) and replaces `directions`.
+  // `lambdaCStart(q)`, when given, points at familyCount() values where point q's local solves
+  // start, and receives their roots (MuscleHistory::lambdaCStart).
   TissuePointLaw(const materials::MuscleMaterial &law, const materials::FamilyDirections &directions,
                  const materials::FamilyValues &alpha, double dt,
                  std::array<const double *, 8> lambdaCOld, ElementMuscleResponse *record = nullptr,
-                 const std::array<materials::FamilyDirections, 8> *pointDirections = nullptr)
-      : law_(law), lambdaCOld_(lambdaCOld), record_(record), pointDirections_(pointDirections) {
+                 const std::array<materials::FamilyDirections, 8> *pointDirections = nullptr,
+                 std::array<double *, 8> lambdaCStart = {})
+      : law_(law), lambdaCOld_(lambdaCOld), lambdaCStart_(lambdaCStart), record_(record),
+        pointDirections_(pointDirections) {
     input_.directions = directions;
     input_.alpha = alpha;
     input_.dt = dt;
@@ -38,7 +42,10 @@ public:
     input_.F = F;
     if (pointDirections_) input_.directions = (*pointDirections_)[static_cast<std::size_t>(q)];
     input_.lambdaCOld = Eigen::Map<const Eigen::VectorXd>(lambdaCOld_[q], n);
+    double *start = lambdaCStart_[static_cast<std::size_t>(q)];
+    if (start) input_.lambdaCStart = Eigen::Map<const Eigen::VectorXd>(start, n);
     const materials::MusclePointResponse r = law_.evaluate(input_);
+    if (start && r.ok()) Eigen::Map<Eigen::VectorXd>(start, n) = r.lambdaC;
     if (record_) {
       record_->lambdaC[q] = r.lambdaC;
       record_->lambdaF[q] = r.lambdaF;
@@ -56,6 +63,7 @@ private:
   const materials::MuscleMaterial &law_;
   mutable materials::MusclePointInput input_;
   std::array<const double *, 8> lambdaCOld_;
+  std::array<double *, 8> lambdaCStart_;
   ElementMuscleResponse *record_;
   const std::array<materials::FamilyDirections, 8> *pointDirections_;
 };
