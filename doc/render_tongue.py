@@ -27,7 +27,7 @@ sys.path.insert(0, HERE)
 
 def parse(argv):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("results", help="the run's output directory (results.xdmf, results.h5, summary.json)")
+    p.add_argument("results", help="the run's output directory (results.xdmf, results.h5, results_steps/, summary.json)")
     p.add_argument("png", help="the picture to write")
     p.add_argument("--field", default="displacement",
                    help="cell field to colour by, or 'displacement' for its magnitude (default)")

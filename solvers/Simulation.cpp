@@ -89,6 +89,7 @@ void markInterrupted(nlohmann::json &summary, int signal) {
 void prepareOutputDirectory(const std::filesystem::path &dir) {
   std::filesystem::create_directories(dir);
   std::filesystem::remove_all(dir / "checkpoint"); // an earlier run's: --restart must not continue it
+  std::filesystem::remove_all(dir / "results_steps");
   for (const char *file : {"results.xdmf", "results.h5", "traces.csv", "reactions.csv", "resultants.csv",
                            "volumes.csv", "activation.csv", "controls.csv", "summary.json"})
     std::filesystem::remove(dir / file);

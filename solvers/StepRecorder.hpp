@@ -2,7 +2,7 @@
 // Writes what a run records of every converged step: the traced points (traces.csv), the
 // reactions of the Dirichlet conditions (reactions.csv), the muscle groups' input, activation,
 // FFMR and mean fibre and contractile stretch (activation.csv), and, every `Output/every` steps, the fields for
-// ParaView (results.h5 + XDMF: displacement, element pressure, dilatation, J, Cauchy stress and,
+// ParaView (results.h5 and results_steps/ + XDMF: displacement, element pressure, dilatation, J, Cauchy stress and,
 // with muscles, fibre stress, directions, stretches and muscle sets). Every rank gathers; the
 // writer rank writes.
 
@@ -28,7 +28,7 @@ namespace glossa::solvers {
 // back to it, so the files end as an uninterrupted run's would.
 struct OutputMark {
   std::map<std::string, std::uintmax_t> csvBytes; // by file name
-  std::vector<io::XdmfStep> fieldSteps;           // the steps results.h5 holds
+  std::vector<io::XdmfStep> fieldSteps;           // the field steps written (results_steps/)
 };
 
 class StepRecorder {

@@ -8,6 +8,7 @@
 
 #include "io/output/AtomicFile.hpp"
 #include "io/output/Hdf5Handle.hpp"
+#include "io/output/OutputError.hpp"
 #include "io/output/RoundTripText.hpp"
 
 namespace glossa::io {
@@ -94,6 +95,8 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
   // of truncating it) leaves a ParaView that still has it open reading intact old data.
   std::filesystem::remove(xdmfPath());
   std::filesystem::remove(hdf5Path());
+  std::filesystem::remove_all(stepsDirectory());
+  std::filesystem::create_directories(stepsDirectory());
 
   const Hdf5Handle file(H5Fcreate(hdf5Path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, unlockedAccess().get()), H5Fclose,
                         "creating " + hdf5Path().string());
@@ -118,15 +121,18 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
       mesh_{baseName + ".h5", numNodes, numCells, "/mesh/coordinates", "/mesh/topology"}, steps_(std::move(resumeSteps)) {
   checkBaseName(baseName_);
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const Hdf5Handle file(H5Fopen(hdf5Path().c_str(), H5F_ACC_RDWR, unlockedAccess().get()), H5Fclose,
-                        "opening " + hdf5Path().string() + " to resume it");
-  // Steps written after the checkpoint are written again by the restarted run.
-  for (std::size_t k = steps_.size();; ++k) {
-    const std::string group = stepGroupName(k);
-    if (H5Lexists(file.get(), group.c_str(), H5P_DEFAULT) <= 0) break;
-    checkHdf5(H5Ldelete(file.get(), group.c_str(), H5P_DEFAULT), "removing /" + group);
+  {
+    const Hdf5Handle file(H5Fopen(hdf5Path().c_str(), H5F_ACC_RDONLY, unlockedAccess().get()), H5Fclose,
+                          "opening " + hdf5Path().string() + " to resume it");
   }
-  checkHdf5(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing " + hdf5Path().string());
+  for (std::size_t k = 0; k < steps_.size(); ++k) {
+    steps_[k].heavyDataFile = stepFile(k);
+    if (!std::filesystem::exists(directory_ / stepFile(k)))
+      throw OutputError((directory_ / stepFile(k)).string() + ": missing; the run cannot resume at its checkpoint");
+  }
+  // Steps written after the checkpoint are written again by the restarted run.
+  for (std::size_t k = steps_.size(); std::filesystem::exists(directory_ / stepFile(k)); ++k)
+    std::filesystem::remove(directory_ / stepFile(k));
   writeXdmf();
 }
 
@@ -161,13 +167,17 @@ void ResultWriter::checkStep(double time, const std::vector<Field> &nodeFields,
 void ResultWriter::writeStep(double time, const std::vector<Field> &nodeFields,
                              const std::vector<Field> &cellFields) {
   checkStep(time, nodeFields, cellFields);
-  const std::string group = stepGroupName(steps_.size());
-  XdmfStep step{time, {}};
-  // Open for this step only: between steps the file is closed and complete, so a reader (ParaView
-  // on a running job) opens it as a finished one.
-  const Hdf5Handle file(H5Fopen(hdf5Path().c_str(), H5F_ACC_RDWR, unlockedAccess().get()), H5Fclose,
-                        "opening " + hdf5Path().string());
+  const std::size_t index = steps_.size();
+  const std::string group = stepGroupName(index);
+  XdmfStep step{time, {}, stepFile(index)};
+  // The step's own file, written under a temporary name and renamed when complete: a reader
+  // (ParaView on a running job) sees either no file or the whole step, and never a file that is
+  // being changed (a reader of one file the writer appends to met its metadata in flux).
+  const std::filesystem::path final = directory_ / step.heavyDataFile;
+  const std::filesystem::path part = final.string() + ".part";
   try {
+    const Hdf5Handle file(H5Fcreate(part.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, unlockedAccess().get()), H5Fclose,
+                          "creating " + part.string());
     const Hdf5Handle g(H5Gcreate2(file.get(), group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                        "creating group /" + group);
     writeTimeAttribute(g.get(), time);
@@ -183,15 +193,24 @@ void ResultWriter::writeStep(double time, const std::vector<Field> &nodeFields,
     };
     for (const auto &f : nodeFields) write(f, mesh_.numNodes, Centering::Node);
     for (const auto &f : cellFields) write(f, mesh_.numCells, Centering::Cell);
+    checkHdf5(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing " + part.string());
   } catch (...) {
-    // Drop the half-written group so the file holds only complete steps and a retry can reuse
-    // the name; the XDMF file still describes the previous steps only.
-    H5Ldelete(file.get(), group.c_str(), H5P_DEFAULT);
+    // Nothing of the step stays: the XDMF file still describes the previous steps only.
+    std::error_code ignored;
+    std::filesystem::remove(part, ignored);
     throw;
   }
-  checkHdf5(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing " + hdf5Path().string());
+  std::error_code error;
+  std::filesystem::rename(part, final, error);
+  if (error) throw OutputError(part.string() + ": cannot be renamed to " + final.string() + ": " + error.message());
   steps_.push_back(std::move(step));
   writeXdmf();
+}
+
+std::filesystem::path ResultWriter::stepsDirectory() const { return directory_ / (baseName_ + "_steps"); }
+
+std::string ResultWriter::stepFile(std::size_t index) const {
+  return baseName_ + "_steps/" + stepGroupName(index) + ".h5";
 }
 
 void ResultWriter::writeXdmf() const {

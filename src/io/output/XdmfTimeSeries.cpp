@@ -43,12 +43,13 @@ void meshItems(std::ostringstream &x, const XdmfMesh &mesh, const std::string &i
   x << indent << "</Geometry>\n";
 }
 
-void attributeItem(std::ostringstream &x, const XdmfMesh &mesh, const XdmfAttribute &a, const std::string &indent) {
+void attributeItem(std::ostringstream &x, const XdmfMesh &mesh, const std::string &file, const XdmfAttribute &a,
+                   const std::string &indent) {
   const bool node = a.center == Centering::Node;
   x << indent << "<Attribute Name=\"" << xmlEscaped(a.name) << "\" AttributeType=\"" << xdmfAttributeType(a.components)
     << "\" Center=\"" << (node ? "Node" : "Cell") << "\">\n";
-  dataItem(x, indent + "  ", dimensions(node ? mesh.numNodes : mesh.numCells, a.components), "Float",
-           mesh.heavyDataFile, a.dataset);
+  dataItem(x, indent + "  ", dimensions(node ? mesh.numNodes : mesh.numCells, a.components), "Float", file,
+           a.dataset);
   x << indent << "</Attribute>\n";
 }
 } // namespace
@@ -78,7 +79,8 @@ std::string composeXdmfTimeSeries(const XdmfMesh &mesh, const std::vector<XdmfSt
       x << "      <Grid Name=\"step " << i << "\" GridType=\"Uniform\">\n"
         << "        <Time Value=\"" << roundTripText(steps[i].time) << "\"/>\n";
       meshItems(x, mesh, "        ");
-      for (const auto &a : steps[i].attributes) attributeItem(x, mesh, a, "        ");
+      const std::string &file = steps[i].heavyDataFile.empty() ? mesh.heavyDataFile : steps[i].heavyDataFile;
+      for (const auto &a : steps[i].attributes) attributeItem(x, mesh, file, a, "        ");
       x << "      </Grid>\n";
     }
     x << "    </Grid>\n";

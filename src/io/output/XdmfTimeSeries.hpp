@@ -1,6 +1,6 @@
 #pragma once
-// The text of an XDMF 3 file describing a hexahedral mesh and its fields over time, with all
-// heavy data in one HDF5 file next to it. ParaView (Xdmf3 reader) opens it as a time series:
+// The text of an XDMF 3 file describing a hexahedral mesh and its fields over time, with the
+// heavy data in HDF5 files next to it (the mesh's, and each step's own or the mesh's). ParaView (Xdmf3 reader) opens it as a time series:
 // a Temporal Collection with one Uniform grid per step, each repeating the same mesh
 // datasets and listing that step's attributes. Pure text composition: no file access here.
 
@@ -23,6 +23,8 @@ struct XdmfAttribute {
 struct XdmfStep {
   double time;
   std::vector<XdmfAttribute> attributes;
+  // The HDF5 file of this step's attributes, relative to the XDMF file; empty: the mesh's.
+  std::string heavyDataFile = {};
 };
 
 // Where the mesh lives: coordinates (numNodes x 3 float64), topology (numCells x 8 int64, VTK

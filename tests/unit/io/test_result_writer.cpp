@@ -1,13 +1,16 @@
-// ResultWriter: what it writes reads back exactly with the plain HDF5 C API, the XDMF index names
-// exactly the datasets that exist, bad input is refused before anything is written, and a run
-// that stops (writer destroyed, or process killed) after a step leaves that step readable.
+// ResultWriter: what it writes (the mesh file and one file per step) reads back exactly with the
+// plain HDF5 C API, the XDMF index names exactly the datasets that exist, bad input is refused
+// before anything is written, and a run that stops (writer destroyed, or process killed) after a
+// step leaves that step readable.
 
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include <sys/wait.h>
@@ -112,24 +115,36 @@ std::vector<std::smatch> matches(const std::string &text, const std::string &pat
   return {std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator()};
 }
 
-// Every HDF DataItem of the XDMF file must point into `<base>.h5` at a dataset that exists with
-// the declared dimensions, and every dataset in the file must be referenced.
-void expectXdmfMatchesHdf5(const std::filesystem::path &xdmf, const Hdf5File &file, const std::string &h5Name) {
-  const std::string text = readText(xdmf);
+// Step k's file of the run <base> in `dir`.
+std::filesystem::path stepFile(const std::filesystem::path &dir, const std::string &base, int k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "step_%06d.h5", k);
+  return dir / (base + "_steps") / name;
+}
+
+// Every HDF DataItem of the XDMF file must point into `<base>.h5` (the mesh) or a step file of
+// `<base>_steps/`, at a dataset that exists with the declared dimensions; every dataset of those
+// files must be referenced, and no other file (a leftover .part) may lie in the steps folder.
+void expectXdmfMatchesHdf5(const std::filesystem::path &dir, const std::string &base) {
+  const std::string text = readText(dir / (base + ".xdmf"));
   ASSERT_NE(text.find("</Xdmf>"), std::string::npos) << "XDMF file is incomplete";
-  std::set<std::string> referenced;
+  std::map<std::string, std::set<std::string>> referenced; // file -> datasets
   const std::string dataItem = R"re(<DataItem Dimensions="([^"]*)"[^>]*Format="HDF">([^<:]*):([^<]*)</DataItem>)re";
   for (const auto &m : matches(text, dataItem)) {
-    EXPECT_EQ(m[2].str(), h5Name);
-    const std::string path = m[3].str();
-    referenced.insert(path);
-    ASSERT_TRUE(file.hasLink(path)) << path;
+    const std::string name = m[2].str(), path = m[3].str();
+    EXPECT_TRUE(name == base + ".h5" || name.rfind(base + "_steps/step_", 0) == 0) << name;
+    referenced[name].insert(path);
+    const Hdf5File file(dir / name);
+    ASSERT_TRUE(file.hasLink(path)) << name << ":" << path;
     std::vector<hsize_t> dims;
     std::istringstream declared(m[1].str());
     for (hsize_t d; declared >> d;) dims.push_back(d);
     EXPECT_EQ(dims, file.doubles(path).dims) << path; // reading as double converts int64 exactly here
   }
-  EXPECT_EQ(referenced, file.datasetPaths());
+  std::set<std::string> files{base + ".h5"};
+  for (const auto &entry : std::filesystem::directory_iterator(dir / (base + "_steps")))
+    files.insert(base + "_steps/" + entry.path().filename().string());
+  for (const auto &name : files) EXPECT_EQ(referenced[name], Hdf5File(dir / name).datasetPaths()) << name;
 }
 
 std::vector<double> xdmfTimes(const std::filesystem::path &xdmf) {
@@ -150,10 +165,9 @@ TEST(ResultWriter, TwoStepsReadBackExactly) {
     write(writer, s1);
     EXPECT_EQ(writer.stepsWritten(), 2u);
   }
-  const Hdf5File file(dir / "out/results.h5");
-  expectMeshReadsBack(file, mesh);
-  expectStepReadsBack(file, "/step_000000", s0);
-  expectStepReadsBack(file, "/step_000001", s1);
+  expectMeshReadsBack(Hdf5File(dir / "out/results.h5"), mesh);
+  expectStepReadsBack(Hdf5File(stepFile(dir / "out", "results", 0)), "/step_000000", s0);
+  expectStepReadsBack(Hdf5File(stepFile(dir / "out", "results", 1)), "/step_000001", s1);
 }
 
 TEST(ResultWriter, XdmfNamesExactlyTheDatasetsAndBothTimes) {
@@ -161,15 +175,11 @@ TEST(ResultWriter, XdmfNamesExactlyTheDatasetsAndBothTimes) {
   const TwoHexMesh mesh;
   const StepData s0 = makeStep(0.1, 3.0, mesh), s1 = makeStep(1.0 / 3.0, 11.0, mesh);
   ResultWriter writer(dir.path(), "results", mesh.nodes, mesh.hexes);
-  {
-    const Hdf5File file(writer.hdf5Path()); // read while the writer still has it open
-    expectXdmfMatchesHdf5(writer.xdmfPath(), file, "results.h5");
-    EXPECT_TRUE(xdmfTimes(writer.xdmfPath()).empty());
-  }
+  expectXdmfMatchesHdf5(dir.path(), "results"); // while the writer lives
+  EXPECT_TRUE(xdmfTimes(writer.xdmfPath()).empty());
   write(writer, s0);
   write(writer, s1);
-  const Hdf5File file(writer.hdf5Path());
-  expectXdmfMatchesHdf5(writer.xdmfPath(), file, "results.h5");
+  expectXdmfMatchesHdf5(dir.path(), "results");
   EXPECT_EQ(xdmfTimes(writer.xdmfPath()), (std::vector<double>{s0.time, s1.time}));
 
   const std::string text = readText(writer.xdmfPath());
@@ -208,7 +218,7 @@ TEST(ResultWriter, RefusesBadFieldsBeforeWritingAnything) {
   expectRefused({}, {makeField("a/b", 1, 2, 0.0)}, "'a/b'");
   expectRefused({}, {good}, "not finite", std::nan(""));
   EXPECT_EQ(writer.stepsWritten(), 0u);
-  EXPECT_FALSE(Hdf5File(writer.hdf5Path()).hasLink("/step_000000"));
+  EXPECT_TRUE(std::filesystem::is_empty(writer.stepsDirectory()));
 
   writer.writeStep(1.0, {}, {good});
   expectRefused({}, {good}, "not after", 1.0); // times must increase
@@ -231,17 +241,16 @@ TEST(ResultWriter, WriterDestroyedAfterFirstStepLeavesItReadable) {
     ResultWriter writer(dir.path(), "run", mesh.nodes, mesh.hexes);
     write(writer, s0);
   } // nothing else is called: the run "ends" here
-  const Hdf5File file(dir / "run.h5");
-  expectMeshReadsBack(file, mesh);
-  expectStepReadsBack(file, "/step_000000", s0);
-  expectXdmfMatchesHdf5(dir / "run.xdmf", file, "run.h5");
+  expectMeshReadsBack(Hdf5File(dir / "run.h5"), mesh);
+  expectStepReadsBack(Hdf5File(stepFile(dir.path(), "run", 0)), "/step_000000", s0);
+  expectXdmfMatchesHdf5(dir.path(), "run");
   EXPECT_EQ(xdmfTimes(dir / "run.xdmf"), std::vector<double>{0.0});
 }
 
 // A running job: between steps a reader in another process that takes HDF5's file locks (as
-// ParaView 5.11 does) opens the file, and the writer writes its next step while the reader still
-// holds it. Before, the writer kept the file open with an exclusive lock and the reader's open
-// failed.
+// ParaView 5.11 does) opens the mesh file and the first step's, and the writer writes its next
+// step while the reader still holds them. Before, the writer kept the file open with an
+// exclusive lock and the reader's open failed.
 TEST(ResultWriter, ARunningJobsFileOpensInALockingReaderAndTheRunGoesOn) {
   ScratchDirectory dir;
   const TwoHexMesh mesh;
@@ -257,11 +266,12 @@ TEST(ResultWriter, ARunningJobsFileOpensInALockingReaderAndTheRunGoesOn) {
     const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
     H5Pset_file_locking(fapl, true, false);
     const hid_t file = H5Fopen((dir / "run.h5").c_str(), H5F_ACC_RDONLY, fapl);
-    const char ok = file >= 0 ? 'y' : 'n';
+    const hid_t step = H5Fopen(stepFile(dir.path(), "run", 0).c_str(), H5F_ACC_RDONLY, fapl);
+    const char ok = file >= 0 && step >= 0 ? 'y' : 'n';
     [[maybe_unused]] auto n = ::write(opened[1], &ok, 1);
     char done = 0;
     n = ::read(written[0], &done, 1);
-    ::_exit(file >= 0 && H5Fclose(file) >= 0 ? 0 : 1);
+    ::_exit(file >= 0 && step >= 0 && H5Fclose(file) >= 0 && H5Fclose(step) >= 0 ? 0 : 1);
   }
   char ok = 0;
   ASSERT_EQ(::read(opened[0], &ok, 1), 1);
@@ -272,8 +282,7 @@ TEST(ResultWriter, ARunningJobsFileOpensInALockingReaderAndTheRunGoesOn) {
   int status = 0;
   ASSERT_EQ(::waitpid(reader, &status, 0), reader);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-  const Hdf5File file(dir / "run.h5");
-  expectStepReadsBack(file, "/step_000001", s1);
+  expectStepReadsBack(Hdf5File(stepFile(dir.path(), "run", 1)), "/step_000001", s1);
 }
 
 // A real kill: the child process writes one step and dies by SIGKILL with the HDF5 file still
@@ -296,10 +305,9 @@ TEST(ResultWriter, KilledProcessLeavesWrittenStepReadable) {
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "the child failed before being killed";
-  const Hdf5File file(dir / "killed.h5");
-  expectMeshReadsBack(file, mesh);
-  expectStepReadsBack(file, "/step_000000", s0);
-  expectXdmfMatchesHdf5(dir / "killed.xdmf", file, "killed.h5");
+  expectMeshReadsBack(Hdf5File(dir / "killed.h5"), mesh);
+  expectStepReadsBack(Hdf5File(stepFile(dir.path(), "killed", 0)), "/step_000000", s0);
+  expectXdmfMatchesHdf5(dir.path(), "killed");
   EXPECT_EQ(xdmfTimes(dir / "killed.xdmf"), std::vector<double>{0.25});
 }
 
@@ -326,12 +334,11 @@ TEST(ResultWriter, ResumedAtACheckpointDropsTheLaterStepsAndCarriesOn) {
     write(writer, s3);
   }
   EXPECT_EQ(xdmfTimes(dir / "results.xdmf"), (std::vector<double>{0.1, 0.2, 0.3, 0.4}));
-  const Hdf5File file(dir / "results.h5");
-  expectMeshReadsBack(file, mesh);
-  expectStepReadsBack(file, "/step_000001", s1);
-  expectStepReadsBack(file, "/step_000002", again);
-  expectStepReadsBack(file, "/step_000003", s3);
-  expectXdmfMatchesHdf5(dir / "results.xdmf", file, "results.h5");
+  expectMeshReadsBack(Hdf5File(dir / "results.h5"), mesh);
+  expectStepReadsBack(Hdf5File(stepFile(dir.path(), "results", 1)), "/step_000001", s1);
+  expectStepReadsBack(Hdf5File(stepFile(dir.path(), "results", 2)), "/step_000002", again);
+  expectStepReadsBack(Hdf5File(stepFile(dir.path(), "results", 3)), "/step_000003", s3);
+  expectXdmfMatchesHdf5(dir.path(), "results");
 }
 
 TEST(ResultWriter, ResumingAMissingFileIsAnOutputError) {
@@ -347,9 +354,8 @@ TEST(ResultWriter, NewRunReplacesEarlierFiles) {
     write(first, makeStep(1.0, 0.0, mesh));
   }
   ResultWriter second(dir.path(), "results", mesh.nodes, mesh.hexes);
-  const Hdf5File file(dir / "results.h5");
-  EXPECT_FALSE(file.hasLink("/step_000000"));
-  expectXdmfMatchesHdf5(dir / "results.xdmf", file, "results.h5");
+  EXPECT_FALSE(std::filesystem::exists(stepFile(dir.path(), "results", 0)));
+  expectXdmfMatchesHdf5(dir.path(), "results");
 }
 
 TEST(ResultWriter, H5dumpReadsTheFileWhenInstalled) {
@@ -360,8 +366,10 @@ TEST(ResultWriter, H5dumpReadsTheFileWhenInstalled) {
     ResultWriter writer(dir.path(), "results", mesh.nodes, mesh.hexes);
     write(writer, makeStep(0.5, 1.0, mesh));
   }
-  const std::string command = "/usr/bin/h5dump -H " + (dir / "results.h5").string() + " > /dev/null";
-  EXPECT_EQ(std::system(command.c_str()), 0);
+  for (const auto &file : {dir / "results.h5", stepFile(dir.path(), "results", 0)}) {
+    const std::string command = "/usr/bin/h5dump -H " + file.string() + " > /dev/null";
+    EXPECT_EQ(std::system(command.c_str()), 0) << file;
+  }
 }
 
 } // namespace
