@@ -130,9 +130,12 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
     if (!std::filesystem::exists(directory_ / stepFile(k)))
       throw OutputError((directory_ / stepFile(k)).string() + ": missing; the run cannot resume at its checkpoint");
   }
-  // Steps written after the checkpoint are written again by the restarted run.
+  // Steps written after the checkpoint are written again by the restarted run; a step file the
+  // kill cut short (its .part) goes too.
   for (std::size_t k = steps_.size(); std::filesystem::exists(directory_ / stepFile(k)); ++k)
     std::filesystem::remove(directory_ / stepFile(k));
+  for (const auto &entry : std::filesystem::directory_iterator(stepsDirectory()))
+    if (entry.path().extension() == ".part") std::filesystem::remove(entry.path());
   writeXdmf();
 }
 

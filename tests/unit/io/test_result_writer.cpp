@@ -312,8 +312,8 @@ TEST(ResultWriter, KilledProcessLeavesWrittenStepReadable) {
 }
 
 // A restart (glossa run --restart) resumes the files from a checkpoint made after two steps: the
-// third step, written before the run was killed, goes, and the steps written after the restart
-// follow the first two as if the run had never stopped.
+// third step, written before the run was killed, goes (with a step file the kill cut short), and
+// the steps written after the restart follow the first two as if the run had never stopped.
 TEST(ResultWriter, ResumedAtACheckpointDropsTheLaterStepsAndCarriesOn) {
   ScratchDirectory dir;
   const TwoHexMesh mesh;
@@ -327,9 +327,13 @@ TEST(ResultWriter, ResumedAtACheckpointDropsTheLaterStepsAndCarriesOn) {
     atCheckpoint = writer.steps();
     write(writer, s2);
   }
+  // A kill while step 4 was being written left its .part, which the restart removes.
+  std::ofstream(stepFile(dir.path(), "results", 4).string() + ".part") << "cut short";
   {
     ResultWriter writer(dir.path(), "results", mesh.nodes.size(), mesh.hexes.size(), atCheckpoint);
     EXPECT_EQ(xdmfTimes(dir / "results.xdmf"), (std::vector<double>{0.1, 0.2}));
+    EXPECT_FALSE(std::filesystem::exists(stepFile(dir.path(), "results", 2)));
+    EXPECT_FALSE(std::filesystem::exists(stepFile(dir.path(), "results", 4).string() + ".part"));
     write(writer, again);
     write(writer, s3);
   }
