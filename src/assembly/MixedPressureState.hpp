@@ -31,15 +31,20 @@ struct MixedPressureState {
   // pressure rows 1e-11 of the displacement rows (SI units, 1 mm elements), and GMRES would stop
   // before it had touched them. Scaled, every block is of the size mu h.
   PressureCoupling coupling;               // its volumeGradient holds sigma B
-  Teuchos::RCP<Vector> pressureScale;      // sigma_e
   Teuchos::RCP<Vector> compliance;         // sigma_e^2 C_e
   Teuchos::RCP<Vector> schurDiagonal;      // sigma_e^2 (C_e + V_e / mu): minus the Schur-complement approximation
   Teuchos::RCP<Vector> constraintResidual; // sigma_e (v_e - V_e theta_phys(p_e))
 
+  // sigma_e per local element (it depends on the reference volume alone), as a vector too, and
+  // sum_e (sigma_e V_e)^2 over the local elements: the size of the pressure rows' terms.
+  std::vector<double> sigma;
+  Teuchos::RCP<Vector> pressureScale;
+  double constraintTerms = 0.0;
+
+  // The scales, once, before the first linearisation. Collective.
+  void initialise(const Assembler &assembler);
   // Forms the blocks at displacement u and element pressures p (local elements). Collective.
   void linearise(const Assembler &assembler, const Vector &u, const std::vector<double> &pressure);
-  // sigma_e of every local element: it depends on the reference volume alone.
-  std::vector<double> pressureScales(const Assembler &assembler) const;
 };
 
 } // namespace glossa::assembly

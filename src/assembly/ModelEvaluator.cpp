@@ -74,7 +74,7 @@ void ModelEvaluator::setMixedPressure(Teuchos::RCP<MixedPressureState> state) {
     return;
   }
   space_ = Thyra::productVectorSpace<double>(Teuchos::tuple(uSpace_, elementSpace_)());
-  sigma_ = pressure_->pressureScales(*assembler_);
+  pressure_->initialise(*assembler_);
   auto x0 = Thyra::createMember(space_);
   Thyra::V_S(x0.ptr(), 0.0);
   nominal_.set_x(x0);
@@ -86,7 +86,7 @@ Teuchos::RCP<Thyra::VectorBase<double>> ModelEvaluator::initialGuess(const Vecto
   if (pressure_.is_null()) return xu;
   auto xp = Thyra::createMember(elementSpace_);
   auto data = Extract::getTpetraVector(xp)->getDataNonConst(0);
-  for (std::size_t i = 0; i < lambda_.size(); ++i) data[i] = lambda_[i] / sigma_[i];
+  for (std::size_t i = 0; i < lambda_.size(); ++i) data[i] = lambda_[i] / pressure_->sigma[i];
   const auto product = Teuchos::rcp_dynamic_cast<const Thyra::DefaultProductVectorSpace<double>>(space_, true);
   return Thyra::defaultProductVector<double>(product, Teuchos::tuple<Teuchos::RCP<Thyra::VectorBase<double>>>(xu, xp)());
 }
@@ -106,7 +106,7 @@ void ModelEvaluator::acceptSolution(const Thyra::VectorBase<double> &x, Vector &
   if (pressure_.is_null()) return;
   const auto p = dynamic_cast<const Thyra::ProductVectorBase<double> &>(x).getVectorBlock(1);
   const auto data = Extract::getConstTpetraVector(p)->getData(0);
-  for (std::size_t i = 0; i < lambda_.size(); ++i) lambda_[i] = sigma_[i] * data[i];
+  for (std::size_t i = 0; i < lambda_.size(); ++i) lambda_[i] = pressure_->sigma[i] * data[i];
 }
 
 MEB::InArgs<double> ModelEvaluator::getNominalValues() const {
@@ -269,8 +269,9 @@ void ModelEvaluator::evaluateMixed(const MEB::InArgs<double> &in, const MEB::Out
   const auto &x = dynamic_cast<const Thyra::ProductVectorBase<double> &>(*in.get_x());
   const Teuchos::RCP<const Vector> u = Extract::getConstTpetraVector(x.getVectorBlock(0));
   const auto scaled = Extract::getConstTpetraVector(x.getVectorBlock(1))->getData(0);
-  std::vector<double> p(sigma_.size());
-  for (std::size_t i = 0; i < p.size(); ++i) p[i] = sigma_[i] * scaled[i];
+  const std::vector<double> &sigma = pressure_->sigma;
+  std::vector<double> p(sigma.size());
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = sigma[i] * scaled[i];
   const auto fThyra = out.get_f();
   Teuchos::RCP<Thyra::ProductVectorBase<double>> f =
       fThyra.is_null() ? Teuchos::null : Teuchos::rcp_dynamic_cast<Thyra::ProductVectorBase<double>>(fThyra, true);
@@ -288,17 +289,16 @@ void ModelEvaluator::evaluateMixed(const MEB::InArgs<double> &in, const MEB::Out
   // 8 elements, which cancel there against the deviatoric ones. With kappa = 0 nothing else in the
   // kernel's scale is of their size (measured on the isometric block at full activation: the
   // residual stalled at 8-18 eps of the kernel's scale alone).
-  double local = 0.0, global = 0.0;
+  double local = pressure_->constraintTerms, global = 0.0;
   const auto &B = *pressure_->coupling.volumeGradient;
-  for (std::size_t i = 0; i < sigma_.size(); ++i) {
-    const double term = sigma_[i] * pressure_->coupling.referenceVolume[i];
+  for (std::size_t i = 0; i < sigma.size(); ++i) {
     typename CrsMatrix::local_inds_host_view_type columns;
     typename CrsMatrix::values_host_view_type values;
     B.getLocalRowView(static_cast<LO>(i), columns, values);
     double row = 0.0;
     for (std::size_t k = 0; k < values.extent(0); ++k) row += values(k) * values(k);
-    const double nodalSum = 8.0 * std::abs(p[i]) * std::sqrt(row) / sigma_[i];
-    local += term * term + nodalSum * nodalSum;
+    const double nodalSum = 8.0 * std::abs(p[i]) * std::sqrt(row) / sigma[i];
+    local += nodalSum * nodalSum;
   }
   Teuchos::reduceAll(*assembler_->comm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   lastStatus_.forceScale = std::sqrt(lastStatus_.forceScale * lastStatus_.forceScale + global);

@@ -41,7 +41,6 @@ public:
     time_ = t;
     tangentCached_ = false;
   }
-  double time() const { return time_; }
   // Nominal p1, per local element (zero until set). With element pressures as unknowns
   // (setMixedPressure) they are those pressures, which every accepted Newton iterate updates:
   // read them back after a solve.
@@ -91,7 +90,6 @@ private:
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;         // x and f: u, or [u; p~]
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> uSpace_;        // the owned displacements
-  std::vector<double> sigma_; // mixed: the pressure scale sigma_e = mu / V_e^(1/3) per element
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> timeSpace_;     // p0, locally replicated
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> elementSpace_;  // p1, one entry per element
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> inputSpace_;    // p2, locally replicated
