@@ -16,6 +16,25 @@ namespace glossa::solvers {
 using Teuchos::ParameterList;
 
 namespace {
+// Ifpack2's words. "cg" is a Lanczos estimate from CG's coefficients: its Ritz value converges to
+// lambda_max far faster than the power method, whose underestimate leaves the top of the spectrum
+// outside the smoother's interval. Lanczos needs a symmetric matrix: on the nonsymmetric tangents
+// of the tongue's control scenes it estimated 0.96 where lambda_max is about 11.7 (no estimate of
+// D^-1 A with a unit diagonal can be below 1) and GMRES stalled at its iteration limit, so a
+// nonsymmetric tangent always uses the power method (doc/incompressibility.md).
+bool powerMethod(const LinearSolverParameters &s, const LinearSolverContext &c) {
+  return s.chebyshevEigenvalueMethod == EigenvalueMethod::power || !c.symmetric;
+}
+std::string eigenAnalysisType(const LinearSolverParameters &s, const LinearSolverContext &c) {
+  return powerMethod(s, c) ? "power method" : "cg";
+}
+// The deck's count, or the method's default: 15 Lanczos steps, 50 power iterations (20 left the
+// degree-6 smoother indefinite on the active-muscle block).
+int eigenvalueIterations(const LinearSolverParameters &s, const LinearSolverContext &c) {
+  if (s.chebyshevEigenvalueIterations > 0) return s.chebyshevEigenvalueIterations;
+  return powerMethod(s, c) ? 50 : 15;
+}
+
 ParameterList mueluParameters(const LinearSolverParameters &s, const LinearSolverContext &c) {
   ParameterList m;
   m.set("verbosity", s.verbose ? "low" : "none");
@@ -40,7 +59,8 @@ ParameterList mueluParameters(const LinearSolverParameters &s, const LinearSolve
     level.set("smoother: type", "CHEBYSHEV");
     ParameterList &sp = level.sublist("smoother: params");
     sp.set("chebyshev: degree", degree);
-    sp.set("chebyshev: eigenvalue max iterations", s.chebyshevEigenvalueIterations);
+    sp.set("chebyshev: eigenvalue max iterations", eigenvalueIterations(s, c));
+    sp.set("eigen-analysis: type", eigenAnalysisType(s, c));
     sp.set("chebyshev: ratio eigenvalue", s.chebyshevEigenvalueRatio);
   };
   // Ifpack2 BLOCK RELAXATION with the "linear" partitioner: MueLu sets one part per node (rows /
@@ -116,14 +136,15 @@ ParameterList froschParameters(const LinearSolverParameters &s, const LinearSolv
   return f;
 }
 
-ParameterList ifpack2Parameters(const LinearSolverParameters &s) {
+ParameterList ifpack2Parameters(const LinearSolverParameters &s, const LinearSolverContext &c) {
   ParameterList p;
   if (s.ifpack2Type == Ifpack2Type::ilut) {
     p.set("Prec Type", "ILUT");
   } else if (s.ifpack2Type == Ifpack2Type::chebyshev) {
     p.set("Prec Type", "CHEBYSHEV");
     p.sublist("Ifpack2 Settings").set("chebyshev: degree", s.smootherDegree);
-    p.sublist("Ifpack2 Settings").set("chebyshev: eigenvalue max iterations", s.chebyshevEigenvalueIterations);
+    p.sublist("Ifpack2 Settings").set("chebyshev: eigenvalue max iterations", eigenvalueIterations(s, c));
+    p.sublist("Ifpack2 Settings").set("eigen-analysis: type", eigenAnalysisType(s, c));
   } else {
     p.set("Prec Type", "RELAXATION");
     p.sublist("Ifpack2 Settings").set("relaxation: type", "Symmetric Gauss-Seidel");
@@ -178,7 +199,7 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &
     p->sublist("Preconditioner Types").set("FROSch", froschParameters(s, c));
   } else if (s.preconditioner == Preconditioner::ifpack2) {
     p->set("Preconditioner Type", "Ifpack2");
-    p->sublist("Preconditioner Types").set("Ifpack2", ifpack2Parameters(s));
+    p->sublist("Preconditioner Types").set("Ifpack2", ifpack2Parameters(s, c));
   } else {
     p->set("Preconditioner Type", "None");
   }

@@ -23,8 +23,9 @@ public:
   using IterationCallback = std::function<void(int, double, int)>;
 
   // `linearTolerance`: relative residual reduction asked of each Krylov solve. `keepLinearSolver`:
-  // one NOX group (and so one Stratimikos solver with its preconditioner) serves every solve, so
-  // that a reused MueLu hierarchy lives across Uzawa iterations and load steps.
+  // one NOX group (and so one Stratimikos solver with its preconditioner) serves every solve
+  // until forgetLinearSolver(), so that a reused MueLu hierarchy lives across Uzawa iterations
+  // (and load steps, if never forgotten).
   NewtonSolver(Teuchos::RCP<assembly::ModelEvaluator> model, const NewtonParameters &parameters,
                double lengthScale, double linearTolerance, bool keepLinearSolver = false);
 
@@ -45,6 +46,10 @@ public:
   // to the deck's linear tolerance: the sensitivities of a converged state (issue 5). Returns
   // the Krylov iterations; throws std::runtime_error if u is inadmissible or a solve fails.
   int solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x) const;
+
+  // The next solve builds its linear solver and preconditioner afresh (MueLu reuse scope = step:
+  // called when a step solve starts, so a step's iterates do not depend on earlier steps' solves).
+  void forgetLinearSolver() const { group_ = Teuchos::null; }
 
   double relativeResidualTolerance() const { return parameters_.residualTolerance; }
   // The model it solves: its nominal time and multipliers are those of the next solve.

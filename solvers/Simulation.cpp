@@ -442,7 +442,13 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
   }
   if (mixedPressure.is_null() && !onPath_ && time_.atLimitPoint != AtLimitPoint::ignore)
     limit_ = std::make_unique<LimitPointMonitor>(steps_->nominalStep(), time_.limitPointTolerance);
-  newton_ = std::make_unique<NewtonSolver>(model_, newtonParameters_, lengthScale_, linear_.tolerance, linear_.keptForTheRun);
+  // A MueLu hierarchy kept beyond a Newton solve (MueLu reuse scope = step or run); the direct,
+  // FROSch, Ifpack2 and mixed block solves build theirs per Newton solve.
+  keptScope_ = usesDirectSolve(linear_, context) || linear_.preconditioner != Preconditioner::mueLu || !mixedPressure.is_null()
+                   ? ReuseScope::newtonSolve
+                   : linear_.reuseScope;
+  newton_ = std::make_unique<NewtonSolver>(model_, newtonParameters_, lengthScale_, linear_.tolerance,
+                                           keptScope_ != ReuseScope::newtonSolve);
   uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility_, physicalVolumetric);
   // A raised kappa_AL reaches the tangent through the tissue's volumetric law (the Assembler's).
   uzawa_->onKappaRaised([this](std::size_t tissue, double kappaT) {
@@ -465,7 +471,8 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
 void Simulation::warnIgnoredIterativeSettings(const io::Deck &deck, long long unknowns) {
   static const char *const iterativeOnly[] = {
       "preconditioner", "MueLu smoother", "smoother degree", "vertex-patch levels", "patch sweeps",
-      "Chebyshev eigenvalue iterations", "Chebyshev eigenvalue ratio", "MueLu reuse", "coarse size",
+      "Chebyshev eigenvalue method", "Chebyshev eigenvalue iterations", "Chebyshev eigenvalue ratio", "MueLu reuse",
+      "MueLu reuse scope", "coarse size",
       "FROSch coarse space", "FROSch overlap", "Ifpack2 type"};
   for (const char *name : iterativeOnly) {
     if (!deck.given({"Linear solver", name})) continue;
@@ -723,6 +730,7 @@ void Simulation::writeInterruptedSummary(int signal) {
 
 Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &state, bool quiet) {
   Attempt out;
+  if (keptScope_ == ReuseScope::step) newton_->forgetLinearSolver();
   assembler_->applyDirichlet(state.u, time);
   model_->setTime(time);
   model_->setMultipliers(state.lambda);

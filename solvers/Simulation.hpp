@@ -170,6 +170,7 @@ private:
   IncompressibilityParameters incompressibility_;
   NewtonParameters newtonParameters_;
   LinearSolverParameters linear_;
+  ReuseScope keptScope_ = ReuseScope::newtonSolve; // how long the Newton solver keeps its linear solver
   OutputParameters output_;
   bool controlled_ = false; // Control/type is not none
 

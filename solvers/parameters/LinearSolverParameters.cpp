@@ -59,10 +59,17 @@ Teuchos::ParameterList linearSolverParameters() {
                     {"finest", "all"});
   io::declareInt(p, "patch sweeps", 1, "symmetric Gauss-Seidel sweeps of the vertex-patch smoother",
                  io::Range::closed(1, 10));
-  io::declareInt(p, "Chebyshev eigenvalue iterations", 50,
-                 "power iterations estimating the largest eigenvalue: an underestimate makes the degree-6 "
-                 "smoother indefinite and breaks CG (20 did on the active-muscle block, 10 for nu >= 0.49 "
-                 "on the step-44 block; doc/incompressibility.md)", io::Range::closed(5, 200));
+  io::declareString(p, "Chebyshev eigenvalue method", "Lanczos",
+                    "how the Chebyshev smoother estimates the largest eigenvalue of D^-1 A: Lanczos (CG "
+                    "steps; 15 give it to 6 digits on the active-muscle block) or power iterations (they "
+                    "converge from below and slowly: 20 left the degree-6 smoother indefinite there and "
+                    "broke CG); a nonsymmetric tangent (follower loads, external muscles) always uses "
+                    "power iterations, since Lanczos broke down on it (doc/incompressibility.md)",
+                    {"Lanczos", "power"});
+  io::declareInt(p, "Chebyshev eigenvalue iterations", 0,
+                 "steps of the eigenvalue method; 0: its default, 15 Lanczos steps or 50 power iterations "
+                 "(an underestimate makes the degree-6 smoother indefinite and breaks CG: 6 Lanczos steps "
+                 "and 20 power iterations did on the active-muscle block)", io::Range::closed(0, 200));
   io::declareDouble(p, "Chebyshev eigenvalue ratio", 100.0, "",
                     "lambda_max / lambda_min of the interval the Chebyshev smoother damps",
                     io::Range::atLeast(2.0));
@@ -75,11 +82,14 @@ Teuchos::ParameterList linearSolverParameters() {
                     "smoother always uses none (Ifpack2 13.2's overlapping block relaxation returns "
                     "NaN when reused; it runs on one rank only)",
                     {"none", "RP", "RAP", "full"});
-  io::declareString(p, "MueLu reuse scope", "Newton solve",
+  io::declareString(p, "MueLu reuse scope", "step",
                     "how long a reused hierarchy lives: Newton solve (rebuilt at the start of every "
-                    "Newton solve, i.e. every Uzawa iteration and load step) or run (kept across "
-                    "Uzawa iterations and load steps; only with MueLu reuse = RP, RAP or full)",
-                    {"Newton solve", "run"});
+                    "Newton solve, i.e. every Uzawa iteration), step (the default: kept across the "
+                    "Uzawa iterations of a load step, rebuilt when a step or a retry starts, so runs "
+                    "and restarts stay deterministic) or run (kept across load steps; a restarted "
+                    "run's iterates differ within the solver tolerances); only with MueLu reuse = RP, "
+                    "RAP or full, and only for the iterative solve with MueLu",
+                    {"Newton solve", "step", "run"});
   io::declareInt(p, "coarse size", 2000, "MueLu stops coarsening below this many rows", io::Range::atLeast(10));
   io::declareString(p, "Ifpack2 type", "symmetric Gauss-Seidel",
                     "single-level preconditioner when preconditioner = Ifpack2",
@@ -117,10 +127,13 @@ LinearSolverParameters parseLinearSolverParameters(const Teuchos::ParameterList 
   p.smootherDegree = s.get<int>("smoother degree");
   p.vertexPatchLevels = s.get<std::string>("vertex-patch levels") == "all" ? VertexPatchLevels::all : VertexPatchLevels::finest;
   p.patchSweeps = s.get<int>("patch sweeps");
+  p.chebyshevEigenvalueMethod =
+      s.get<std::string>("Chebyshev eigenvalue method") == "power" ? EigenvalueMethod::power : EigenvalueMethod::lanczos;
   p.chebyshevEigenvalueIterations = s.get<int>("Chebyshev eigenvalue iterations");
   p.chebyshevEigenvalueRatio = s.get<double>("Chebyshev eigenvalue ratio");
   p.mueLuReuse = s.get<std::string>("MueLu reuse");
-  p.keptForTheRun = s.get<std::string>("MueLu reuse scope") == "run";
+  const std::string scope = s.get<std::string>("MueLu reuse scope");
+  p.reuseScope = scope == "run" ? ReuseScope::run : scope == "step" ? ReuseScope::step : ReuseScope::newtonSolve;
   p.coarseSize = s.get<int>("coarse size");
   const std::string ifpack2 = s.get<std::string>("Ifpack2 type");
   p.ifpack2Type = ifpack2 == "ILUT" ? Ifpack2Type::ilut : ifpack2 == "Chebyshev" ? Ifpack2Type::chebyshev : Ifpack2Type::symmetricGaussSeidel;

@@ -17,6 +17,9 @@ enum class MueLuSmoother { chebyshev, symmetricGaussSeidel, nodeBlockGaussSeidel
 enum class VertexPatchLevels { finest, all };
 enum class FroschCoarseSpace { gdsw, rgdsw };
 enum class Ifpack2Type { symmetricGaussSeidel, chebyshev, ilut };
+enum class EigenvalueMethod { lanczos, power };
+// How long a MueLu hierarchy reused between Newton iterations lives before it is rebuilt.
+enum class ReuseScope { newtonSolve, step, run };
 
 // The defaults are the declared ones (linearSolverParameters()).
 struct LinearSolverParameters {
@@ -35,10 +38,11 @@ struct LinearSolverParameters {
   int smootherDegree = 6;
   VertexPatchLevels vertexPatchLevels = VertexPatchLevels::finest;
   int patchSweeps = 1;
-  int chebyshevEigenvalueIterations = 50;
+  EigenvalueMethod chebyshevEigenvalueMethod = EigenvalueMethod::lanczos;
+  int chebyshevEigenvalueIterations = 0; // 0: the method's default (LinearSolverFactory)
   double chebyshevEigenvalueRatio = 100.0;
   std::string mueLuReuse = "RAP"; // MueLu's own "reuse: type" word, handed to it as it is
-  bool keptForTheRun = false;      // MueLu reuse scope = run: one solver object across Newton solves
+  ReuseScope reuseScope = ReuseScope::step;
   int coarseSize = 2000;
   Ifpack2Type ifpack2Type = Ifpack2Type::symmetricGaussSeidel;
   bool verbose = false;

@@ -12,7 +12,7 @@ enum class LineSearch { fullStep, backtrack, polynomial };
 struct NewtonParameters {
   int maximumIterations = 25;
   double residualTolerance = 1e-8; // relative to the load
-  double updateTolerance = 1e-8;   // relative to the displacement
+  double updateTolerance = 1e-6;   // ||dx|| relative to ||x|| (2-norms)
   ForcingTerm forcing = ForcingTerm::type2;
   LineSearch lineSearch = LineSearch::fullStep;
 };

@@ -73,6 +73,8 @@ INSTANTIATE_TEST_SUITE_P(
                       std::vector<std::string>{"Linear solver/MueLu reuse=RAP"},
                       std::vector<std::string>{"Linear solver/MueLu reuse=full"},
                       std::vector<std::string>{"Linear solver/MueLu reuse scope=run"},
+                      std::vector<std::string>{"Linear solver/MueLu reuse scope=Newton solve"},
+                      std::vector<std::string>{"Linear solver/Chebyshev eigenvalue method=power"},
                       std::vector<std::string>{"Linear solver/MueLu reuse scope=run",
                                                "Incompressibility/method=augmented Lagrangian",
                                                "Incompressibility/dilatation tolerance=1e-7"}));
@@ -125,5 +127,30 @@ TEST(LinearStrategyLists, EachSmootherIsWhatTheDeckSays) {
     EXPECT_EQ(m.get<std::string>("smoother: type"), "CHEBYSHEV");
     EXPECT_EQ(m.sublist("smoother: params").get<int>("chebyshev: degree"), 6);
     EXPECT_EQ(m.sublist("smoother: params").get<double>("chebyshev: ratio eigenvalue"), 100.0);
+  }
+  {
+    // The eigenvalue estimate: Lanczos ("cg") with 15 steps by default, 50 power iterations when
+    // the deck asks for the power method without a count, the deck's count when it gives one.
+    const auto lanczos = mueluList({}).sublist("smoother: params");
+    EXPECT_EQ(lanczos.get<std::string>("eigen-analysis: type"), "cg");
+    EXPECT_EQ(lanczos.get<int>("chebyshev: eigenvalue max iterations"), 15);
+    const auto power = mueluList({"Linear solver/Chebyshev eigenvalue method=power"}).sublist("smoother: params");
+    EXPECT_EQ(power.get<std::string>("eigen-analysis: type"), "power method");
+    EXPECT_EQ(power.get<int>("chebyshev: eigenvalue max iterations"), 50);
+    const auto given = mueluList({"Linear solver/Chebyshev eigenvalue iterations=8"}).sublist("smoother: params");
+    EXPECT_EQ(given.get<int>("chebyshev: eigenvalue max iterations"), 8);
+  }
+  {
+    // A nonsymmetric tangent: Lanczos broke down there, so the power method with its 50 iterations.
+    const auto schema = app::deckSchema();
+    auto deck = io::Deck::fromFile(test::inputPath("verification/step44_block.xml"));
+    deck.validate(schema);
+    solvers::LinearSolverContext nonsymmetric;
+    nonsymmetric.symmetric = false;
+    const auto p = solvers::stratimikosParameters(
+        solvers::parseLinearSolverParameters(deck.root().sublist("Linear solver")), nonsymmetric);
+    const auto &sp = p->sublist("Preconditioner Types").sublist("MueLu").sublist("smoother: params");
+    EXPECT_EQ(sp.get<std::string>("eigen-analysis: type"), "power method");
+    EXPECT_EQ(sp.get<int>("chebyshev: eigenvalue max iterations"), 50);
   }
 }
