@@ -204,8 +204,35 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toler
   return result;
 }
 
+int NewtonSolver::solveTangentWithKeptSolver(const assembly::Vector &u, const assembly::Vector &rhs, assembly::Vector &x,
+                                             double relativeTolerance) const {
+  if (!keepLinearSolver_ || group_.is_null()) {
+    assembly::MultiVector b(rhs.getMap(), 1), solution(rhs.getMap(), 1);
+    b.getVectorNonConst(0)->assign(rhs);
+    const int iterations = solveTangent(u, b, solution, relativeTolerance);
+    x.assign(*solution.getVector(0));
+    return iterations;
+  }
+  model_->resetIterates(u);
+  group_->setX(NOX::Thyra::Vector(model_->initialGuess(u)));
+  if (group_->computeJacobian() != NOX::Abstract::Group::Ok || !model_->lastStatus().valid)
+    throw std::runtime_error("tangent solve: an element is inverted at the state");
+  const auto space = model_->get_x_space();
+  auto b = rcp(new assembly::Vector(rhs, Teuchos::Copy));
+  x.putScalar(0.0);
+  const NOX::Thyra::Vector in(Thyra::createVector(RCP<assembly::Vector>(b), space));
+  NOX::Thyra::Vector out(Thyra::createVector(Teuchos::rcpFromRef(x), space));
+  ParameterList p;
+  p.set("Tolerance", relativeTolerance);
+  if (group_->applyJacobianInverse(p, in, out) != NOX::Abstract::Group::Ok)
+    throw std::runtime_error("tangent solve did not converge");
+  if (p.isSublist("Output") && p.sublist("Output").isType<int>("Number of Linear Iterations"))
+    return p.sublist("Output").get<int>("Number of Linear Iterations");
+  return 0;
+}
+
 int NewtonSolver::solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs,
-                               assembly::MultiVector &x) const {
+                               assembly::MultiVector &x, double relativeTolerance) const {
   TEUCHOS_TEST_FOR_EXCEPTION(!model_->mixedPressure().is_null(), std::logic_error,
                              "tangent solves are of the condensed tangent; the mixed method has none");
   model_->resetIterates(u);
@@ -226,7 +253,7 @@ int NewtonSolver::solveTangent(const assembly::Vector &u, const assembly::MultiV
   Thyra::SolveCriteria<double> criteria;
   criteria.solveMeasureType =
       Thyra::SolveMeasureType(Thyra::SOLVE_MEASURE_NORM_RESIDUAL, Thyra::SOLVE_MEASURE_NORM_RHS);
-  criteria.requestedTol = linearTolerance_;
+  criteria.requestedTol = relativeTolerance > 0.0 ? relativeTolerance : linearTolerance_;
   const auto status = lows->solve(Thyra::NOTRANS, *B, X.ptr(), Teuchos::ptrFromRef(criteria));
   if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED)
     throw std::runtime_error("tangent solve did not converge: " + status.message);

@@ -45,7 +45,14 @@ public:
   // Lambda, the three-field bases condensed exactly at u), one preconditioner for all columns,
   // to the deck's linear tolerance: the sensitivities of a converged state (issue 5). Returns
   // the Krylov iterations; throws std::runtime_error if u is inadmissible or a solve fails.
-  int solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x) const;
+  // `relativeTolerance` > 0 replaces the deck's linear tolerance (a caller that needs a few digits).
+  int solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x,
+                   double relativeTolerance = -1.0) const;
+  // The same for one right-hand side with the linear solver the Newton solves keep (MueLu reuse
+  // scope = step or run), so its preconditioner is updated by the reuse rule rather than built
+  // anew; without a kept solver, solveTangent.
+  int solveTangentWithKeptSolver(const assembly::Vector &u, const assembly::Vector &rhs, assembly::Vector &x,
+                                 double relativeTolerance) const;
 
   // The next solve builds its linear solver and preconditioner afresh (MueLu reuse scope = step:
   // called when a step solve starts, so a step's iterates do not depend on earlier steps' solves).
