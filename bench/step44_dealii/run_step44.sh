@@ -12,6 +12,14 @@
 #   SC_COMPARE    levels re-run with the other static-condensation setting to
 #                 check the displacement is identical (default "2 3"; "" = off)
 #   NICE          nice level (default 10); DEAL_II_NUM_THREADS is forced to 1.
+#   PREPARE_ONLY  1 = build (or keep an up-to-date build) and write the parameter
+#                 file of each level in LEVELS into its run directory, then stop:
+#                 nothing is run and bench/results/ is not touched.  Prints
+#                 "STEP44_EXE <executable>" and "STEP44_RUN_DIR <level> <dir>"
+#                 (used by bench/step44_vs_dealii.py --dealii run, which times
+#                 the executable itself).
+# The patched sources replace those in <scratch>/src only where they differ, so
+# a second call with the same scratch directory does not rebuild step-44.
 # Requires: apt-get install -y libdeal.ii-dev libdeal.ii-doc (Debian 12, deal.II 9.4)
 set -euo pipefail
 
@@ -22,6 +30,7 @@ LEVELS="${LEVELS:-2 3 4}"
 STATIC_COND="${STATIC_COND:-false}"
 SC_COMPARE="${SC_COMPARE-2 3}"
 NICE="${NICE:-10}"
+PREPARE_ONLY="${PREPARE_ONLY:-}"
 
 SCRATCH="${1:-$(mktemp -d /tmp/step44_dealii.XXXXXX)}"
 mkdir -p "$SCRATCH"
@@ -33,15 +42,18 @@ for f in step-44.cc parameters.prm CMakeLists.txt; do
 done
 
 # ---------------------------------------------------------------- copy + patch
+# The copy is patched in a staging directory; files identical to those of an
+# earlier call are left alone (mtime kept), so make has nothing to rebuild.
 SRC="$SCRATCH/src"
-rm -rf "$SRC"; mkdir -p "$SRC"
-cp "$SRC_DIR/step-44.cc" "$SRC_DIR/parameters.prm" "$SRC_DIR/CMakeLists.txt" "$SRC/"
+STAGE="$SCRATCH/src.new"
+rm -rf "$STAGE"; mkdir -p "$STAGE" "$SRC"
+cp "$SRC_DIR/step-44.cc" "$SRC_DIR/parameters.prm" "$SRC_DIR/CMakeLists.txt" "$STAGE/"
 
 # Trace block inserted right after `solution_n += solution_delta;` in
 # Solid<dim>::run(), i.e. after every converged load step.  The y-displacement
 # at the vertex (0,1,0)*scale is read twice: via VectorTools::point_value and
 # directly from the vertex DoF (loop over cell vertices); both are printed.
-cat > "$SRC/trace_block.inc" <<'CPP'
+cat > "$STAGE/trace_block.inc" <<'CPP'
         {
           // ---- Glossa verification trace (added by run_step44.sh) ----
           Point<dim> p_top;
@@ -79,11 +91,15 @@ cat > "$SRC/trace_block.inc" <<'CPP'
         }
 CPP
 
-CC="$SRC/step-44.cc"
+CC="$STAGE/step-44.cc"
 grep -q '^        solution_n += solution_delta;$' "$CC" || { echo "patch anchor not found" >&2; exit 1; }
-sed -i '/^        solution_n += solution_delta;$/r '"$SRC/trace_block.inc" "$CC"
+sed -i '/^        solution_n += solution_delta;$/r '"$STAGE/trace_block.inc" "$CC"
 sed -i 's|^#include <iostream>$|#include <iostream>\n#include <limits>\n#include <sstream>\n#include <cmath>|' "$CC"
 grep -q 'STEP44_TRACE' "$CC" || { echo "trace patch failed" >&2; exit 1; }
+for f in step-44.cc parameters.prm CMakeLists.txt trace_block.inc; do
+  cmp -s "$STAGE/$f" "$SRC/$f" || cp "$STAGE/$f" "$SRC/$f"
+done
+rm -rf "$STAGE"
 
 # ---------------------------------------------------------------- build
 BUILD="$SCRATCH/build"
@@ -99,7 +115,7 @@ EXE="$BUILD/step-44"
 # ---------------------------------------------------------------- runs
 export DEAL_II_NUM_THREADS=1 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
 
-run_one() {  # run_one <refinement> <static_cond>  -> prints run dir
+prepare_one() {  # prepare_one <refinement> <static_cond>  -> prints run dir
   local R=$1 SC=$2
   local RUN="$SCRATCH/run_R${R}_sc${SC}"
   mkdir -p "$RUN"
@@ -112,6 +128,22 @@ run_one() {  # run_one <refinement> <static_cond>  -> prints run dir
   grep -Eq 'Quadrature order *= 2$' "$RUN/parameters.prm"
   grep -Eq "Global refinement *= $R\$" "$RUN/parameters.prm"
   grep -Eq "Use static condensation *= $SC\$" "$RUN/parameters.prm"
+  echo "$RUN"
+}
+
+if [[ -n "$PREPARE_ONLY" ]]; then
+  echo "STEP44_EXE $EXE"
+  for R in $LEVELS; do
+    RUN=$(prepare_one "$R" "$STATIC_COND")
+    echo "STEP44_RUN_DIR $R $RUN"
+  done
+  exit 0
+fi
+
+run_one() {  # run_one <refinement> <static_cond>  -> prints run dir
+  local R=$1 SC=$2
+  local RUN
+  RUN=$(prepare_one "$R" "$SC")
   local t0 t1
   t0=$(date +%s.%N)
   ( cd "$RUN" && nice -n "$NICE" "$EXE" > step44.log 2>&1 ) \
