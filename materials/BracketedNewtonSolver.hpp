@@ -26,8 +26,10 @@ struct ScalarSolveOptions {
 
 struct ScalarSolveResult {
   double x = 0.0;
-  double f = 0.0;      // f(x)
-  double slope = 0.0;  // f'(x)
+  // f and f' at the last point evaluated: x itself, or, when a Newton step below xTolerance
+  // ended the solve, the point that step started from (at most xTolerance max(|x|, 1) away).
+  double f = 0.0;
+  double slope = 0.0;
   int iterations = 0;
   ScalarSolveStatus status = ScalarSolveStatus::NonFinite;
 };
@@ -81,16 +83,13 @@ ScalarSolveResult BracketedNewtonSolver::solve(Fn &&fn, double lo, double hi, do
   };
   if (!std::isfinite(lo) || !std::isfinite(hi)) return done(lo, {NAN, NAN}, ScalarSolveStatus::NonFinite);
   if (!(lo < hi)) return done(lo, {NAN, NAN}, ScalarSolveStatus::InvalidBracket);
-  const ValueSlope flo = fn(lo), fhi = fn(hi);
-  if (!finite(flo)) return done(lo, flo, ScalarSolveStatus::NonFinite);
-  if (!finite(fhi)) return done(hi, fhi, ScalarSolveStatus::NonFinite);
-  if (flo.value == 0.0) return done(lo, flo, ScalarSolveStatus::Converged);
-  if (fhi.value == 0.0) return done(hi, fhi, ScalarSolveStatus::Converged);
-  if ((flo.value > 0.0) == (fhi.value > 0.0)) return done(lo, flo, ScalarSolveStatus::InvalidBracket);
-
-  // Orient the bracket: f(xNeg) < 0 < f(xPos).
-  double xNeg = flo.value < 0.0 ? lo : hi;
-  double xPos = flo.value < 0.0 ? hi : lo;
+  // The sign-change bracket xNeg, xPos (f(xNeg) < 0 < f(xPos)) starts as [lo, hi] with the end
+  // values unknown: a warm-started Newton iteration that stays inside [lo, hi] never needs them,
+  // and the local contractile solve, started from the last root, mostly is one (two end
+  // evaluations of eight per solve). They are evaluated, and the bracket checked, at the first
+  // bisection.
+  bool bracketKnown = false;
+  double xNeg = NAN, xPos = NAN;  // the iterates so far with f < 0 and f > 0
   double x = std::isfinite(x0) ? std::clamp(x0, lo, hi) : 0.5 * (lo + hi);
   double stepBeforeLast = hi - lo, step = stepBeforeLast;
   ValueSlope fx = fn(x);
@@ -102,15 +101,44 @@ ScalarSolveResult BracketedNewtonSolver::solve(Fn &&fn, double lo, double hi, do
     else
       xPos = x;
     const double newton = fx.slope != 0.0 ? x - fx.value / fx.slope : NAN;
-    const double a = std::min(xNeg, xPos), b = std::max(xNeg, xPos);
+    const double a = bracketKnown ? std::min(xNeg, xPos) : lo, b = bracketKnown ? std::max(xNeg, xPos) : hi;
     // Bisect when Newton leaves the bracket or |f| does not fall fast enough (|2 f| > |step f'|).
     if (!(newton >= a && newton <= b) || std::abs(2.0 * fx.value) > std::abs(stepBeforeLast * fx.slope)) {
+      if (!bracketKnown) {
+        const ValueSlope flo = fn(lo), fhi = fn(hi);
+        if (!finite(flo)) return done(lo, flo, ScalarSolveStatus::NonFinite);
+        if (!finite(fhi)) return done(hi, fhi, ScalarSolveStatus::NonFinite);
+        if (flo.value == 0.0) return done(lo, flo, ScalarSolveStatus::Converged);
+        if (fhi.value == 0.0) return done(hi, fhi, ScalarSolveStatus::Converged);
+        if ((flo.value > 0.0) == (fhi.value > 0.0)) return done(lo, flo, ScalarSolveStatus::InvalidBracket);
+        // Any point of f < 0 and any of f > 0 bracket a root: the closest pair of the end
+        // points and the iterates evaluated so far.
+        const double negs[2] = {flo.value < 0.0 ? lo : hi, xNeg}, poss[2] = {flo.value < 0.0 ? hi : lo, xPos};
+        double width = INFINITY;
+        for (double n : negs)
+          for (double p : poss)
+            if (std::isfinite(n) && std::isfinite(p) && std::abs(n - p) < width) {
+              width = std::abs(n - p);
+              xNeg = n;
+              xPos = p;
+            }
+        bracketKnown = true;
+      }
+      const double aa = std::min(xNeg, xPos), bb = std::max(xNeg, xPos);
       stepBeforeLast = step;
-      step = 0.5 * (b - a);
-      x = a + step;
+      step = 0.5 * (bb - aa);
+      x = aa + step;
     } else {
       stepBeforeLast = step;
       step = x - newton;
+      // Converged once |f| is below the absolute tolerance and the Newton step below the
+      // x-resolution: x - f/f' is then the root to round-off (quadratic convergence), and
+      // neither it nor a polish needs another evaluation; f and f' are reported at x, at most
+      // xTolerance away. (A small step alone is not enough: at a kink of f, e.g. where the
+      // series element goes slack, a one-sided slope can make it small far from the root.)
+      if (std::abs(fx.value) <= options_.residualTolerance &&
+          std::abs(step) <= options_.xTolerance * std::max(std::abs(newton), 1.0))
+        return done(newton, fx, ScalarSolveStatus::Converged);
       x = newton;
     }
     fx = fn(x);
