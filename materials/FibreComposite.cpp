@@ -31,22 +31,25 @@ double matrixWeight(MatrixStressForm form, double matrixFraction) {
 
 FibreStretch fibreStretch(const Eigen::Matrix3d &F, const Eigen::Vector3d &N) {
   FibreStretch s;
-  s.I4 = isochoricI4(F, N);
+  s.M = N * N.transpose();
+  s.I4 = isochoricInvariant(F, s.M, /*withHessian=*/false);
   s.lambdaBar = std::sqrt(s.I4.value);
   return s;
 }
 
 // With psi(lambda), lambda = sqrt(I4):  d psi/d I4 = T / (2 lambda),
 // d2 psi/d I4^2 = (dT/dlambda - T/lambda) / (4 lambda^2).
-void addFibreResponse(const FibreStretch &s, double phi, const FibreTension &t, PointResponse &r) {
+void addFibreResponse(const FibreStretch &s, double phi, const FibreTension &t, FibreTerms &terms) {
   if (phi == 0.0) return;
   const double lambda = s.lambdaBar;
   const double d1 = t.T / (2.0 * lambda);
   const double d2 = (t.dTdLambda - t.T / lambda) / (4.0 * lambda * lambda);
   const Vector9 g = flatten(s.I4.dF);
+  PointResponse &r = terms.response;
   r.energy += phi * t.energy;
   r.P += phi * d1 * s.I4.dF;
-  r.dPdF += phi * (d2 * g * g.transpose() + d1 * s.I4.d2F);
+  r.dPdF.noalias() += (phi * d2) * g * g.transpose();
+  terms.hessianWeight += (phi * d1) * s.M;
 }
 
 // In Piola form the eq. 5 term is phi h dI4/dF with h = (tau_M : n (x) n) / (2 I4-bar), because
@@ -56,7 +59,7 @@ void addFibreResponse(const FibreStretch &s, double phi, const FibreTension &t, 
 //   dq/dF_mn = ((P F^T + F P^T) a)_m N_n + a_m (P^T a)_n + sum_iJ a_i (F^T a)_J dP_iJ/dF_mn.
 void removeMatrixFibreDirectionStress(const Eigen::Matrix3d &F, const Eigen::Vector3d &N,
                                       const FibreStretch &s, double phi, const PointResponse &matrix,
-                                      PointResponse &r) {
+                                      FibreTerms &terms) {
   if (phi == 0.0) return;
   const Eigen::Matrix3d &PM = matrix.P;
   const Eigen::Vector3d a = F * N;
@@ -76,8 +79,9 @@ void removeMatrixFibreDirectionStress(const Eigen::Matrix3d &F, const Eigen::Vec
   const Eigen::Matrix3d dw = w * ((2.0 / 3.0) * F.inverse().transpose() - (4.0 / aa) * a * N.transpose());
   const Vector9 dh = w * (flatten(dq) + dqFromP) + q * flatten(dw);
 
-  r.P -= phi * h * s.I4.dF;
-  r.dPdF -= phi * (flatten(s.I4.dF) * dh.transpose() + h * s.I4.d2F);
+  terms.response.P -= phi * h * s.I4.dF;
+  terms.response.dPdF.noalias() -= phi * flatten(s.I4.dF) * dh.transpose();
+  terms.hessianWeight -= (phi * h) * s.M;
 }
 
 }  // namespace glossa::materials

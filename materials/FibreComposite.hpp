@@ -37,21 +37,39 @@ const char *matrixStressFormName(MatrixStressForm form);
 // Weight of the matrix response in the composite: phi_M for MixtureWeighted, else 1.
 double matrixWeight(MatrixStressForm form, double matrixFraction);
 
-// Fibre stretch lambda-bar = sqrt(I4-bar) and the derivatives of I4-bar.
+// Fibre stretch lambda-bar = sqrt(I4-bar) and the first derivative of I4-bar (its Hessian is
+// added once per point by FibreTerms::addTo).
 struct FibreStretch {
   double lambdaBar = 1.0;
-  IsochoricInvariant I4;
+  IsochoricInvariant I4;  // value and dF; d2F left zero
+  Eigen::Matrix3d M;      // the structural tensor N (x) N
 };
 FibreStretch fibreStretch(const Eigen::Matrix3d &F, const Eigen::Vector3d &N);
 
-// r += phi psi_f, P += phi T d lambda-bar/dF, dP/dF += phi d(T d lambda-bar/dF)/dF for a fibre
-// with tension T(lambda-bar) and stiffness dT/dlambda-bar (both at the current lambda-bar).
-void addFibreResponse(const FibreStretch &s, double phi, const FibreTension &t, PointResponse &r);
+// The fibre and eq. 5 terms of a composite point response. Each term c_f d2I4-bar_f/dF2 is kept as
+// its weight c_f on N_f (x) N_f: the Hessian is linear in the structural tensor, so addTo builds
+// all of them with one addIsochoricHessian call instead of one per family.
+struct FibreTerms {
+  PointResponse response;                                    // all but the I4-bar Hessian terms
+  Eigen::Matrix3d hessianWeight = Eigen::Matrix3d::Zero();  // sum_f c_f N_f (x) N_f
+  // r += response and sum_f c_f d2I4-bar_f/dF2, for any response with energy, P and dPdF.
+  template <class Response>
+  void addTo(const Eigen::Matrix3d &F, Response &r) const {
+    r.energy += response.energy;
+    r.P += response.P;
+    r.dPdF += response.dPdF;
+    if (!hessianWeight.isZero(0.0)) addIsochoricHessian(F, hessianWeight, 1.0, r.dPdF);
+  }
+};
 
-// Eq. 5: r -= phi_f dev[(tau_M : n (x) n) n (x) n] F^{-T} and its derivative, where tau_M and
+// terms += phi psi_f, P += phi T d lambda-bar/dF, dP/dF += phi d(T d lambda-bar/dF)/dF for a fibre
+// with tension T(lambda-bar) and stiffness dT/dlambda-bar (both at the current lambda-bar).
+void addFibreResponse(const FibreStretch &s, double phi, const FibreTension &t, FibreTerms &terms);
+
+// Eq. 5: terms -= phi_f dev[(tau_M : n (x) n) n (x) n] F^{-T} and its derivative, where tau_M and
 // its derivative come from `matrix` (the full, unweighted matrix response at F).
 void removeMatrixFibreDirectionStress(const Eigen::Matrix3d &F, const Eigen::Vector3d &N,
                                       const FibreStretch &s, double phi, const PointResponse &matrix,
-                                      PointResponse &r);
+                                      FibreTerms &terms);
 
 }  // namespace glossa::materials

@@ -28,13 +28,15 @@ PointResponse FibreReinforcedMaterial::evaluate(const Eigen::Matrix3d &F) const 
   r.energy = wM * matrix.energy;
   r.P = wM * matrix.P;
   r.dPdF = wM * matrix.dPdF;
+  FibreTerms fibres;
   for (const FibreFamily &family : families_) {
     const FibreStretch s = fibreStretch(F, family.N);
     if (form_ == MatrixStressForm::FibreDirectionRemoved)
-      removeMatrixFibreDirectionStress(F, family.N, s, family.volumeFraction, matrix, r);
+      removeMatrixFibreDirectionStress(F, family.N, s, family.volumeFraction, matrix, fibres);
     if (s.lambdaBar <= 1.0) continue;  // tension only
-    addFibreResponse(s, family.volumeFraction, fibre_->evaluate(s.lambdaBar), r);
+    addFibreResponse(s, family.volumeFraction, fibre_->evaluate(s.lambdaBar), fibres);
   }
+  fibres.addTo(F, r);
   return r;
 }
 

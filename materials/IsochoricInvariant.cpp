@@ -10,28 +10,41 @@ namespace glossa::materials {
 // d2I/dF_iJ dF_kL = 2 J^{-2/3} [ d_ik M_JL - 2/3 ((F M)_iJ Finv_Lk + Finv_Ji (F M)_kL)
 //                                + 2/9 I_M Finv_Ji Finv_Lk + 1/3 I_M Finv_Li Finv_Jk ]
 // (for M = 1 this is twice the isochoric Neo-Hookean tangent per unit mu).
-IsochoricInvariant isochoricInvariant(const Eigen::Matrix3d &F, const Eigen::Matrix3d &M) {
+namespace {
+// The bracket above times c, added to d2: outer products of a = FM and b = F^-T (flattened),
+// plus the 3x3 blocks (i, k) of d_ik M and Finv_Li Finv_Jk = (F^-T)_iL (F^-T)_kJ.
+void addHessian(const Eigen::Matrix3d &FinvT, const Eigen::Matrix3d &FM, double IM, const Eigen::Matrix3d &M,
+                double c, Tangent9 &d2) {
+  const Vector9 a = flatten(FM), b = flatten(FinvT);
+  d2.noalias() += (-2.0 / 3.0 * c) * (a * b.transpose() + b * a.transpose());
+  d2.noalias() += (2.0 / 9.0 * c * IM) * b * b.transpose();
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      auto block = d2.block<3, 3>(3 * i, 3 * k);
+      block.noalias() += (1.0 / 3.0 * c * IM) * FinvT.row(k).transpose() * FinvT.row(i);
+      if (i == k) block += c * M;
+    }
+}
+}  // namespace
+
+IsochoricInvariant isochoricInvariant(const Eigen::Matrix3d &F, const Eigen::Matrix3d &M, bool withHessian) {
   const double J = F.determinant();
-  const Eigen::Matrix3d Finv = F.inverse();
+  const Eigen::Matrix3d FinvT = F.inverse().transpose();
   const Eigen::Matrix3d FM = F * M;
   const double IM = (FM.array() * F.array()).sum();
   const double Jm23 = std::pow(J, -2.0 / 3.0);
 
   IsochoricInvariant r;
   r.value = Jm23 * IM;
-  r.dF = Jm23 * (2.0 * FM - (2.0 / 3.0) * IM * Finv.transpose());
-  const double c = 2.0 * Jm23;
-  for (int i = 0; i < 3; ++i)
-    for (int J_ = 0; J_ < 3; ++J_)
-      for (int k = 0; k < 3; ++k)
-        for (int L = 0; L < 3; ++L) {
-          double v = (i == k) ? M(J_, L) : 0.0;
-          v -= 2.0 / 3.0 * (FM(i, J_) * Finv(L, k) + Finv(J_, i) * FM(k, L));
-          v += 2.0 / 9.0 * IM * Finv(J_, i) * Finv(L, k);
-          v += 1.0 / 3.0 * IM * Finv(L, i) * Finv(J_, k);
-          r.d2F(i * 3 + J_, k * 3 + L) = c * v;
-        }
+  r.dF = Jm23 * (2.0 * FM - (2.0 / 3.0) * IM * FinvT);
+  if (withHessian) addHessian(FinvT, FM, IM, M, 2.0 * Jm23, r.d2F);
   return r;
+}
+
+void addIsochoricHessian(const Eigen::Matrix3d &F, const Eigen::Matrix3d &M, double weight, Tangent9 &d2) {
+  const Eigen::Matrix3d FM = F * M;
+  addHessian(F.inverse().transpose(), FM, (FM.array() * F.array()).sum(), M,
+             weight * 2.0 * std::pow(F.determinant(), -2.0 / 3.0), d2);
 }
 
 // K = tr(C-bar^2) = J^{-4/3} T, T = tr(C^2) = C : C.

@@ -47,7 +47,7 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
   r.P = wM * matrix.P;
   r.dPdF = wM * matrix.dPdF;
   bool anyTaut = false;
-  PointResponse fibres;  // accumulates the fibre and eq. 5 terms
+  FibreTerms fibres;  // accumulates the fibre and eq. 5 terms
   for (int f = 0; f < n; ++f) {
     const Family &family = families_[f];
     const Eigen::Vector3d N = ownDirections ? family.geometry.N : Eigen::Vector3d(in.directions.col(f));
@@ -68,9 +68,7 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
       removeMatrixFibreDirectionStress(in.F, N, s, phi, matrix, fibres);
     addFibreResponse(s, phi, {h.storedEnergy, h.T, h.dTdLambdaF}, fibres);
   }
-  r.energy += fibres.energy;
-  r.P += fibres.P;
-  r.dPdF += fibres.dPdF;
+  fibres.addTo(in.F, r);
   r.status = anyTaut || n == 0 ? HillSolveStatus::Taut : HillSolveStatus::Slack;
   return r;
 }
