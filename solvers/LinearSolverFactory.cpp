@@ -162,6 +162,12 @@ bool usesDirectSolve(const LinearSolverParameters &s, const LinearSolverContext 
   return s.type == LinearSolverType::direct;
 }
 
+ReuseScope keptReuseScope(const LinearSolverParameters &s, const LinearSolverContext &c, bool mixedBlockSolve) {
+  if (usesDirectSolve(s, c) || s.preconditioner != Preconditioner::mueLu || mixedBlockSolve)
+    return ReuseScope::newtonSolve;
+  return s.reuseScope;
+}
+
 Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &s, const LinearSolverContext &c) {
   auto p = Teuchos::rcp(new ParameterList("Linear solver"));
   const bool direct = usesDirectSolve(s, c);

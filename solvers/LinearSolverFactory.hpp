@@ -26,6 +26,12 @@ struct LinearSolverContext {
 // to' unknowns.
 bool usesDirectSolve(const LinearSolverParameters &section, const LinearSolverContext &context);
 
+// How long a Newton solver keeps its linear solver: the deck's `MueLu reuse scope` for a MueLu
+// preconditioner; a Newton solve for the direct, FROSch, Ifpack2 and mixed block solves, which
+// build theirs per Newton solve.
+ReuseScope keptReuseScope(const LinearSolverParameters &section, const LinearSolverContext &context,
+                          bool mixedBlockSolve);
+
 // The Stratimikos parameter list the deck section stands for (exposed for tests and the docs).
 Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const LinearSolverParameters &section,
                                                            const LinearSolverContext &context);

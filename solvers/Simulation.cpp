@@ -442,11 +442,7 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
   }
   if (mixedPressure.is_null() && !onPath_ && time_.atLimitPoint != AtLimitPoint::ignore)
     limit_ = std::make_unique<LimitPointMonitor>(steps_->nominalStep(), time_.limitPointTolerance);
-  // A MueLu hierarchy kept beyond a Newton solve (MueLu reuse scope = step or run); the direct,
-  // FROSch, Ifpack2 and mixed block solves build theirs per Newton solve.
-  keptScope_ = usesDirectSolve(linear_, context) || linear_.preconditioner != Preconditioner::mueLu || !mixedPressure.is_null()
-                   ? ReuseScope::newtonSolve
-                   : linear_.reuseScope;
+  keptScope_ = keptReuseScope(linear_, context, !mixedPressure.is_null());
   newton_ = std::make_unique<NewtonSolver>(model_, newtonParameters_, lengthScale_, linear_.tolerance,
                                            keptScope_ != ReuseScope::newtonSolve);
   uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility_, physicalVolumetric);

@@ -79,6 +79,29 @@ INSTANTIATE_TEST_SUITE_P(
                                                "Incompressibility/method=augmented Lagrangian",
                                                "Incompressibility/dilatation tolerance=1e-7"}));
 
+// The deck's MueLu reuse scope holds for MueLu only; every other solve is rebuilt per Newton solve.
+TEST(LinearStrategyLists, OnlyAMueLuHierarchyOutlivesANewtonSolve) {
+  const auto schema = app::deckSchema();
+  auto section = [&](std::vector<std::string> overrides) {
+    auto deck = io::Deck::fromFile(test::inputPath("verification/step44_block.xml"));
+    for (const auto &o : overrides) deck.applyOverride(o, schema);
+    deck.validate(schema);
+    return solvers::parseLinearSolverParameters(deck.root().sublist("Linear solver"));
+  };
+  solvers::LinearSolverContext large;
+  large.globalRows = 100000;
+  using solvers::ReuseScope;
+  EXPECT_EQ(solvers::keptReuseScope(section({}), large, false), ReuseScope::step);  // the default
+  EXPECT_EQ(solvers::keptReuseScope(section({"Linear solver/MueLu reuse scope=run"}), large, false), ReuseScope::run);
+  EXPECT_EQ(solvers::keptReuseScope(section({"Linear solver/MueLu reuse scope=run"}), large, true),
+            ReuseScope::newtonSolve);
+  EXPECT_EQ(solvers::keptReuseScope(section({"Linear solver/preconditioner=Ifpack2"}), large, false),
+            ReuseScope::newtonSolve);
+  solvers::LinearSolverContext small = large;
+  small.globalRows = 2000;  // auto chooses the direct solve
+  EXPECT_EQ(solvers::keptReuseScope(section({"Linear solver/type=auto"}), small, false), ReuseScope::newtonSolve);
+}
+
 TEST(LinearStrategyLists, EachSmootherIsWhatTheDeckSays) {
   {
     const auto m = mueluList(
