@@ -40,7 +40,6 @@ import csv
 import glob
 import json
 import os
-import re
 import resource
 import statistics
 import subprocess
@@ -50,6 +49,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(ROOT, "bench", "results")
 DECK = os.path.join(ROOT, "inputs", "verification", "step44_block.xml")
+DEALII_SUMMARY = os.path.join(ROOT, "bench", "step44_dealii", "summarise_log.awk")
 DEALII_SCRIPT = os.path.join(ROOT, "bench", "step44_dealii", "run_step44.sh")
 ANSWER_TOLERANCE = 0.005  # issue 19: the same answer within 0.5 %
 CONFIGS = {
@@ -126,27 +126,20 @@ def dealii_prepare(n, scratch):
 
 
 def dealii_parse_log(path, n):
-    """u_y at the top centre at t = 1 (last STEP44_TRACE line, in mm), Newton iterations (rows of the
-    convergence table with a linear solve) and CG iterations (their LIN_IT sum), as run_step44.sh's
-    summarise() counts them; dofs."""
-    newton = cg = 0
-    trace, dofs = None, None
+    """u_y at the top centre at t = 1 (last STEP44_TRACE line, in mm); dofs, Newton and CG
+    iterations as step44_dealii/summarise_log.awk counts them (shared with run_step44.sh)."""
+    trace = None
     with open(path) as f:
         for line in f:
             if line.startswith("STEP44_TRACE"):
                 _, eps, t, uy = line.split()
                 trace = (int(eps), float(t), float(uy))
-            elif "Number of degrees of freedom" in line and dofs is None:
-                dofs = int(re.search(r"Number of degrees of freedom:\s*(\d+)", line).group(1))
-            elif "|" in line:
-                cols = line.split("|")
-                lin = cols[1].split()
-                if re.match(r"^ *[0-9]+ ", cols[0]) and lin and lin[0].isdigit():
-                    newton += 1
-                    cg += int(lin[0])
     if trace is None or trace[0] != n or abs(trace[1] - 1.0) > 1e-9:
         raise SystemExit(f"{path}: no STEP44_TRACE line for n = {n} at t = 1 (last: {trace})")
-    return {"uy_top_centre_mm": trace[2] * 1e3, "newton": newton, "krylov": cg, "dofs": dofs}
+    counts = subprocess.run(["awk", "-f", DEALII_SUMMARY, path], check=True, stdout=subprocess.PIPE, text=True)
+    dofs, newton, cg = counts.stdout.strip().split(",")
+    return {"uy_top_centre_mm": trace[2] * 1e3, "newton": int(newton or 0), "krylov": int(cg or 0),
+            "dofs": int(dofs) if dofs else None}
 
 
 def dealii_run(n, repeats, scratch):

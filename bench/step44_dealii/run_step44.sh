@@ -154,16 +154,10 @@ run_one() {  # run_one <refinement> <static_cond>  -> prints run dir
   echo "$RUN"
 }
 
-# Newton iterations = rows of the convergence table that performed a linear
-# solve ("  k  ... |  LIN_IT ..."); CG iterations = sum of LIN_IT (outer CG on
-# the displacement/condensed system; inner CG for K_Jp^{-1} is not printed).
-summarise() {  # summarise <run dir> -> "dofs,wall,newton,cg"
-  local RUN=$1 dofs wall
-  dofs=$(sed -n 's/.*Number of degrees of freedom: *\([0-9]*\).*/\1/p' "$RUN/step44.log" | head -1)
-  wall=$(cat "$RUN/wall_seconds")
-  awk -F'|' -v d="$dofs" -v w="$wall" '
-    /\|/ && $1 ~ /^ *[0-9]+ / { split($2, f, " "); if (f[1] ~ /^[0-9]+$/) { n++; cg += f[1] } }
-    END { printf "%s,%s,%s,%s\n", d, w, (n ? n : ""), (n ? cg : "") }' "$RUN/step44.log"
+summarise() {  # summarise <run dir> -> "dofs,wall,newton,cg" (counting: summarise_log.awk)
+  local RUN=$1 counts
+  counts=$(awk -f "$REPO_DIR/bench/step44_dealii/summarise_log.awk" "$RUN/step44.log")
+  echo "${counts%%,*},$(cat "$RUN/wall_seconds"),${counts#*,}"
 }
 
 CSV="$RESULTS_DIR/step44_dealii.csv"
