@@ -28,6 +28,7 @@ struct ControlDriver::Search {
   std::vector<double> solvedInputs;
   double solvedValue = std::numeric_limits<double>::infinity(); // eq. 25 + effort; inf: failed
   std::size_t reused = 0; // genomes valued from solvedInputs (counted alike in every group)
+  std::size_t failed = 0, failedPredictions = 0; // this group's failed solves; of them, seed solves
 };
 
 ControlDriver::ControlDriver(ControlDriverSetup setup, ControlPlant &plant, const ControlGroups &groups)
@@ -70,6 +71,11 @@ std::vector<double> ControlDriver::allInputs(const std::vector<int> &evaluated, 
 control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const std::vector<double> &inputs,
                                                          bool rankByObjective, long index) {
   const CandidateSolve solve = plant_.solve(inputs);
+  if (!solve.ok) {
+    ++search.failed;
+    if (index < 0) ++search.failedPredictions;
+    if (search.result.firstFailure.empty()) search.result.firstFailure = solve.why.empty() ? "no reason given" : solve.why;
+  }
   control::ControlEvaluation e;
   e.objective = std::numeric_limits<double>::infinity();
   Eigen::VectorXd errors;
@@ -132,21 +138,26 @@ void ControlDriver::searchGenetic(Search &search, int committedSteps, const std:
   const auto groupCount = static_cast<std::size_t>(groups_.count());
   const auto mine = static_cast<std::size_t>(groups_.mine());
   long evaluatedSoFar = 0;
+  std::size_t failedInGenerations = 0; // over all groups: every rank sees every value
   auto evaluate = [&](const std::vector<control::Genome> &genomes) {
     // Candidate i of the batch is solved by control group i mod G; every rank then sees every
     // objective, each taken from the group that solved it.
     std::vector<double> values(genomes.size(), 0.0);
+    std::vector<bool> known(genomes.size(), false);
     for (std::size_t i = 0; i < genomes.size(); ++i) {
       const auto inputs = control::inputsFromGenome(evaluated, genomes[i], setup_.groupNames.size());
-      const bool known = !search.solvedInputs.empty() && inputs == search.solvedInputs;
-      if (known) ++search.reused;
+      known[i] = !search.solvedInputs.empty() && inputs == search.solvedInputs;
+      if (known[i]) ++search.reused;
       if (i % groupCount != mine) continue;
-      values[i] = known ? search.solvedValue
-                        : solveCandidate(search, inputs, true, evaluatedSoFar + static_cast<long>(i)).objective +
-                              effort(inputs); // +inf stays +inf for a failed solve
+      values[i] = known[i] ? search.solvedValue
+                           : solveCandidate(search, inputs, true, evaluatedSoFar + static_cast<long>(i)).objective +
+                                 effort(inputs); // +inf stays +inf for a failed solve
     }
     evaluatedSoFar += static_cast<long>(genomes.size());
-    return groupCount == 1 ? values : groups_.sumOfGroupRoots(values);
+    if (groupCount > 1) values = groups_.sumOfGroupRoots(values);
+    for (std::size_t i = 0; i < genomes.size(); ++i)
+      if (!known[i] && !std::isfinite(values[i])) ++failedInGenerations;
+    return values;
   };
   control::GeneticAlgorithmParameters gaParameters = setup_.parameters.ga;
   gaParameters.seed += static_cast<std::uint64_t>(committedSteps);
@@ -155,6 +166,7 @@ void ControlDriver::searchGenetic(Search &search, int committedSteps, const std:
   // The GA runs on every rank alike: its counts are the same in every group.
   search.result.candidates = gaResult.evaluations - search.reused + search.predictionSolves;
   search.result.generations = gaResult.generations;
+  search.result.failedCandidates = failedInGenerations + search.failedPredictions;
   search.result.stop = control::toString(gaResult.stopReason);
   if (groupCount > 1) shareWinner(search);
 }
@@ -269,6 +281,7 @@ void ControlDriver::searchGradient(Search &search, const std::vector<double> &pr
   const control::GaussNewtonController controller(setup_.parameters.gradient);
   const auto gn = controller.minimise(start, evaluate, sensitivity);
   search.result.candidates = static_cast<std::size_t>(gn.evaluations);
+  search.result.failedCandidates = search.failed;
   search.result.iterations = gn.iterations;
   search.result.sensitivities = gn.sensitivities;
   search.result.stop = control::toString(gn.stop);

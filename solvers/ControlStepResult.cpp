@@ -43,6 +43,8 @@ template <class Io, class R> void resultFields(Io &io, R &r) {
   io(r.sensitivities);
   io(r.sensitivityKrylov);
   io(r.sensitivityCheck);
+  io(r.failedCandidates);
+  io(r.firstFailure);
   io(r.stop);
   io(r.pointErrors);
   io(r.solve);

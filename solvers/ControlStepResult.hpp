@@ -24,6 +24,8 @@ struct ControlStepResult {
   int sensitivities = 0;       // gradient: sensitivity evaluations
   int sensitivityKrylov = 0;   // gradient: their Krylov iterations
   double sensitivityCheck = -1.0; // verify sensitivities: max |S - S_fd| / max |S_fd| (-1: not checked)
+  std::size_t failedCandidates = 0; // candidate solves that did not converge (all control groups)
+  std::string firstFailure;    // why the first of them this control group saw failed ("" if none)
   std::string stop;            // why the search stopped
   Eigen::VectorXd pointErrors; // ||x_p - xbar_p|| per control point at the winner
   UzawaResult solve;           // the winning solve's statistics

@@ -1003,6 +1003,9 @@ nlohmann::json Simulation::controlJson(const Trial &trial) {
     if (outcome.sensitivityCheck >= 0.0) c["sensitivity_check"] = outcome.sensitivityCheck;
   }
   c["stop"] = outcome.stop;
+  // Candidates whose solve failed are ranked last and otherwise silent: count them, with a reason.
+  c["failed_candidates"] = outcome.failedCandidates;
+  if (!outcome.firstFailure.empty()) c["first_candidate_failure"] = outcome.firstFailure;
   nlohmann::json inputs = nlohmann::json::object(), errors = nlohmann::json::object();
   std::vector<std::pair<std::string, std::vector<double>>> rows;
   for (int g : control_->groups) {
@@ -1016,10 +1019,10 @@ nlohmann::json Simulation::controlJson(const Trial &trial) {
   c["inputs"] = inputs;
   c["point_errors"] = errors;
   if (controls_) controls_->append(t_, rows);
-  char line[160];
-  std::snprintf(line, sizeof line, "  control: eq. 25 %.3g m, %zu candidates, %s %d (%s)", outcome.objective,
-                outcome.candidates, ga ? "generations" : "iterations", ga ? outcome.generations : outcome.iterations,
-                outcome.stop.c_str());
+  char line[200];
+  std::snprintf(line, sizeof line, "  control: eq. 25 %.3g m, %zu candidates (%zu failed), %s %d (%s)",
+                outcome.objective, outcome.candidates, outcome.failedCandidates, ga ? "generations" : "iterations",
+                ga ? outcome.generations : outcome.iterations, outcome.stop.c_str());
   controlLine_ = line;
   return c;
 }

@@ -112,6 +112,11 @@ TEST(ControlDriver, AFailedCandidateIsNeverTheWinner) {
   EXPECT_EQ(r.inputs, ranked[1]);
   EXPECT_EQ(plant.kept(), ranked[1]);
   EXPECT_NEAR(r.objective, objectiveOf(s, ranked[1]), 1e-15);
+  // The failed solves are counted, with the plant's reason: one per solve of the failing inputs.
+  const auto failedSolves = std::count(plant.solved.begin(), plant.solved.end(), ranked[0]);
+  EXPECT_GT(failedSolves, 0);
+  EXPECT_EQ(r.failedCandidates, static_cast<std::size_t>(failedSolves));
+  EXPECT_EQ(r.firstFailure, "the fake solve failed");
 
   // Nothing converges: nothing is found.
   LinearPlant failing(plantMatrix());
@@ -120,6 +125,17 @@ TEST(ControlDriver, AFailedCandidateIsNeverTheWinner) {
   const ControlStepResult none = hopeless.step(0, kStretched);
   EXPECT_FALSE(none.found());
   EXPECT_GT(failing.solves, 0);
+  EXPECT_EQ(none.failedCandidates, static_cast<std::size_t>(failing.solves));
+
+  // The gradient controller counts its failed solves too.
+  const auto g = setup(glossa::control::ControllerType::gradient, {0.9, 0.1, 0.8, 0.2});
+  LinearPlant failingGradient(plantMatrix());
+  failingGradient.fails = [](const std::vector<double> &) { return true; };
+  ControlDriver gradient(g, failingGradient, one);
+  const ControlStepResult gr = gradient.step(0, kStretched);
+  EXPECT_FALSE(gr.found());
+  EXPECT_EQ(gr.failedCandidates, static_cast<std::size_t>(failingGradient.solves));
+  EXPECT_EQ(gr.firstFailure, "the fake solve failed");
 }
 
 TEST(ControlDriver, PrunesAGroupInCompressionAndKeepsAnAlwaysEvaluatedOne) {

@@ -29,6 +29,8 @@ ControlStepResult awkwardResult() {
   r.sensitivities = 2;
   r.sensitivityKrylov = 41;
   r.sensitivityCheck = -1.0;
+  r.failedCandidates = 3;
+  r.firstFailure = "CG met negative curvature";
   r.stop = "objective tolerance \xc3\xbc"; // a UTF-8 u-umlaut: two bytes above 127
   r.pointErrors = Eigen::Vector3d(2.5e-8, std::numeric_limits<double>::infinity(), 0.0);
   r.solve.converged = true;
@@ -74,6 +76,8 @@ TEST(ControlStepResult, RoundTripIsBitForBit) {
   EXPECT_EQ(back.sensitivities, r.sensitivities);
   EXPECT_EQ(back.sensitivityKrylov, r.sensitivityKrylov);
   EXPECT_TRUE(sameBits(back.sensitivityCheck, r.sensitivityCheck));
+  EXPECT_EQ(back.failedCandidates, r.failedCandidates);
+  EXPECT_EQ(back.firstFailure, r.firstFailure);
   EXPECT_EQ(back.stop, r.stop);
   ASSERT_EQ(back.pointErrors.size(), r.pointErrors.size());
   for (Eigen::Index p = 0; p < r.pointErrors.size(); ++p) EXPECT_TRUE(sameBits(back.pointErrors(p), r.pointErrors(p)));
