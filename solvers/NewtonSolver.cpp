@@ -182,6 +182,32 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toler
   }
 
   auto solver = NOX::Solver::buildSolver(group, tests, params);
+  // The model skips the tangent where the update test is about to pass (ModelEvaluator::
+  // setConvergenceForecast), with the test's own formula; cleared when the solve ends.
+  const double floor = 1e-9 * lengthScale_;
+  if (updateTolerance < 0.0) {
+    const double tolerance = parameters_.updateTolerance;
+    model_->setConvergenceForecast([tolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
+      return dx.norm2() <= tolerance * x.norm2() + floor * std::sqrt(static_cast<double>(x.getGlobalLength()));
+    });
+  } else {
+    // NOX's weighted RMS norm, sqrt(1/N sum_i (dx_i / (rtol |x_i| + atol))^2) < 1.
+    model_->setConvergenceForecast([updateTolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
+      const auto d = dx.getData(0), v = x.getData(0);
+      double local = 0.0;
+      for (std::size_t i = 0; i < d.size(); ++i) {
+        const double w = d[i] / (updateTolerance * std::abs(v[i]) + floor);
+        local += w * w;
+      }
+      double sum = 0.0;
+      Teuchos::reduceAll(*x.getMap()->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(sum));
+      return std::sqrt(sum / static_cast<double>(x.getGlobalLength())) < 1.0;
+    });
+  }
+  struct ClearForecast {
+    assembly::ModelEvaluator &model;
+    ~ClearForecast() { model.setConvergenceForecast({}); }
+  } clearForecast{*model_};
   StatusType status = Failed;
   try {
     status = solver->solve();

@@ -567,6 +567,7 @@ void Simulation::writeSummary() {
   doc_["residual_evaluations"] = model_->residualEvaluations();
   doc_["tangent_evaluations"] = model_->tangentEvaluations();
   doc_["tangents_from_residual_pass"] = model_->tangentsFromResidualPass();
+  doc_["residual_only_passes"] = model_->residualOnlyPasses();
   // NOX's own timers split the linear solves into preconditioner set-up and Krylov iterations.
   doc_["preconditioner_setup_seconds"] = timerSeconds("NOX Total Preconditioner Construction") - setupAtStart_;
   doc_["linear_solve_seconds"] = timerSeconds("NOX Total Linear Solve") - solveAtStart_;

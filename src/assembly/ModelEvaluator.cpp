@@ -147,6 +147,8 @@ Teuchos::RCP<const Thyra::VectorSpaceBase<double>> ModelEvaluator::get_g_space(i
 
 void ModelEvaluator::resetIterates(const Vector &u) {
   tangentCached_ = false;
+  if (accepted_.is_null() || !accepted_->getMap()->isSameAs(*u.getMap())) accepted_ = Teuchos::rcp(new Vector(u.getMap()));
+  accepted_->assign(u);
   // With pressures as unknowns the kernel's volumetric energy is zero and the element pressure is
   // the multiplier itself: the three-field iterates would carry nothing.
   mixed_ = assembler_->scene().formulation == model::ElementFormulation::Q1P0 && pressure_.is_null();
@@ -155,6 +157,16 @@ void ModelEvaluator::resetIterates(const Vector &u) {
 
 void ModelEvaluator::advanceIterates(const Vector &u) {
   if (mixed_) bases_ = assembler_->mixedBases(u, lambda_, &bases_);
+  if (!accepted_.is_null() && accepted_->getMap()->isSameAs(*u.getMap())) accepted_->assign(u);
+}
+
+bool ModelEvaluator::updateForecastsConvergence(const Vector &x) const {
+  if (!forecast_ || accepted_.is_null() || !accepted_->getMap()->isSameAs(*x.getMap())) return false;
+  if (update_.is_null() || !update_->getMap()->isSameAs(*x.getMap())) update_ = Teuchos::rcp(new Vector(x.getMap()));
+  update_->update(1.0, x, -1.0, *accepted_, 0.0);
+  // No update yet (the solve's first residual): its tangent is the first Newton step's.
+  if (update_->normInf() == 0.0) return false;
+  return forecast_(*update_, x);
 }
 
 Teuchos::RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const {
@@ -240,7 +252,11 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
     assemblySeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return;
   }
-  const bool withTangent = !f.is_null() && !K && nominal;
+  bool withTangent = !f.is_null() && !K && nominal;
+  if (withTangent && updateForecastsConvergence(*x)) {
+    withTangent = false;
+    ++residualOnlyPasses_;
+  }
   Vector fScratch(assembler_->ownedMap());
   if (withTangent) {
     lastStatus_ = assembler_->assemble(*x, time, lambda, mixed_ ? &bases_ : nullptr, f.get(), matrix_.get(),
