@@ -48,12 +48,26 @@ std::string tagList(const std::vector<int> &tags) {
 
 }  // namespace
 
-void writeGmsh(const HexMesh &mesh, const std::string &file) {
+namespace {
+
+// What the MSH 4.1 sections share: the physical tags (element sets from 1, then face sets, then
+// point groups), one volume entity per combination of element sets (elements in none: the empty
+// one), one surface per combination of face sets, one point entity per node of a point group.
+struct GmshLayout {
+  std::map<std::string, std::vector<NodeId>> pointSets;  // node sets that are not face sets' nodes
+  int faceTag0 = 0, pointTag0 = 0;
+  std::vector<int> volumeOfElement;                        // volume entity (1-based) per element
+  std::vector<std::vector<int>> volumes;                   // physical tags per volume entity
+  std::map<std::vector<int>, std::vector<ElementFace>> surfaces;  // by physical tags
+  std::map<NodeId, std::vector<int>> pointTags;
+};
+
+GmshLayout gmshLayout(const HexMesh &mesh, const std::string &file) {
+  GmshLayout l;
   // Node sets the surface groups imply are not written again.
-  std::map<std::string, std::vector<NodeId>> pointSets;
   for (const auto &[name, nodes] : mesh.nodeSets) {
     if (!mesh.faceSets.count(name)) {
-      pointSets[name] = nodes;
+      l.pointSets[name] = nodes;
     } else if (mesh.nodesOfFaceSet(name) != nodes) {
       throw MeshError(file + ": node set '" + name +
                       "' has the name of a face set but other nodes; in MSH a physical surface's "
@@ -61,63 +75,63 @@ void writeGmsh(const HexMesh &mesh, const std::string &file) {
                       "or write .inp");
     }
   }
-  std::vector<std::string> names;
-  for (const auto &[name, s] : mesh.elementSets) names.push_back(name);
-  for (const auto &[name, s] : mesh.faceSets) names.push_back(name);
-  for (const auto &[name, s] : pointSets) names.push_back(name);
-  for (const std::string &name : names) {
+  auto checkName = [&](const std::string &name) {
     if (name.find('"') != std::string::npos) throw MeshError(file + ": set name '" + name + "' holds a '\"'");
-  }
+  };
+  for (const auto &[name, s] : mesh.elementSets) checkName(name);
+  for (const auto &[name, s] : mesh.faceSets) checkName(name);
+  for (const auto &[name, s] : l.pointSets) checkName(name);
+  l.faceTag0 = 1 + static_cast<int>(mesh.elementSets.size());
+  l.pointTag0 = l.faceTag0 + static_cast<int>(mesh.faceSets.size());
 
-  std::ostringstream out;
-  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n"
-      << mesh.elementSets.size() + mesh.faceSets.size() + pointSets.size() << "\n";
-  int tag = 1;
-  for (const auto &[name, s] : mesh.elementSets) out << "3 " << tag++ << " \"" << name << "\"\n";
-  const int faceTag0 = tag;
-  for (const auto &[name, s] : mesh.faceSets) out << "2 " << tag++ << " \"" << name << "\"\n";
-  const int pointTag0 = tag;
-  for (const auto &[name, s] : pointSets) out << "0 " << tag++ << " \"" << name << "\"\n";
-  out << "$EndPhysicalNames\n";
-
-  // Entities: one volume per combination of element sets (elements in none: the empty one),
-  // one surface per combination of face sets, one point per node of a point group.
   const auto elementTags = memberships(mesh.elementSets, 1);
   std::map<std::vector<int>, int> volumeOf;
-  std::vector<int> volumeOfElement(mesh.numElements());
+  l.volumeOfElement.resize(mesh.numElements());
   for (std::size_t e = 0; e < mesh.numElements(); ++e) {
     const auto it = elementTags.find(static_cast<ElementId>(e));
     const std::vector<int> tags = it == elementTags.end() ? std::vector<int>{} : it->second;
-    volumeOfElement[e] = volumeOf.emplace(tags, static_cast<int>(volumeOf.size()) + 1).first->second;
+    l.volumeOfElement[e] = volumeOf.emplace(tags, static_cast<int>(volumeOf.size()) + 1).first->second;
   }
-  std::map<std::vector<int>, std::vector<ElementFace>> surfaces;
-  for (const auto &[face, tags] : memberships(mesh.faceSets, faceTag0)) surfaces[tags].push_back(face);
-  const auto pointTags = memberships(pointSets, pointTag0);
+  l.volumes.resize(volumeOf.size());
+  for (const auto &[tags, v] : volumeOf) l.volumes[static_cast<std::size_t>(v - 1)] = tags;
+  for (const auto &[face, tags] : memberships(mesh.faceSets, l.faceTag0)) l.surfaces[tags].push_back(face);
+  l.pointTags = memberships(l.pointSets, l.pointTag0);
+  return l;
+}
 
+void writePhysicalNames(const HexMesh &mesh, const GmshLayout &l, std::ostream &out) {
+  out << "$PhysicalNames\n" << mesh.elementSets.size() + mesh.faceSets.size() + l.pointSets.size() << "\n";
+  int tag = 1;
+  for (const auto &[name, s] : mesh.elementSets) out << "3 " << tag++ << " \"" << name << "\"\n";
+  for (const auto &[name, s] : mesh.faceSets) out << "2 " << tag++ << " \"" << name << "\"\n";
+  for (const auto &[name, s] : l.pointSets) out << "0 " << tag++ << " \"" << name << "\"\n";
+  out << "$EndPhysicalNames\n";
+}
+
+void writeEntities(const HexMesh &mesh, const GmshLayout &l, std::ostream &out) {
   const auto [lo, hi] = boundingBox(mesh);
   std::string box;
   for (int i = 0; i < 3; ++i) box += number(lo[i]) + " ";
   for (int i = 0; i < 3; ++i) box += number(hi[i]) + " ";
-  out << "$Entities\n" << pointTags.size() << " 0 " << surfaces.size() << " " << volumeOf.size() << "\n";
-  for (const auto &[node, tags] : pointTags) {
+  out << "$Entities\n" << l.pointTags.size() << " 0 " << l.surfaces.size() << " " << l.volumes.size() << "\n";
+  for (const auto &[node, tags] : l.pointTags) {
     const auto &x = mesh.nodes[static_cast<std::size_t>(node)];
     out << node + 1 << " " << number(x.x()) << " " << number(x.y()) << " " << number(x.z()) << " "
         << tagList(tags) << "\n";
   }
   int entity = 1;
-  for (const auto &[tags, faces] : surfaces) out << entity++ << " " << box << tagList(tags) << " 0\n";
-  std::vector<std::vector<int>> volumes(volumeOf.size());
-  for (const auto &[tags, v] : volumeOf) volumes[static_cast<std::size_t>(v - 1)] = tags;
-  for (std::size_t v = 0; v < volumes.size(); ++v)
-    out << v + 1 << " " << box << tagList(volumes[v]) << " 0\n";
+  for (const auto &[tags, faces] : l.surfaces) out << entity++ << " " << box << tagList(tags) << " 0\n";
+  for (std::size_t v = 0; v < l.volumes.size(); ++v) out << v + 1 << " " << box << tagList(l.volumes[v]) << " 0\n";
   out << "$EndEntities\n";
+}
 
-  // Nodes in the mesh's order: runs of nodes in volume entity 1, each point-group node in a
-  // block of its point entity.
+// Nodes in the mesh's order: runs of nodes in volume entity 1, each point-group node in a block
+// of its point entity.
+void writeNodes(const HexMesh &mesh, const GmshLayout &l, std::ostream &out) {
+  auto isPoint = [&](std::size_t n) { return l.pointTags.count(static_cast<NodeId>(n)) != 0; };
   std::vector<std::pair<std::size_t, std::size_t>> runs;  // [begin, end) of nodes in one block
   for (std::size_t n = 0; n < mesh.numNodes(); ++n) {
-    const bool point = pointTags.count(static_cast<NodeId>(n)) != 0;
-    if (point || runs.empty() || pointTags.count(static_cast<NodeId>(runs.back().second - 1)) != 0) {
+    if (isPoint(n) || runs.empty() || isPoint(runs.back().second - 1)) {
       runs.push_back({n, n + 1});
     } else {
       runs.back().second = n + 1;
@@ -125,8 +139,7 @@ void writeGmsh(const HexMesh &mesh, const std::string &file) {
   }
   out << "$Nodes\n" << runs.size() << " " << mesh.numNodes() << " 1 " << mesh.numNodes() << "\n";
   for (const auto &[begin, end] : runs) {
-    const bool point = pointTags.count(static_cast<NodeId>(begin)) != 0;
-    out << (point ? "0 " + std::to_string(begin + 1) : std::string("3 1")) << " 0 " << end - begin << "\n";
+    out << (isPoint(begin) ? "0 " + std::to_string(begin + 1) : std::string("3 1")) << " 0 " << end - begin << "\n";
     for (std::size_t n = begin; n < end; ++n) out << n + 1 << "\n";
     for (std::size_t n = begin; n < end; ++n) {
       const auto &x = mesh.nodes[n];
@@ -134,24 +147,26 @@ void writeGmsh(const HexMesh &mesh, const std::string &file) {
     }
   }
   out << "$EndNodes\n";
+}
 
-  // Elements: hexahedra 1..E in blocks of consecutive elements of one entity, then the faces,
-  // then the points.
+// Elements: hexahedra 1..E in blocks of consecutive elements of one entity, then the faces, then
+// the points.
+void writeElements(const HexMesh &mesh, const GmshLayout &l, std::ostream &out) {
   std::vector<std::pair<std::size_t, std::size_t>> blocks;
   for (std::size_t e = 0; e < mesh.numElements(); ++e) {
-    if (blocks.empty() || volumeOfElement[blocks.back().second - 1] != volumeOfElement[e]) {
+    if (blocks.empty() || l.volumeOfElement[blocks.back().second - 1] != l.volumeOfElement[e]) {
       blocks.push_back({e, e + 1});
     } else {
       blocks.back().second = e + 1;
     }
   }
   std::size_t numFaces = 0;
-  for (const auto &[tags, faces] : surfaces) numFaces += faces.size();
-  const std::size_t total = mesh.numElements() + numFaces + pointTags.size();
+  for (const auto &[tags, faces] : l.surfaces) numFaces += faces.size();
+  const std::size_t total = mesh.numElements() + numFaces + l.pointTags.size();
   out << "$Elements\n"
-      << blocks.size() + surfaces.size() + pointTags.size() << " " << total << " 1 " << total << "\n";
+      << blocks.size() + l.surfaces.size() + l.pointTags.size() << " " << total << " 1 " << total << "\n";
   for (const auto &[begin, end] : blocks) {
-    out << "3 " << volumeOfElement[begin] << " 5 " << end - begin << "\n";
+    out << "3 " << l.volumeOfElement[begin] << " 5 " << end - begin << "\n";
     for (std::size_t e = begin; e < end; ++e) {
       out << e + 1;
       for (NodeId n : mesh.elements[e]) out << " " << n + 1;
@@ -159,20 +174,30 @@ void writeGmsh(const HexMesh &mesh, const std::string &file) {
     }
   }
   std::size_t next = mesh.numElements() + 1;
-  entity = 1;
-  for (const auto &[tags, faces] : surfaces) {
+  int entity = 1;
+  for (const auto &[tags, faces] : l.surfaces) {
     out << "2 " << entity++ << " 3 " << faces.size() << "\n";
     for (const ElementFace &f : faces) {
       out << next++;
-      for (int a : kHexFaceNodes[static_cast<std::size_t>(f.localFace)]) {
+      for (int a : kHexFaceNodes[static_cast<std::size_t>(f.localFace)])
         out << " " << mesh.elements[static_cast<std::size_t>(f.element)][static_cast<std::size_t>(a)] + 1;
-      }
       out << "\n";
     }
   }
-  for (const auto &[node, tags] : pointTags)
-    out << "0 " << node + 1 << " 15 1\n" << next++ << " " << node + 1 << "\n";
+  for (const auto &[node, tags] : l.pointTags) out << "0 " << node + 1 << " 15 1\n" << next++ << " " << node + 1 << "\n";
   out << "$EndElements\n";
+}
+
+}  // namespace
+
+void writeGmsh(const HexMesh &mesh, const std::string &file) {
+  const GmshLayout layout = gmshLayout(mesh, file);
+  std::ostringstream out;
+  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  writePhysicalNames(mesh, layout, out);
+  writeEntities(mesh, layout, out);
+  writeNodes(mesh, layout, out);
+  writeElements(mesh, layout, out);
   save(file, out.str());
 }
 
