@@ -72,6 +72,24 @@ private:
 // whole field. NOX's weighted RMS norm weighs every component by its own size, so the unknowns
 // that hardly move (beside symmetry planes and supports) decided it and asked for one or two
 // Newton iterations per solve beyond the residual test (doc/incompressibility.md, issue 19).
+double relativeUpdateBound(double tolerance, double floor, double xNorm, double length) {
+  return tolerance * xNorm + floor * std::sqrt(length);
+}
+
+// NOX's weighted RMS norm of an update, sqrt(1/N sum_i (dx_i / (rtol |x_i| + atol))^2), which
+// NormWRMS compares with 1.
+double weightedRmsUpdate(const assembly::Vector &dx, const assembly::Vector &x, double rtol, double atol) {
+  const auto d = dx.getData(0), v = x.getData(0);
+  double local = 0.0;
+  for (decltype(d.size()) i = 0; i < d.size(); ++i) {
+    const double w = d[i] / (rtol * std::abs(v[i]) + atol);
+    local += w * w;
+  }
+  double sum = 0.0;
+  Teuchos::reduceAll(*x.getMap()->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(sum));
+  return std::sqrt(sum / static_cast<double>(x.getGlobalLength()));
+}
+
 class RelativeUpdate : public NOX::StatusTest::Generic {
 public:
   RelativeUpdate(double tolerance, double floor) : tolerance_(tolerance), floor_(floor) {}
@@ -81,7 +99,7 @@ public:
     const RCP<NOX::Abstract::Vector> step = x.clone(NOX::DeepCopy);
     step->update(-1.0, problem.getPreviousSolutionGroup().getX(), 1.0);
     update_ = step->norm();
-    bound_ = tolerance_ * x.norm() + floor_ * std::sqrt(static_cast<double>(x.length()));
+    bound_ = relativeUpdateBound(tolerance_, floor_, x.norm(), static_cast<double>(x.length()));
     status_ = update_ <= bound_ ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
     return status_;
   }
@@ -139,11 +157,12 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toler
   // Per unknown it stops where the direct and the iterative solve, on 1 or 2 ranks, agree to 1e-6
   // of the traces; relative to the whole field the tissue traces moved by up to 1.7e-4 and 1 and 2
   // ranks differed by 1.1e-5 (doc/incompressibility.md).
+  const double updateFloor = 1e-9 * lengthScale_;
   RCP<NOX::StatusTest::Generic> update;
   if (updateTolerance < 0.0)
-    update = rcp(new RelativeUpdate(parameters_.updateTolerance, 1e-9 * lengthScale_));
+    update = rcp(new RelativeUpdate(parameters_.updateTolerance, updateFloor));
   else
-    update = rcp(new NormWRMS(updateTolerance, 1e-9 * lengthScale_));
+    update = rcp(new NormWRMS(updateTolerance, updateFloor));
   auto converged = rcp(new Combo(Combo::AND));
   converged->addStatusTest(normF);
   converged->addStatusTest(update);
@@ -184,26 +203,7 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toler
   auto solver = NOX::Solver::buildSolver(group, tests, params);
   // The model skips the tangent where the update test is about to pass (ModelEvaluator::
   // setConvergenceForecast), with the test's own formula; cleared when the solve ends.
-  const double floor = 1e-9 * lengthScale_;
-  if (updateTolerance < 0.0) {
-    const double tolerance = parameters_.updateTolerance;
-    model_->setConvergenceForecast([tolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
-      return dx.norm2() <= tolerance * x.norm2() + floor * std::sqrt(static_cast<double>(x.getGlobalLength()));
-    });
-  } else {
-    // NOX's weighted RMS norm, sqrt(1/N sum_i (dx_i / (rtol |x_i| + atol))^2) < 1.
-    model_->setConvergenceForecast([updateTolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
-      const auto d = dx.getData(0), v = x.getData(0);
-      double local = 0.0;
-      for (std::size_t i = 0; i < d.size(); ++i) {
-        const double w = d[i] / (updateTolerance * std::abs(v[i]) + floor);
-        local += w * w;
-      }
-      double sum = 0.0;
-      Teuchos::reduceAll(*x.getMap()->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(sum));
-      return std::sqrt(sum / static_cast<double>(x.getGlobalLength())) < 1.0;
-    });
-  }
+  model_->setConvergenceForecast(updateForecast(updateTolerance, updateFloor));
   struct ClearForecast {
     assembly::ModelEvaluator &model;
     ~ClearForecast() { model.setConvergenceForecast({}); }
@@ -228,6 +228,19 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toler
     model_->acceptSolution(x.getThyraVector(), u);
   }
   return result;
+}
+
+assembly::ModelEvaluator::ConvergenceForecast NewtonSolver::updateForecast(double updateTolerance,
+                                                                          double floor) const {
+  if (updateTolerance < 0.0) {
+    const double tolerance = parameters_.updateTolerance;
+    return [tolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
+      return dx.norm2() <= relativeUpdateBound(tolerance, floor, x.norm2(), static_cast<double>(x.getGlobalLength()));
+    };
+  }
+  return [updateTolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
+    return weightedRmsUpdate(dx, x, updateTolerance, floor) < 1.0;
+  };
 }
 
 int NewtonSolver::solveTangentWithKeptSolver(const assembly::Vector &u, const assembly::Vector &rhs, assembly::Vector &x,

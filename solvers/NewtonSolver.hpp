@@ -63,6 +63,11 @@ public:
   assembly::ModelEvaluator &model() const { return *model_; }
 
 private:
+  // The update test of a solve (updateTolerance < 0: the deck's, relative to the whole field;
+  // else NOX's weighted RMS norm) as a forecast for the model, for the update from the last
+  // accepted iterate.
+  assembly::ModelEvaluator::ConvergenceForecast updateForecast(double updateTolerance, double floor) const;
+
   Teuchos::RCP<assembly::ModelEvaluator> model_;
   NewtonParameters parameters_;
   double lengthScale_;
