@@ -29,10 +29,10 @@ double matrixWeight(MatrixStressForm form, double matrixFraction) {
   return form == MatrixStressForm::MixtureWeighted ? matrixFraction : 1.0;
 }
 
-FibreStretch fibreStretch(const Eigen::Matrix3d &F, const Eigen::Vector3d &N) {
+FibreStretch fibreStretch(const IsochoricFrame &frame, const Eigen::Vector3d &N) {
   FibreStretch s;
   s.M = N * N.transpose();
-  s.I4 = isochoricInvariant(F, s.M, /*withHessian=*/false);
+  s.I4 = isochoricInvariant(frame, s.M, /*withHessian=*/false);
   s.lambdaBar = std::sqrt(s.I4.value);
   return s;
 }
@@ -57,17 +57,17 @@ void addFibreResponse(const FibreStretch &s, double phi, const FibreTension &t, 
 //   tau_M : n (x) n = q / (a.a),   q = a . P_M F^T a,   so  h = q w,  w = J^{2/3} / (2 (a.a)^2),
 //   dw/dF = w (2/3 F^{-T} - 4 a (x) N / (a.a)),
 //   dq/dF_mn = ((P F^T + F P^T) a)_m N_n + a_m (P^T a)_n + sum_iJ a_i (F^T a)_J dP_iJ/dF_mn.
-void removeMatrixFibreDirectionStress(const Eigen::Matrix3d &F, const Eigen::Vector3d &N,
+void removeMatrixFibreDirectionStress(const IsochoricFrame &frame, const Eigen::Vector3d &N,
                                       const FibreStretch &s, double phi, const PointResponse &matrix,
                                       FibreTerms &terms) {
   if (phi == 0.0) return;
+  const Eigen::Matrix3d &F = frame.F;
   const Eigen::Matrix3d &PM = matrix.P;
   const Eigen::Vector3d a = F * N;
   const double aa = a.squaredNorm();
-  const double J = F.determinant();
   const Eigen::Vector3d FTa = F.transpose() * a;
   const double q = a.dot(PM * FTa);
-  const double w = std::pow(J, 2.0 / 3.0) / (2.0 * aa * aa);
+  const double w = 1.0 / (frame.Jm23 * 2.0 * aa * aa);  // J^{2/3} / (2 (a.a)^2)
   const double h = q * w;
 
   Eigen::Matrix3d dq =
@@ -76,7 +76,7 @@ void removeMatrixFibreDirectionStress(const Eigen::Matrix3d &F, const Eigen::Vec
   for (int i = 0; i < 3; ++i)
     for (int J_ = 0; J_ < 3; ++J_) weights(i * 3 + J_) = a(i) * FTa(J_);
   const Vector9 dqFromP = matrix.dPdF.transpose() * weights;
-  const Eigen::Matrix3d dw = w * ((2.0 / 3.0) * F.inverse().transpose() - (4.0 / aa) * a * N.transpose());
+  const Eigen::Matrix3d dw = w * ((2.0 / 3.0) * frame.FinvT - (4.0 / aa) * a * N.transpose());
   const Vector9 dh = w * (flatten(dq) + dqFromP) + q * flatten(dw);
 
   terms.response.P -= phi * h * s.I4.dF;

@@ -44,7 +44,7 @@ struct FibreStretch {
   IsochoricInvariant I4;  // value and dF; d2F left zero
   Eigen::Matrix3d M;      // the structural tensor N (x) N
 };
-FibreStretch fibreStretch(const Eigen::Matrix3d &F, const Eigen::Vector3d &N);
+FibreStretch fibreStretch(const IsochoricFrame &frame, const Eigen::Vector3d &N);
 
 // The fibre and eq. 5 terms of a composite point response. Each term c_f d2I4-bar_f/dF2 is kept as
 // its weight c_f on N_f (x) N_f: the Hessian is linear in the structural tensor, so addTo builds
@@ -54,11 +54,11 @@ struct FibreTerms {
   Eigen::Matrix3d hessianWeight = Eigen::Matrix3d::Zero();  // sum_f c_f N_f (x) N_f
   // r += response and sum_f c_f d2I4-bar_f/dF2, for any response with energy, P and dPdF.
   template <class Response>
-  void addTo(const Eigen::Matrix3d &F, Response &r) const {
+  void addTo(const IsochoricFrame &frame, Response &r) const {
     r.energy += response.energy;
     r.P += response.P;
     r.dPdF += response.dPdF;
-    if (!hessianWeight.isZero(0.0)) addIsochoricHessian(F, hessianWeight, 1.0, r.dPdF);
+    if (!hessianWeight.isZero(0.0)) addIsochoricHessian(frame, hessianWeight, 1.0, r.dPdF);
   }
 };
 
@@ -68,7 +68,7 @@ void addFibreResponse(const FibreStretch &s, double phi, const FibreTension &t, 
 
 // Eq. 5: terms -= phi_f dev[(tau_M : n (x) n) n (x) n] F^{-T} and its derivative, where tau_M and
 // its derivative come from `matrix` (the full, unweighted matrix response at F).
-void removeMatrixFibreDirectionStress(const Eigen::Matrix3d &F, const Eigen::Vector3d &N,
+void removeMatrixFibreDirectionStress(const IsochoricFrame &frame, const Eigen::Vector3d &N,
                                       const FibreStretch &s, double phi, const PointResponse &matrix,
                                       FibreTerms &terms);
 

@@ -28,15 +28,16 @@ PointResponse FibreReinforcedMaterial::evaluate(const Eigen::Matrix3d &F) const 
   r.energy = wM * matrix.energy;
   r.P = wM * matrix.P;
   r.dPdF = wM * matrix.dPdF;
+  const IsochoricFrame frame(F);
   FibreTerms fibres;
   for (const FibreFamily &family : families_) {
-    const FibreStretch s = fibreStretch(F, family.N);
+    const FibreStretch s = fibreStretch(frame, family.N);
     if (form_ == MatrixStressForm::FibreDirectionRemoved)
-      removeMatrixFibreDirectionStress(F, family.N, s, family.volumeFraction, matrix, fibres);
+      removeMatrixFibreDirectionStress(frame, family.N, s, family.volumeFraction, matrix, fibres);
     if (s.lambdaBar <= 1.0) continue;  // tension only
     addFibreResponse(s, family.volumeFraction, fibre_->evaluate(s.lambdaBar), fibres);
   }
-  fibres.addTo(F, r);
+  fibres.addTo(frame, r);
   return r;
 }
 

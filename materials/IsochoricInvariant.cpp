@@ -27,24 +27,22 @@ void addHessian(const Eigen::Matrix3d &FinvT, const Eigen::Matrix3d &FM, double 
 }
 }  // namespace
 
-IsochoricInvariant isochoricInvariant(const Eigen::Matrix3d &F, const Eigen::Matrix3d &M, bool withHessian) {
-  const double J = F.determinant();
-  const Eigen::Matrix3d FinvT = F.inverse().transpose();
-  const Eigen::Matrix3d FM = F * M;
-  const double IM = (FM.array() * F.array()).sum();
-  const double Jm23 = std::pow(J, -2.0 / 3.0);
+IsochoricFrame::IsochoricFrame(const Eigen::Matrix3d &F_)
+    : F(F_), FinvT(F_.inverse().transpose()), Jm23(std::pow(F_.determinant(), -2.0 / 3.0)) {}
 
+IsochoricInvariant isochoricInvariant(const IsochoricFrame &frame, const Eigen::Matrix3d &M, bool withHessian) {
+  const Eigen::Matrix3d FM = frame.F * M;
+  const double IM = (FM.array() * frame.F.array()).sum();
   IsochoricInvariant r;
-  r.value = Jm23 * IM;
-  r.dF = Jm23 * (2.0 * FM - (2.0 / 3.0) * IM * FinvT);
-  if (withHessian) addHessian(FinvT, FM, IM, M, 2.0 * Jm23, r.d2F);
+  r.value = frame.Jm23 * IM;
+  r.dF = frame.Jm23 * (2.0 * FM - (2.0 / 3.0) * IM * frame.FinvT);
+  if (withHessian) addHessian(frame.FinvT, FM, IM, M, 2.0 * frame.Jm23, r.d2F);
   return r;
 }
 
-void addIsochoricHessian(const Eigen::Matrix3d &F, const Eigen::Matrix3d &M, double weight, Tangent9 &d2) {
-  const Eigen::Matrix3d FM = F * M;
-  addHessian(F.inverse().transpose(), FM, (FM.array() * F.array()).sum(), M,
-             weight * 2.0 * std::pow(F.determinant(), -2.0 / 3.0), d2);
+void addIsochoricHessian(const IsochoricFrame &frame, const Eigen::Matrix3d &M, double weight, Tangent9 &d2) {
+  const Eigen::Matrix3d FM = frame.F * M;
+  addHessian(frame.FinvT, FM, (FM.array() * frame.F.array()).sum(), M, weight * 2.0 * frame.Jm23, d2);
 }
 
 // K = tr(C-bar^2) = J^{-4/3} T, T = tr(C^2) = C : C.

@@ -29,13 +29,25 @@ inline Vector9 flatten(const Eigen::Matrix3d &A) {
   return v;
 }
 
-// Requires det F > 0 and M symmetric. Without the Hessian d2F stays zero.
-IsochoricInvariant isochoricInvariant(const Eigen::Matrix3d &F, const Eigen::Matrix3d &M, bool withHessian = true);
+// What every invariant at one F shares, computed once per point: F^-T and J^{-2/3}.
+// Requires det F > 0.
+struct IsochoricFrame {
+  explicit IsochoricFrame(const Eigen::Matrix3d &F);
+  Eigen::Matrix3d F, FinvT;
+  double Jm23;
+};
+
+// Requires M symmetric. Without the Hessian d2F stays zero.
+IsochoricInvariant isochoricInvariant(const IsochoricFrame &frame, const Eigen::Matrix3d &M, bool withHessian = true);
+// Requires det F > 0 and M symmetric.
+inline IsochoricInvariant isochoricInvariant(const Eigen::Matrix3d &F, const Eigen::Matrix3d &M) {
+  return isochoricInvariant(IsochoricFrame(F), M);
+}
 
 // d2 += weight d2I_M-bar/dF2. The Hessian is linear in M, so one call with M = sum_f w_f M_f adds
 // sum_f w_f d2I_f/dF2: a composite with several fibre families builds it once per point, not once
-// per family. Requires det F > 0 and M symmetric.
-void addIsochoricHessian(const Eigen::Matrix3d &F, const Eigen::Matrix3d &M, double weight, Tangent9 &d2);
+// per family. Requires M symmetric.
+void addIsochoricHessian(const IsochoricFrame &frame, const Eigen::Matrix3d &M, double weight, Tangent9 &d2);
 
 // I1-bar (M = 1).
 inline IsochoricInvariant isochoricI1(const Eigen::Matrix3d &F) {

@@ -47,11 +47,12 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
   r.P = wM * matrix.P;
   r.dPdF = wM * matrix.dPdF;
   bool anyTaut = false;
+  const IsochoricFrame frame(in.F);
   FibreTerms fibres;  // accumulates the fibre and eq. 5 terms
   for (int f = 0; f < n; ++f) {
     const Family &family = families_[f];
     const Eigen::Vector3d N = ownDirections ? family.geometry.N : Eigen::Vector3d(in.directions.col(f));
-    const FibreStretch s = fibreStretch(in.F, N);
+    const FibreStretch s = fibreStretch(frame, N);
     const double start = in.lambdaCStart.size() == n ? in.lambdaCStart(f) : std::numeric_limits<double>::quiet_NaN();
     const HillFibreResponse h = family.fibre.evaluate({s.lambdaBar, in.alpha(f), in.dt, in.lambdaCOld(f), start});
     if (!succeeded(h.status)) {
@@ -65,10 +66,10 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
     r.T(f) = h.T;
     const double phi = family.geometry.volumeFraction;
     if (form_ == MatrixStressForm::FibreDirectionRemoved)
-      removeMatrixFibreDirectionStress(in.F, N, s, phi, matrix, fibres);
+      removeMatrixFibreDirectionStress(frame, N, s, phi, matrix, fibres);
     addFibreResponse(s, phi, {h.storedEnergy, h.T, h.dTdLambdaF}, fibres);
   }
-  fibres.addTo(in.F, r);
+  fibres.addTo(frame, r);
   r.status = anyTaut || n == 0 ? HillSolveStatus::Taut : HillSolveStatus::Slack;
   return r;
 }
