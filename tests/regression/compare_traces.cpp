@@ -2,7 +2,8 @@
 //
 //   compare_traces REFERENCE.csv RUN_DIR [--tolerance T] [--max-dilatation D]
 //
-// Every (time, point) row of the reference must be in RUN_DIR/traces.csv with each displacement
+// Every (time, point) row of the reference must be in RUN_DIR/traces.csv, its time within
+// T x (the reference's last time) (times of an arc-length run are results) and each displacement
 // component within T x (the largest |u| component of the reference) (default 1e-6), and no row
 // may be missing or extra. With --max-dilatation, every step of RUN_DIR/summary.json must have a
 // max_dilatation_error <= D; the run must have converged. Prints the largest deviation and where;
@@ -67,23 +68,34 @@ int main(int argc, char **argv) {
   try {
     const Trace reference = read(argv[1]);
     const Trace run = read(std::string(argv[2]) + "/traces.csv");
-    double scale = 0.0;
-    for (const auto &[key, u] : reference)
+    double scale = 0.0, lastTime = 0.0;
+    for (const auto &[key, u] : reference) {
       for (double v : u) scale = std::max(scale, std::abs(v));
+      lastTime = std::max(lastTime, std::abs(key.first));
+    }
+    // A row's time is a key when the steps are prescribed (written with 17 digits, so equal to
+    // round-off) and a result when an arc-length run chooses it: either way it is held to the
+    // displacements' relative tolerance, against the reference's largest time, and the nearest
+    // row of the same point within it is the match.
+    const double timeWindow = std::max(1e-12, tolerance * lastTime);
     bool ok = true;
-    double worst = 0.0;
+    double worst = 0.0, worstTime = 0.0;
     Key worstAt{0.0, ""};
     for (const auto &[key, u] : reference) {
-      // Times are written with 17 digits; match them within 1e-12 s.
-      auto it = run.lower_bound({key.first - 1e-12, ""});
-      while (it != run.end() && it->first.first <= key.first + 1e-12 && it->first.second != key.second) ++it;
-      if (it == run.end() || std::abs(it->first.first - key.first) > 1e-12) {
+      auto match = run.end();
+      for (auto it = run.lower_bound({key.first - timeWindow, ""});
+           it != run.end() && it->first.first <= key.first + timeWindow; ++it)
+        if (it->first.second == key.second &&
+            (match == run.end() || std::abs(it->first.first - key.first) < std::abs(match->first.first - key.first)))
+          match = it;
+      if (match == run.end()) {
         std::printf("missing: t = %.17g point %s\n", key.first, key.second.c_str());
         ok = false;
         continue;
       }
+      worstTime = std::max(worstTime, std::abs(match->first.first - key.first));
       for (int c = 0; c < 3; ++c) {
-        const double d = std::abs(it->second[c] - u[c]);
+        const double d = std::abs(match->second[c] - u[c]);
         if (d > worst) {
           worst = d;
           worstAt = key;
@@ -97,6 +109,9 @@ int main(int argc, char **argv) {
     std::printf("largest deviation %.3e = %.3e of the largest displacement %.3e (t = %.6g, %s); tolerance %.1e\n",
                 worst, scale > 0 ? worst / scale : 0.0, scale, worstAt.first, worstAt.second.c_str(), tolerance);
     if (worst > tolerance * scale) ok = false;
+    if (worstTime > 1e-12)
+      std::printf("largest time deviation %.3e s = %.3e of the last time %.6g\n", worstTime,
+                  lastTime > 0 ? worstTime / lastTime : 0.0, lastTime);
     if (maxDilatation >= 0.0) {
       std::ifstream in(std::string(argv[2]) + "/summary.json");
       const auto summary = nlohmann::json::parse(in);
