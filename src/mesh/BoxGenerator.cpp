@@ -39,7 +39,7 @@ HexMesh generateBox(const Eigen::Vector3d &origin, const Eigen::Vector3d &length
   };
   HexMesh mesh =
       structuredHexGrid(cells, position, {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"});
-  mesh.namedPoints["origin"] = NamedPoint{mesh.nodes.front(), 0};
+  mesh.namedPoints["origin"] = NamedPoint{mesh.nodes.front(), 0, {}};
   return mesh;
 }
 

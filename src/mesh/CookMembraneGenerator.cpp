@@ -54,7 +54,7 @@ HexMesh generateCookMembrane(int cellsXY, int cellsZ, double thickness, double s
                                    {"clamped", "loaded", "bottom", "top", "front", "back"});
 
   const NodeId tip = cellsXY + static_cast<NodeId>(cellsXY + 1) * cellsXY;  // (i,j,k)=(n,n,0)
-  mesh.namedPoints["tip"] = NamedPoint{mesh.nodes[static_cast<std::size_t>(tip)], tip};
+  mesh.namedPoints["tip"] = NamedPoint{mesh.nodes[static_cast<std::size_t>(tip)], tip, {}};
   return mesh;
 }
 

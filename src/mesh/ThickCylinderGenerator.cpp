@@ -23,7 +23,7 @@ HexMesh generateThickCylinder(double innerRadius, double outerRadius, double hei
         return Eigen::Vector3d(r * c, r * s, height * k / cells[2]);
       },
       {"inner", "outer", "y0", "x0", "zmin", "zmax"});
-  m.namedPoints["inner"] = {m.nodes[0], 0};
+  m.namedPoints["inner"] = {m.nodes[0], 0, {}};
   return m;
 }
 

@@ -49,7 +49,9 @@ TEST(BreathingProfile, RealNonNegativeAndShiftable) {
       ASSERT_TRUE(std::isfinite(v)) << t;
       EXPECT_GE(v, 0.0);
       EXPECT_LE(v, 1.0);
-      if (t < 0.0) EXPECT_EQ(v, 0.0);
+      if (t < 0.0) {
+        EXPECT_EQ(v, 0.0);
+      }
     }
   }
   const BreathingProfile shifted{2.5, 1.75, 0.5, Rect::HalfWave};

@@ -91,7 +91,7 @@ TEST(MeshRefinement, TongueKeepsVolumeSetsAndBoundary) {
   files.nodeSets = {{"jaw", dir + "jaw_attachment_nodes.txt"}};
   HexMesh mesh = readAnsysModel(files).imported.mesh;
   mesh.faceSets["boundary"] = boundaryFaces(mesh);
-  mesh.namedPoints["tip"] = {mesh.nodes[919], 919};  // README: node 920
+  mesh.namedPoints["tip"] = {mesh.nodes[919], 919, {}};  // README: node 920
 
   // Distinct edges and faces counted here from the VTK hex directly.
   std::set<std::pair<NodeId, NodeId>> edges;
