@@ -1,5 +1,6 @@
 #include "solvers/NewtonSolver.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <NOX.H>
@@ -128,6 +129,24 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, 
 
 NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toleranceRule,
                                  const IterationCallback &onIteration, double updateTolerance) const {
+  StopRule rule;
+  if (updateTolerance >= 0.0) {
+    rule.update = StopRule::Update::perUnknown;
+    rule.perUnknownTolerance = updateTolerance;
+  }
+  return run(u, toleranceRule, onIteration, rule);
+}
+
+NewtonResult NewtonSolver::solveToResidual(assembly::Vector &u, const ToleranceRule &toleranceRule,
+                                           const IterationCallback &onIteration, double maximumForcing) const {
+  StopRule rule;
+  rule.update = StopRule::Update::none;
+  rule.maximumForcing = std::min(maximumForcing, kForcingCeiling);
+  return run(u, toleranceRule, onIteration, rule);
+}
+
+NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleranceRule,
+                               const IterationCallback &onIteration, const StopRule &rule) const {
   using namespace NOX::StatusTest;
   NewtonResult result;
 
@@ -151,21 +170,15 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toler
   const double residualTolerance = toleranceRule(normF0);
 
   auto normF = rcp(new NormFAboveRoundOff(residualTolerance, *model_));
-  // The deck's tolerance on the update relative to the whole field; a caller's own (the Uzawa
-  // loop's loose first solve) per unknown, in NOX's weighted RMS norm: where that solve stops
-  // decides where the multipliers are updated and so, within the dilatation tolerance, the answer.
-  // Per unknown it stops where the direct and the iterative solve, on 1 or 2 ranks, agree to 1e-6
-  // of the traces; relative to the whole field the tissue traces moved by up to 1.7e-4 and 1 and 2
-  // ranks differed by 1.1e-5 (doc/incompressibility.md).
+  // The update test: the deck's, relative to the whole field; a caller's own per unknown, in
+  // NOX's weighted RMS norm; or none (solveToResidual).
   const double updateFloor = 1e-9 * lengthScale_;
-  RCP<NOX::StatusTest::Generic> update;
-  if (updateTolerance < 0.0)
-    update = rcp(new RelativeUpdate(parameters_.updateTolerance, updateFloor));
-  else
-    update = rcp(new NormWRMS(updateTolerance, updateFloor));
   auto converged = rcp(new Combo(Combo::AND));
   converged->addStatusTest(normF);
-  converged->addStatusTest(update);
+  if (rule.update == StopRule::Update::deck)
+    converged->addStatusTest(rcp(new RelativeUpdate(parameters_.updateTolerance, updateFloor)));
+  else if (rule.update == StopRule::Update::perUnknown)
+    converged->addStatusTest(rcp(new NormWRMS(rule.perUnknownTolerance, updateFloor)));
   auto tests = rcp(new Combo(Combo::OR));
   tests->addStatusTest(rcp(new FiniteValue));
   tests->addStatusTest(converged);
@@ -186,8 +199,8 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toler
     auto &newtonParams = params->sublist("Direction").sublist("Newton");
     newtonParams.set("Forcing Term Method", parameters_.forcing == ForcingTerm::type1 ? "Type 1" : "Type 2");
     newtonParams.set("Forcing Term Minimum Tolerance", linearTolerance_);
-    newtonParams.set("Forcing Term Initial Tolerance", 1e-2);
-    newtonParams.set("Forcing Term Maximum Tolerance", 1e-2);
+    newtonParams.set("Forcing Term Initial Tolerance", rule.maximumForcing);
+    newtonParams.set("Forcing Term Maximum Tolerance", rule.maximumForcing);
   }
 
   // Already converged (e.g. an Uzawa update that changed nothing)? Then no iteration is needed.
@@ -202,8 +215,9 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toler
 
   auto solver = NOX::Solver::buildSolver(group, tests, params);
   // The model skips the tangent where the update test is about to pass (ModelEvaluator::
-  // setConvergenceForecast), with the test's own formula; cleared when the solve ends.
-  model_->setConvergenceForecast(updateForecast(updateTolerance, updateFloor));
+  // setConvergenceForecast), with the test's own formula; cleared when the solve ends. Without
+  // an update test nothing forecasts the residual's: every pass assembles the tangent.
+  if (rule.update != StopRule::Update::none) model_->setConvergenceForecast(updateForecast(rule, updateFloor));
   struct ClearForecast {
     assembly::ModelEvaluator &model;
     ~ClearForecast() { model.setConvergenceForecast({}); }
@@ -230,16 +244,16 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toler
   return result;
 }
 
-assembly::ModelEvaluator::ConvergenceForecast NewtonSolver::updateForecast(double updateTolerance,
-                                                                          double floor) const {
-  if (updateTolerance < 0.0) {
+assembly::ModelEvaluator::ConvergenceForecast NewtonSolver::updateForecast(const StopRule &rule, double floor) const {
+  if (rule.update == StopRule::Update::deck) {
     const double tolerance = parameters_.updateTolerance;
     return [tolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
       return dx.norm2() <= relativeUpdateBound(tolerance, floor, x.norm2(), static_cast<double>(x.getGlobalLength()));
     };
   }
-  return [updateTolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
-    return weightedRmsUpdate(dx, x, updateTolerance, floor) < 1.0;
+  const double tolerance = rule.perUnknownTolerance;
+  return [tolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
+    return weightedRmsUpdate(dx, x, tolerance, floor) < 1.0;
   };
 }
 

@@ -40,6 +40,13 @@ public:
                      double updateTolerance = -1.0) const;
   NewtonResult solve(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration,
                      double updateTolerance = -1.0) const;
+  // The Uzawa loop's inexact first solve: it stops on the residual test alone, and each Krylov
+  // solve goes to at most `maximumForcing` relative (Eisenstat-Walker may ask less). Where it
+  // stops the multipliers are updated, so that iterate must not depend on the linear solver:
+  // with the forcing's usual 1e-2 an iterative solve on 2 ranks and a direct one on 1 stopped
+  // 1.1e-5 apart in the answer (doc/incompressibility.md).
+  NewtonResult solveToResidual(assembly::Vector &u, const ToleranceRule &residualTolerance,
+                               const IterationCallback &onIteration, double maximumForcing) const;
 
   // Solves K(u) x_j = b_j for every column of `rhs` with the tangent at u (the model's time and
   // Lambda, the three-field bases condensed exactly at u), one preconditioner for all columns,
@@ -62,11 +69,23 @@ public:
   // The model it solves: its nominal time and multipliers are those of the next solve.
   assembly::ModelEvaluator &model() const { return *model_; }
 
+  // The Eisenstat-Walker forcing's first and largest value (the Krylov tolerance of a Newton
+  // iteration far from the solution).
+  static constexpr double kForcingCeiling = 1e-2;
+
 private:
-  // The update test of a solve (updateTolerance < 0: the deck's, relative to the whole field;
-  // else NOX's weighted RMS norm) as a forecast for the model, for the update from the last
-  // accepted iterate.
-  assembly::ModelEvaluator::ConvergenceForecast updateForecast(double updateTolerance, double floor) const;
+  // What stops a solve besides its residual: the update test (the deck's relative to the whole
+  // field, per unknown in NOX's weighted RMS norm, or none) and the forcing's ceiling.
+  struct StopRule {
+    enum class Update { deck, perUnknown, none } update = Update::deck;
+    double perUnknownTolerance = 0.0;
+    double maximumForcing = kForcingCeiling;
+  };
+  NewtonResult run(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration,
+                   const StopRule &rule) const;
+  // The update test of a rule with one (deck or per unknown) as a forecast for the model, for
+  // the update from the last accepted iterate.
+  assembly::ModelEvaluator::ConvergenceForecast updateForecast(const StopRule &rule, double floor) const;
 
   Teuchos::RCP<assembly::ModelEvaluator> model_;
   NewtonParameters parameters_;

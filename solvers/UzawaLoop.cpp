@@ -31,7 +31,7 @@ UzawaLoop::UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &n
     : assembler_(assembler), newton_(newton), augmented_(s.method == IncompressibilityMethod::augmentedLagrangian),
       mixed_(s.method == IncompressibilityMethod::mixed), tolerance_(s.dilatationTolerance),
       maxIterations_(s.maximumUzawaIterations), inexact_(augmented_ && s.inexactUzawa),
-      innerTolerance_(s.innerTolerance) {
+      innerTolerance_(s.innerTolerance), innerLinearTolerance_(s.innerLinearTolerance) {
   const model::Scene &scene = assembler.scene();
   physical_ = physical;
   for (std::size_t t = 0; t < scene.tissues.size(); ++t) {
@@ -143,7 +143,8 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
   for (int k = 1; k <= (measuresPhysicalLaw() ? maxIterations_ : 1); ++k) {
     newton_.model().setMultipliers(lambda);
     NewtonResult n = tight ? newton_.solve(u, NewtonSolver::ToleranceRule(tightTolerance), onNewton)
-                           : newton_.solve(u, NewtonSolver::ToleranceRule(looseTolerance), onNewton, innerTolerance_);
+                           : newton_.solveToResidual(u, NewtonSolver::ToleranceRule(looseTolerance), onNewton,
+                                                     innerLinearTolerance_);
     // Mixed: the element pressures were unknowns of the solve.
     if (mixed_) lambda = newton_.model().multipliers();
     ++result.solves;

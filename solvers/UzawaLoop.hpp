@@ -92,7 +92,8 @@ private:
   double tolerance_;
   int maxIterations_;
   bool inexact_;              // Uzawa acceleration = inexact inner solves
-  double innerTolerance_;     // their relative residual (and update) tolerance
+  double innerTolerance_;     // their relative residual tolerance
+  double innerLinearTolerance_; // their Krylov solves' largest relative tolerance
 };
 
 } // namespace glossa::solvers

@@ -15,7 +15,8 @@ struct IncompressibilityParameters {
   double dilatationTolerance = 1e-3; // max_e |theta_e - theta_phys(p_e)|
   int maximumUzawaIterations = 50;
   bool inexactUzawa = true;          // Uzawa acceleration = inexact
-  double innerTolerance = 1e-2;
+  double innerTolerance = 1e-2;      // the inexact solve's relative residual
+  double innerLinearTolerance = 1e-3; // at most, of each of its Krylov solves
 };
 
 Teuchos::ParameterList incompressibilityParameters();
