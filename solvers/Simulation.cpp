@@ -643,6 +643,7 @@ void Simulation::writeCheckpoint() {
     part["previous_lambda"] = previous_->lambda;
   }
   part["muscle"] = toJson(muscleHistory_->snapshot());
+  part["multiplier_prediction"] = multiplierPredictor_.toJson();
   if (root_) part["run"] = runState();
   // Published only once every rank's part is on disk; a rank that cannot write stops them all.
   std::string error;
@@ -691,6 +692,10 @@ void Simulation::restoreState(const Restart &restart) {
     previous_->lambda = elementValues(part.at("previous_lambda"), previous_->lambda.size(), "previous multipliers");
   }
   muscleHistory_->restore(muscleSnapshotFromJson(part.at("muscle")));
+  // A checkpoint written before the prediction existed has none: that run's next step starts
+  // from its committed multipliers.
+  if (part.contains("multiplier_prediction"))
+    multiplierPredictor_.restore(part.at("multiplier_prediction"), committed_->lambda.size());
   stepNumber_ = run.at("step").get<int>();
   t_ = run.at("time").get<double>();
   previousDt_ = run.at("previous_dt").get<double>();
@@ -827,6 +832,7 @@ bool Simulation::attemptStep() {
     for (std::size_t e = 0; e < stepStart_->lambda.size(); ++e)
       stepStart_->lambda[e] += ratio * (committed_->lambda[e] - previous_->lambda[e]);
   }
+  multiplierPredictor_.predict(dt, stepStart_->lambda);
   trial_ = std::make_unique<Trial>(t_ + dt, dt, model_->assemblySeconds(), *stepStart_);
   if (detail_) std::printf("step %d  t = %.6g  dt = %.3g\n", stepNumber_ + 1, trial_->time, dt);
   if (driver_) controlledStep(*trial_);
@@ -908,6 +914,13 @@ void Simulation::commitTrial() {
     previousDt_ = trial.dt;
   }
   committed_->assign(trial.state);
+  // A controlled step's winner may have been solved by another control group, whose statistics
+  // carry no multipliers: every group takes them from the committed state alike.
+  if (driver_ && uzawa_->augmentedLagrangian() && !uzawa_->mixedPressure())
+    multiplierPredictor_.commit(
+        uzawa_->nextMultipliers(assembler_->elementDilatations(committed_->u, committed_->lambda)), trial.dt);
+  else
+    multiplierPredictor_.commit(trial.attempt.uzawa.nextMultipliers, trial.dt);
   t_ = trial.time;
   ++stepNumber_;
   steps_->accept();

@@ -21,6 +21,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "io/deck/Deck.hpp"
+#include "solvers/MultiplierPredictor.hpp"
 #include "solvers/parameters/IncompressibilityParameters.hpp"
 #include "solvers/parameters/LinearSolverParameters.hpp"
 #include "solvers/parameters/NewtonParameters.hpp"
@@ -222,6 +223,7 @@ private:
   bool extrapolate_ = false;
   std::unique_ptr<StepState> previous_, stepStart_;
   double previousDt_ = 0.0;
+  MultiplierPredictor multiplierPredictor_; // augmented Lagrangian: where a step's multipliers start
   std::vector<double> committedStretch_; // every group's mean fibre stretch (pruning)
   double t_ = 0.0;
   int stepNumber_ = 0;

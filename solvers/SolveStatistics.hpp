@@ -35,6 +35,9 @@ struct UzawaResult {
   DilatationError dilatation;
   std::vector<NewtonResult> newton;
   int augmentationRaises = 0; // times a tissue's kappa_AL was raised in this step (UzawaLoop)
+  // Augmented Lagrangian, converged: the multipliers the loop's next update would set, beta p_e
+  // (the next step's prediction starts from them: MultiplierPredictor).
+  std::vector<double> nextMultipliers;
 };
 
 } // namespace glossa::solvers

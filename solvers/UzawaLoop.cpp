@@ -161,8 +161,13 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     if (!measuresPhysicalLaw() || result.dilatation.max < tolerance_) {
       if (tight) {
         result.converged = true;
+        if (augmented_ && !mixed_) result.nextMultipliers = nextMultipliers(fields);
         return result;
       }
+      // The inexact solve meets the tolerance already (its multipliers were well predicted):
+      // Newton goes on from its iterate to the full tolerance with them, no update between.
+      tight = true;
+      continue;
     }
     // A loose solve's error says nothing of the contraction; two tight ones in a row do.
     if (augmented_ && allowRaises_) {
@@ -183,9 +188,15 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     // Lambda_e <- beta p_e (p_e = U_t'(theta_e) + Lambda_e; for nu = 0.5, beta = 1 and this is
     // Lambda_e + kappa_AL (theta_e - 1) to first order): the multiplier takes over the element
     // pressure, so the next solve needs less volume change to carry it (AugmentedLagrangianRule).
-    for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = ruleOf(i).nextMultiplier(fields.pressure[i]);
+    lambda = nextMultipliers(fields);
   }
   return result;
+}
+
+std::vector<double> UzawaLoop::nextMultipliers(const assembly::ElementFields &fields) const {
+  std::vector<double> next(fields.pressure.size());
+  for (std::size_t i = 0; i < next.size(); ++i) next[i] = ruleOf(i).nextMultiplier(fields.pressure[i]);
+  return next;
 }
 
 } // namespace glossa::solvers

@@ -43,6 +43,9 @@ public:
                     const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const;
 
   DilatationError dilatationError(const assembly::ElementFields &fields) const;
+  // The multipliers the next update would set from these element fields, beta p_e per local
+  // element (augmented Lagrangian).
+  std::vector<double> nextMultipliers(const assembly::ElementFields &fields) const;
 
   // Adaptive kappa_AL (augmented Lagrangian): the Uzawa update contracts the multiplier error by
   // about S / (S + kappa_AL) per solve, S the stiffness against an element's volume change at

@@ -53,6 +53,7 @@ TEST(FollowerPressure, ThickCylinderInflationMatchesTheClosedForm) {
   EXPECT_NEAR(medium, exact, 5e-3 * exact);
   const double ratio = std::abs(coarse - exact) / std::abs(medium - exact);
   EXPECT_GT(ratio, 3.0) << "coarse " << coarse << " medium " << medium << " exact " << exact;
-  // Quadratic Newton with the follower tangent, above round-off (2e-12 of |f_0| here).
-  EXPECT_GE(test::expectQuadraticNewton(s), 5);
+  // Quadratic Newton with the follower tangent, above round-off (2e-12 of |f_0| here): pairs down
+  // to 1e-11 of it count (the steps' few iterations leave 4 pairs above 1e-10).
+  EXPECT_GE(test::expectQuadraticNewton(s, 1e-11), 5);
 }
