@@ -824,7 +824,8 @@ Eigen::Matrix3Xd Simulation::controlPointDisplacement(const StepState &state) co
 bool Simulation::attemptStep() {
   const double dt = steps_->nextStep(t_);
   // The start of this step's solves: the committed state, or its linear extrapolation from the
-  // step before (the multipliers too, so the Uzawa loop starts nearer its fixed point).
+  // step before (the multipliers too, so the Uzawa loop starts nearer its fixed point); with the
+  // augmented Lagrangian the multipliers then come from MultiplierPredictor, one update ahead.
   stepStart_->assign(*committed_);
   if (extrapolate_ && previousDt_ > 0.0) {
     const double ratio = dt / previousDt_;
