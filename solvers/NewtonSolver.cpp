@@ -77,20 +77,6 @@ double relativeUpdateBound(double tolerance, double floor, double xNorm, double 
   return tolerance * xNorm + floor * std::sqrt(length);
 }
 
-// NOX's weighted RMS norm of an update, sqrt(1/N sum_i (dx_i / (rtol |x_i| + atol))^2), which
-// NormWRMS compares with 1.
-double weightedRmsUpdate(const assembly::Vector &dx, const assembly::Vector &x, double rtol, double atol) {
-  const auto d = dx.getData(0), v = x.getData(0);
-  double local = 0.0;
-  for (decltype(d.size()) i = 0; i < d.size(); ++i) {
-    const double w = d[i] / (rtol * std::abs(v[i]) + atol);
-    local += w * w;
-  }
-  double sum = 0.0;
-  Teuchos::reduceAll(*x.getMap()->getComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(sum));
-  return std::sqrt(sum / static_cast<double>(x.getGlobalLength()));
-}
-
 class RelativeUpdate : public NOX::StatusTest::Generic {
 public:
   RelativeUpdate(double tolerance, double floor) : tolerance_(tolerance), floor_(floor) {}
@@ -122,31 +108,23 @@ NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const NewtonPara
     : model_(std::move(model)), parameters_(parameters), lengthScale_(lengthScale), linearTolerance_(linearTolerance),
       keepLinearSolver_(keepLinearSolver) {}
 
-NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
-                                 double updateTolerance) const {
-  return solve(u, [residualTolerance](double) { return residualTolerance; }, onIteration, updateTolerance);
+NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
+                                 const IterationCallback &onIteration) const {
+  return solve(u, [residualTolerance](double) { return residualTolerance; }, onIteration);
 }
 
 NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toleranceRule,
-                                 const IterationCallback &onIteration, double updateTolerance) const {
-  StopRule rule;
-  if (updateTolerance >= 0.0) {
-    rule.update = StopRule::Update::perUnknown;
-    rule.perUnknownTolerance = updateTolerance;
-  }
-  return run(u, toleranceRule, onIteration, rule);
+                                 const IterationCallback &onIteration) const {
+  return run(u, toleranceRule, onIteration, /*updateTest=*/true, kForcingCeiling);
 }
 
 NewtonResult NewtonSolver::solveToResidual(assembly::Vector &u, const ToleranceRule &toleranceRule,
                                            const IterationCallback &onIteration, double maximumForcing) const {
-  StopRule rule;
-  rule.update = StopRule::Update::none;
-  rule.maximumForcing = std::min(maximumForcing, kForcingCeiling);
-  return run(u, toleranceRule, onIteration, rule);
+  return run(u, toleranceRule, onIteration, /*updateTest=*/false, std::min(maximumForcing, kForcingCeiling));
 }
 
 NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleranceRule,
-                               const IterationCallback &onIteration, const StopRule &rule) const {
+                               const IterationCallback &onIteration, bool updateTest, double maximumForcing) const {
   using namespace NOX::StatusTest;
   NewtonResult result;
 
@@ -170,15 +148,11 @@ NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleran
   const double residualTolerance = toleranceRule(normF0);
 
   auto normF = rcp(new NormFAboveRoundOff(residualTolerance, *model_));
-  // The update test: the deck's, relative to the whole field; a caller's own per unknown, in
-  // NOX's weighted RMS norm; or none (solveToResidual).
+  // The deck's update test, relative to the whole field (none in solveToResidual).
   const double updateFloor = 1e-9 * lengthScale_;
   auto converged = rcp(new Combo(Combo::AND));
   converged->addStatusTest(normF);
-  if (rule.update == StopRule::Update::deck)
-    converged->addStatusTest(rcp(new RelativeUpdate(parameters_.updateTolerance, updateFloor)));
-  else if (rule.update == StopRule::Update::perUnknown)
-    converged->addStatusTest(rcp(new NormWRMS(rule.perUnknownTolerance, updateFloor)));
+  if (updateTest) converged->addStatusTest(rcp(new RelativeUpdate(parameters_.updateTolerance, updateFloor)));
   auto tests = rcp(new Combo(Combo::OR));
   tests->addStatusTest(rcp(new FiniteValue));
   tests->addStatusTest(converged);
@@ -199,8 +173,8 @@ NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleran
     auto &newtonParams = params->sublist("Direction").sublist("Newton");
     newtonParams.set("Forcing Term Method", parameters_.forcing == ForcingTerm::type1 ? "Type 1" : "Type 2");
     newtonParams.set("Forcing Term Minimum Tolerance", linearTolerance_);
-    newtonParams.set("Forcing Term Initial Tolerance", rule.maximumForcing);
-    newtonParams.set("Forcing Term Maximum Tolerance", rule.maximumForcing);
+    newtonParams.set("Forcing Term Initial Tolerance", maximumForcing);
+    newtonParams.set("Forcing Term Maximum Tolerance", maximumForcing);
   }
 
   // Already converged (e.g. an Uzawa update that changed nothing)? Then no iteration is needed.
@@ -217,7 +191,7 @@ NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleran
   // The model skips the tangent where the update test is about to pass (ModelEvaluator::
   // setConvergenceForecast), with the test's own formula; cleared when the solve ends. Without
   // an update test nothing forecasts the residual's: every pass assembles the tangent.
-  if (rule.update != StopRule::Update::none) model_->setConvergenceForecast(updateForecast(rule, updateFloor));
+  if (updateTest) model_->setConvergenceForecast(updateForecast(updateFloor));
   struct ClearForecast {
     assembly::ModelEvaluator &model;
     ~ClearForecast() { model.setConvergenceForecast({}); }
@@ -244,16 +218,10 @@ NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleran
   return result;
 }
 
-assembly::ModelEvaluator::ConvergenceForecast NewtonSolver::updateForecast(const StopRule &rule, double floor) const {
-  if (rule.update == StopRule::Update::deck) {
-    const double tolerance = parameters_.updateTolerance;
-    return [tolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
-      return dx.norm2() <= relativeUpdateBound(tolerance, floor, x.norm2(), static_cast<double>(x.getGlobalLength()));
-    };
-  }
-  const double tolerance = rule.perUnknownTolerance;
+assembly::ModelEvaluator::ConvergenceForecast NewtonSolver::updateForecast(double floor) const {
+  const double tolerance = parameters_.updateTolerance;
   return [tolerance, floor](const assembly::Vector &dx, const assembly::Vector &x) {
-    return weightedRmsUpdate(dx, x, tolerance, floor) < 1.0;
+    return dx.norm2() <= relativeUpdateBound(tolerance, floor, x.norm2(), static_cast<double>(x.getGlobalLength()));
   };
 }
 

@@ -34,12 +34,10 @@ public:
   using ToleranceRule = std::function<double(double initialResidualNorm)>;
 
   // Solves from the initial guess u (owned vector), overwriting it with the solution when
-  // converged. `residualTolerance` is absolute (the caller scales it by the load).
-  // `updateTolerance` < 0: the deck's relative update tolerance.
-  NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration,
-                     double updateTolerance = -1.0) const;
-  NewtonResult solve(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration,
-                     double updateTolerance = -1.0) const;
+  // converged: the residual below `residualTolerance` (absolute; the caller scales it by the
+  // load) and the update below the deck's update tolerance relative to the whole field.
+  NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration) const;
+  NewtonResult solve(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration) const;
   // The Uzawa loop's inexact first solve: it stops on the residual test alone, and each Krylov
   // solve goes to at most `maximumForcing` relative (Eisenstat-Walker may ask less). Where it
   // stops the multipliers are updated, so that iterate must not depend on the linear solver:
@@ -74,18 +72,12 @@ public:
   static constexpr double kForcingCeiling = 1e-2;
 
 private:
-  // What stops a solve besides its residual: the update test (the deck's relative to the whole
-  // field, per unknown in NOX's weighted RMS norm, or none) and the forcing's ceiling.
-  struct StopRule {
-    enum class Update { deck, perUnknown, none } update = Update::deck;
-    double perUnknownTolerance = 0.0;
-    double maximumForcing = kForcingCeiling;
-  };
+  // `updateTest`: the deck's (solve) or none (solveToResidual); `maximumForcing`: the
+  // Eisenstat-Walker forcing's first and largest value.
   NewtonResult run(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration,
-                   const StopRule &rule) const;
-  // The update test of a rule with one (deck or per unknown) as a forecast for the model, for
-  // the update from the last accepted iterate.
-  assembly::ModelEvaluator::ConvergenceForecast updateForecast(const StopRule &rule, double floor) const;
+                   bool updateTest, double maximumForcing) const;
+  // The deck's update test as a forecast for the model, for the update from the last accepted iterate.
+  assembly::ModelEvaluator::ConvergenceForecast updateForecast(double floor) const;
 
   Teuchos::RCP<assembly::ModelEvaluator> model_;
   NewtonParameters parameters_;
