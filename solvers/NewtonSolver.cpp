@@ -10,6 +10,7 @@
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
+#include "solvers/InexactNewtonForcing.hpp"
 #include "solvers/LinearSolveFailure.hpp"
 #include "solvers/MumpsPreconditioner.hpp"
 
@@ -22,8 +23,15 @@ using Teuchos::rcp;
 namespace {
 class IterationObserver : public NOX::Observer {
 public:
-  IterationObserver(const NewtonSolver::IterationCallback &cb, NewtonResult &r, assembly::ModelEvaluator &model)
-      : cb_(cb), r_(r), model_(model) {}
+  // `forcing` (null: NOX's own): sets each iteration's linear tolerance in `linearSolver`.
+  IterationObserver(const NewtonSolver::IterationCallback &cb, NewtonResult &r, assembly::ModelEvaluator &model,
+                    InexactNewtonForcing *forcing, ParameterList &linearSolver)
+      : cb_(cb), r_(r), model_(model), forcing_(forcing), linearSolver_(linearSolver) {}
+  void runPreIterate(const NOX::Solver::Generic &solver) override {
+    if (forcing_ == nullptr || solver.getNumIterations() == 0) return;
+    linearSolver_.set("Tolerance", forcing_->next(solver.getSolutionGroup().getNormF(),
+                                                  solver.getPreviousSolutionGroup().getNormF()));
+  }
   void runPostIterate(const NOX::Solver::Generic &solver) override {
     // The accepted iterate becomes the base of the next three-field linearisation.
     const auto &x = dynamic_cast<const NOX::Thyra::Vector &>(solver.getSolutionGroup().getX());
@@ -39,6 +47,8 @@ private:
   const NewtonSolver::IterationCallback &cb_;
   NewtonResult &r_;
   assembly::ModelEvaluator &model_;
+  InexactNewtonForcing *forcing_;
+  ParameterList &linearSolver_;
 };
 
 // ||f|| <= max(tolerance, floor): the floor is what round-off leaves of a residual assembled from
@@ -165,17 +175,26 @@ NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleran
                                                : ls == LineSearch::backtrack ? "Backtrack"
                                                                              : "Polynomial");
   params->sublist("Printing").set("Output Information", NOX::Utils::Error);
-  params->sublist("Solver Options").set<RCP<NOX::Observer>>("User Defined Pre/Post Operator",
-                                                           rcp(new IterationObserver(onIteration, result, *model_)));
-  // NOX passes its own relative tolerance to every linear solve: it must be the deck's.
-  params->sublist("Direction").sublist("Newton").sublist("Linear Solver").set("Tolerance", linearTolerance_);
-  if (parameters_.forcing != ForcingTerm::constant) {
-    auto &newtonParams = params->sublist("Direction").sublist("Newton");
-    newtonParams.set("Forcing Term Method", parameters_.forcing == ForcingTerm::type1 ? "Type 1" : "Type 2");
+  // NOX passes its own relative tolerance to every linear solve: the deck's (constant), NOX's
+  // Eisenstat-Walker "Type 1", or "Type 2" with the over-solving bound (InexactNewtonForcing), which the
+  // observer sets before each iteration while NOX keeps the value it is given ("Constant").
+  auto &newtonParams = params->sublist("Direction").sublist("Newton");
+  ParameterList &linearSolverParams = newtonParams.sublist("Linear Solver");
+  linearSolverParams.set("Tolerance", linearTolerance_);
+  InexactNewtonForcing forcing(linearTolerance_, maximumForcing, residualTolerance);
+  if (parameters_.forcing == ForcingTerm::type1) {
+    newtonParams.set("Forcing Term Method", "Type 1");
     newtonParams.set("Forcing Term Minimum Tolerance", linearTolerance_);
     newtonParams.set("Forcing Term Initial Tolerance", maximumForcing);
     newtonParams.set("Forcing Term Maximum Tolerance", maximumForcing);
+  } else if (parameters_.forcing == ForcingTerm::type2) {
+    linearSolverParams.set("Tolerance", forcing.first());
   }
+  params->sublist("Solver Options")
+      .set<RCP<NOX::Observer>>("User Defined Pre/Post Operator",
+                               rcp(new IterationObserver(onIteration, result, *model_,
+                                                         parameters_.forcing == ForcingTerm::type2 ? &forcing : nullptr,
+                                                         linearSolverParams)));
 
   // Already converged (e.g. an Uzawa update that changed nothing)? Then no iteration is needed.
   if (std::isfinite(normF0) && normF0 <= residualTolerance) {

@@ -20,9 +20,11 @@ Teuchos::ParameterList nonlinearSolverParameters() {
                     "doc/incompressibility.md)",
                     io::Range::open(0.0, 1.0));
   io::declareString(p, "forcing term", "Type 2",
-                    "linear tolerance per Newton iteration: constant (the Linear solver tolerance) "
-                    "or Eisenstat-Walker 'Type 2' (loose while far from the solution, down to the "
-                    "Linear solver tolerance)",
+                    "linear tolerance per Newton iteration: constant (the Linear solver tolerance), "
+                    "Eisenstat-Walker 'Type 1' (NOX's) or 'Type 2' (loose while far from the "
+                    "solution, down to the Linear solver tolerance, and never below half the "
+                    "residual tolerance over the residual: the last iteration of a solve asks only "
+                    "what the residual test needs; doc/incompressibility.md)",
                     {"constant", "Type 1", "Type 2"});
   io::declareString(p, "line search", "full step", "NOX line search",
                     {"full step", "backtrack", "polynomial"});
