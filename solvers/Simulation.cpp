@@ -387,7 +387,10 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   committed_ = std::make_unique<StepState>(assembler_->ownedMap(), assembler_->numLocalElements());
   stepStart_ = std::make_unique<StepState>(*committed_);
   previous_ = std::make_unique<StepState>(*committed_);
-  extrapolate_ = time_.predictor == Predictor::linearExtrapolation;
+  // auto: not with the penalty method, whose kappa (5000 mu at nu = 0.4999) multiplies the volume
+  // error of an extrapolated displacement into its pressures (doc/theory.md, bench/README.md).
+  extrapolate_ = time_.predictor == Predictor::linearExtrapolation ||
+                 (time_.predictor == Predictor::automatic && incompressibility_.method != IncompressibilityMethod::penalty);
   const assembly::MuscleFields initialMuscle = assembly::updateMuscleHistory(*assembler_, committed_->u, *muscleHistory_);
   std::vector<double> initialInputs;
   for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g)
@@ -823,11 +826,24 @@ Eigen::Matrix3Xd Simulation::controlPointDisplacement(const StepState &state) co
 
 bool Simulation::attemptStep() {
   const double dt = steps_->nextStep(t_);
+  const bool extrapolated = extrapolate_ && previousDt_ > 0.0;
+  if (attemptStepFrom(dt, extrapolated) || !extrapolated || trial_->attempt.unstable) return trial_->attempt.ok;
+  // The extrapolation can overshoot where the motion stops short, e.g. a muscle's jump from rest
+  // in a first step carried on into the next (the protrusion scene: elements inverted, 8 steps
+  // became 16 with cut-backs alone; bench/README.md).
+  if (talk_)
+    std::printf("  step failed at t = %.6g from the extrapolated state: %s; again from the last converged state\n",
+                trial_->time, trial_->attempt.why.c_str());
+  doc_["predictor_retries"] = doc_.value("predictor_retries", 0) + 1;
+  return attemptStepFrom(dt, false);
+}
+
+bool Simulation::attemptStepFrom(double dt, bool extrapolated) {
   // The start of this step's solves: the committed state, or its linear extrapolation from the
   // step before (the multipliers too, so the Uzawa loop starts nearer its fixed point); with the
   // augmented Lagrangian the multipliers then come from MultiplierPredictor, one update ahead.
   stepStart_->assign(*committed_);
-  if (extrapolate_ && previousDt_ > 0.0) {
+  if (extrapolated) {
     const double ratio = dt / previousDt_;
     stepStart_->u.update(-ratio, previous_->u, 1.0 + ratio);
     for (std::size_t e = 0; e < stepStart_->lambda.size(); ++e)

@@ -97,7 +97,11 @@ public:
   // Attempts the next step (of the step-size controller's size) from the committed state into
   // the trial state; a controlled deck's step searches the inputs first. Nothing is committed,
   // so the committed state stays intact if it fails. Returns whether it converged. Collective.
+  // With the linear predictor an attempt that fails from the extrapolated state is made once
+  // more, at the same step size, from the committed state before the step is cut back.
   bool attemptStep();
+  // One attempt of the step of size dt, from the committed state or its extrapolation.
+  bool attemptStepFrom(double dt, bool extrapolated);
   // The trial state of a converged attempt becomes the committed one, is recorded (traces,
   // fields, the summary's step), and the muscle history is committed. Collective.
   void commitTrial();

@@ -10,13 +10,13 @@
 
 namespace glossa::solvers {
 
-enum class Predictor { none, linearExtrapolation };
+enum class Predictor { automatic, none, linearExtrapolation };
 enum class AtLimitPoint { stop, ignore, follow };
 enum class PathFollowing { loadControl, arcLength };
 
 struct TimeParameters {
   StepSizeRule steps; // end time, nominal and minimum step
-  Predictor predictor = Predictor::none;
+  Predictor predictor = Predictor::automatic;
   AtLimitPoint atLimitPoint = AtLimitPoint::stop;
   double limitPointTolerance = 0.01;
   PathFollowing pathFollowing = PathFollowing::loadControl;
