@@ -12,21 +12,21 @@ using glossa::solvers::MultiplierPredictor;
 namespace {
 // Lambda*(t) = a_e + b_e t per element.
 std::vector<double> linearInTime(double t) { return {1.0 + 2.0 * t, -3.0 + 0.5 * t, 4.0 - 7.0 * t}; }
+// Where a step of length dt starts whose committed multipliers are `lambda`.
+std::vector<double> predicted(const MultiplierPredictor &p, double dt, std::vector<double> lambda) {
+  p.predict(dt, lambda);
+  return lambda;
+}
 } // namespace
 
 TEST(MultiplierPredictor, LeavesTheCommittedMultipliersUntilAStepHasBeenCommitted) {
-  MultiplierPredictor p;
-  std::vector<double> lambda{1.0, 2.0, 3.0};
-  p.predict(0.1, lambda);
-  EXPECT_EQ(lambda, (std::vector<double>{1.0, 2.0, 3.0}));
+  EXPECT_EQ(predicted(MultiplierPredictor{}, 0.1, {1.0, 2.0, 3.0}), (std::vector<double>{1.0, 2.0, 3.0}));
 }
 
 TEST(MultiplierPredictor, StartsFromTheNextUpdateAfterOneStep) {
   MultiplierPredictor p;
   p.commit(linearInTime(0.2), 0.2);
-  std::vector<double> lambda(3, 0.0);
-  p.predict(0.1, lambda);
-  EXPECT_EQ(lambda, linearInTime(0.2));
+  EXPECT_EQ(predicted(p, 0.1, std::vector<double>(3, 0.0)), linearInTime(0.2));
 }
 
 TEST(MultiplierPredictor, ExtrapolationIsExactForMultipliersLinearInTimeWithUnequalSteps) {
@@ -43,9 +43,7 @@ TEST(MultiplierPredictor, AStepWithoutMultipliersStopsThePrediction) {
   MultiplierPredictor p;
   p.commit(linearInTime(0.1), 0.1);
   p.commit({}, 0.1); // e.g. a point of an arc-length path
-  std::vector<double> lambda{5.0, 6.0, 7.0};
-  p.predict(0.1, lambda);
-  EXPECT_EQ(lambda, (std::vector<double>{5.0, 6.0, 7.0}));
+  EXPECT_EQ(predicted(p, 0.1, {5.0, 6.0, 7.0}), (std::vector<double>{5.0, 6.0, 7.0}));
 }
 
 TEST(MultiplierPredictor, ACheckpointRestoresThePredictionAndRefusesAnotherMesh) {
@@ -54,9 +52,6 @@ TEST(MultiplierPredictor, ACheckpointRestoresThePredictionAndRefusesAnotherMesh)
   p.commit(linearInTime(0.2), 0.1);
   MultiplierPredictor restored;
   restored.restore(p.toJson(), 3);
-  std::vector<double> a(3, 0.0), b(3, 0.0);
-  p.predict(0.1, a);
-  restored.predict(0.1, b);
-  EXPECT_EQ(a, b);
+  EXPECT_EQ(predicted(restored, 0.1, std::vector<double>(3, 0.0)), predicted(p, 0.1, std::vector<double>(3, 0.0)));
   EXPECT_THROW(restored.restore(p.toJson(), 4), std::invalid_argument);
 }
