@@ -3,7 +3,7 @@
 // damped Gauss-Newton iteration on the continuous neural inputs u in [0, 1]^n of the evaluated
 // muscle groups. With r(u) the weighted offsets of the control points from their goals
 // (r_p = w_p (x_p - xbar_p), stacked, 3 per point) and S = dr/du from the converged tangent
-// (one linear solve per muscle, solvers/ControlSensitivity.hpp), each iteration solves
+// (one linear solve per muscle, solvers/control/ControlSensitivity.hpp), each iteration solves
 //
 //   min_du |S du + r|^2 + rho |du|^2   subject to  0 <= u + du <= 1
 //

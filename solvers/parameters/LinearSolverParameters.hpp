@@ -1,7 +1,7 @@
 #pragma once
 // The deck's "Linear solver" section, declared and parsed once: the solver type, the Krylov
 // method and its limits, the preconditioner and each preconditioner's settings. Translated into
-// Stratimikos by solvers/LinearSolverFactory.
+// Stratimikos by solvers/linear/LinearSolverFactory.
 
 #include <string>
 

@@ -1,6 +1,6 @@
 #pragma once
 // The deck's "Nonlinear solver" section, declared and parsed once: Newton's iteration limit,
-// tolerances, forcing term and line search (solvers/NewtonSolver).
+// tolerances, forcing term and line search (solvers/nonlinear/NewtonSolver).
 
 #include <Teuchos_ParameterList.hpp>
 

@@ -6,7 +6,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "solvers/StepSizeController.hpp"
+#include "solvers/stepping/StepSizeController.hpp"
 
 namespace glossa::solvers {
 

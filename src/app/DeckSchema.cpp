@@ -3,7 +3,7 @@
 #include "app/PointCommand.hpp"
 #include "app/ZeroStrainCommand.hpp"
 #include "input/SceneFactory.hpp"
-#include "solvers/Simulation.hpp"
+#include "solvers/run/Simulation.hpp"
 
 namespace glossa::app {
 

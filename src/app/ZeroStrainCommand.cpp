@@ -8,7 +8,7 @@
 #include "io/deck/ParameterSpec.hpp"
 #include "mesh/ReferenceCoordinates.hpp"
 #include "input/SceneFactory.hpp"
-#include "solvers/Simulation.hpp"
+#include "solvers/run/Simulation.hpp"
 #include "solvers/parameters/TimeParameters.hpp"
 
 namespace glossa::app {

@@ -23,7 +23,7 @@
 #include "io/output/OutputError.hpp"
 #include "mesh/MeshError.hpp"
 #include "input/SceneFactory.hpp"
-#include "solvers/Simulation.hpp"
+#include "solvers/run/Simulation.hpp"
 
 namespace {
 

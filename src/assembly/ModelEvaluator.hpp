@@ -4,18 +4,18 @@
 // With element pressures as unknowns (setMixedPressure, Incompressibility/method = mixed) x is
 // the product [u; p~] of the displacements and the scaled element pressures p~_e = p_e / sigma_e
 // (MixedPressureState), f = [f_int - f_ext; sigma_e (v_e - V_e theta_phys(p_e))] and W the 2 x 2
-// blocked tangent [K, (sigma B)^T; sigma B, -C~], which solvers/MixedBlockSolver solves.
+// blocked tangent [K, (sigma B)^T; sigma B, -C~], which solvers/linear/MixedBlockSolver solves.
 //
 // Parameters, each with a nominal value that an evaluation uses when it is not given:
 //   p0 "time" (length 1): every load's and prescribed motion's time; LOCA's arc-length
-//      continuation (solvers/ArcLengthContinuation) moves along the load path through it;
+//      continuation (solvers/stepping/ArcLengthContinuation) moves along the load path through it;
 //   p1 "multipliers": the augmented Lagrange multiplier Lambda_e of every element (distributed
 //      like the elements), set by the Uzawa loop between Newton solves;
 //   p2 "neural inputs" (length: the muscle groups; only with a muscle history): an evaluation at
 //      other inputs than the begun step's sees the activations they give over this step.
 // Response g0 (with response nodes): the displacements (x, y, z) of the control points, with
 // DgDx; DfDp for p2 (the residual's derivative in the inputs). The control points' sensitivity to
-// the inputs, dg/dp = -DgDx W^{-1} DfDp, is built from them (solvers/ControlSensitivity).
+// the inputs, dg/dp = -DgDx W^{-1} DfDp, is built from them (solvers/control/ControlSensitivity).
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>

@@ -378,7 +378,7 @@ Tissue buildTissue(const io::Deck &deck, const std::vector<std::string> &path, c
   const double kappaGiven = t.get<double>("bulk modulus");
   const double nu = t.get<double>("Poisson's ratio");
   // nu = 0.5 is exact incompressibility: an infinite bulk modulus, which the augmented Lagrangian
-  // enforces as theta = 1 (solvers/AugmentedLagrangianRule).
+  // enforces as theta = 1 (solvers/incompressibility/AugmentedLagrangianRule).
   const double kappa = kappaGiven > 0.0 ? kappaGiven
                        : nu == 0.5      ? std::numeric_limits<double>::infinity()
                                         : materials::bulkModulus(mu, nu);

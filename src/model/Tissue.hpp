@@ -17,7 +17,7 @@ struct Tissue {
   std::string name;                                         // "Material", or the Tissues sublist's
   std::shared_ptr<const materials::IsochoricMaterial> matrix; // its shear modulus scales its penalty
   // The physical volumetric law as the deck gives it (kappa may be +inf); the solver puts the
-  // tangent's kappa_t in its place (solvers/Simulation).
+  // tangent's kappa_t in its place (solvers/run/Simulation).
   materials::VolumetricEnergy volumetric{materials::VolumetricEnergy::Form::SimoTaylor, 0.0};
   double density = 1060.0;                                  // [kg/m^3]
 };

@@ -15,7 +15,7 @@
 
 #include "app/DeckSchema.hpp"
 #include "io/deck/Deck.hpp"
-#include "solvers/Simulation.hpp"
+#include "solvers/run/Simulation.hpp"
 
 namespace glossa::test {
 

@@ -8,8 +8,8 @@
 #include <Tpetra_Core.hpp>
 
 #include "LinearPlant.hpp"
-#include "solvers/CommControlGroups.hpp"
-#include "solvers/ControlDriver.hpp"
+#include "solvers/control/CommControlGroups.hpp"
+#include "solvers/control/ControlDriver.hpp"
 
 using namespace glossa;
 

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "RunDeck.hpp"
-#include "solvers/LinearSolverFactory.hpp"
+#include "solvers/linear/LinearSolverFactory.hpp"
 
 using namespace glossa;
 

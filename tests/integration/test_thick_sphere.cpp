@@ -108,7 +108,7 @@ TEST(ThickSphere, PastTheMaximumTheRunStopsNamingTheLimitPoint) {
 }
 
 // The same with the iterative solve: the monitor's tangent solve then goes to 1e-3 with the
-// Newton solves' kept MueLu hierarchy (solvers/PathStiffness.cpp), and must bracket the same point.
+// Newton solves' kept MueLu hierarchy (solvers/stepping/PathStiffness.cpp), and must bracket the same point.
 TEST(ThickSphere, PastTheMaximumTheIterativeRunStopsNamingTheLimitPoint) {
   expectTheRunStopsNamingTheLimitPoint({"Linear solver/type=iterative"}, "thick_sphere_past_maximum_iterative");
 }

@@ -22,9 +22,9 @@
 #include "assembly/ModelEvaluator.hpp"
 #include "materials/NeoHookean.hpp"
 #include "mesh/BoxGenerator.hpp"
-#include "solvers/LinearSolverFactory.hpp"
-#include "solvers/NewtonSolver.hpp"
-#include "solvers/UzawaLoop.hpp"
+#include "solvers/linear/LinearSolverFactory.hpp"
+#include "solvers/nonlinear/NewtonSolver.hpp"
+#include "solvers/incompressibility/UzawaLoop.hpp"
 
 using namespace glossa;
 

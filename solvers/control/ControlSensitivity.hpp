@@ -1,0 +1,36 @@
+#pragma once
+// The sensitivity of the control points to the neural inputs at a converged step (issue 5,
+// gradient controller), from the model evaluator's derivatives: with f(x; p) = 0 the condensed
+// residual, g(x) the control points' displacements (response g0) and p the inputs (p2),
+//
+//   dg/dp = -DgDx W^{-1} DfDp,
+//
+// W the tangent at the converged state (NewtonSolver::solveTangent: one Krylov solve per input,
+// one preconditioner for all). DfDp comes from the model by finite differences in the groups'
+// activations times d alpha / d u of the backward-Euler activation step (ActivationDynamics).
+// The augmented Lagrange multipliers (p1) are held fixed: with the tangent's kappa_t = kappa
+// kappa_AL / (kappa + kappa_AL) the volumetric response is that of kappa_t, a relative error of
+// order mu / kappa_AL (1 % at the default kappa_AL = 100 mu) which the controller's full solves
+// absorb.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "assembly/Assembler.hpp"
+#include "solvers/nonlinear/NewtonSolver.hpp"
+
+namespace glossa::solvers {
+
+struct ControlPointSensitivity {
+  Eigen::MatrixXd dxdu; // 3 rows per control point (x, y, z), one column per group asked
+  int krylovIterations = 0;
+};
+
+// At the converged trial state u: the solver's model has this step's time and multipliers, the
+// muscle history has begun the step with the inputs whose sensitivity is wanted, and the model's
+// response nodes are the control points. Columns for `groups` (muscle group indices). Collective.
+ControlPointSensitivity controlPointSensitivity(const NewtonSolver &newton, const assembly::Vector &u,
+                                                const std::vector<int> &groups);
+
+} // namespace glossa::solvers

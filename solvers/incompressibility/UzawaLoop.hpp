@@ -1,0 +1,102 @@
+#pragma once
+// The augmented-Lagrangian loop around each Newton solve (doc/theory.md, eq. 7):
+//   solve f(u; Lambda) = 0, then Lambda_e <- beta p_e   (AugmentedLagrangianRule)
+// until max_e |theta_e - theta_phys(p_e)| is below the tolerance: the element pressure then obeys
+// the material's physical volumetric law (theta -> 1 for nu = 0.5). With a moderate kappa_AL in
+// the tangent the Krylov solves stay cheap, while the multiplier carries the pressure that a pure
+// penalty would need kappa/mu >= 1e6 to produce. In "penalty" mode the loop performs one solve.
+
+#include <functional>
+#include <vector>
+
+#include "assembly/Assembler.hpp"
+#include "materials/VolumetricEnergy.hpp"
+#include "solvers/incompressibility/AugmentedLagrangianRule.hpp"
+#include "solvers/nonlinear/NewtonSolver.hpp"
+#include "solvers/nonlinear/SolveStatistics.hpp"
+#include "solvers/parameters/IncompressibilityParameters.hpp"
+
+namespace glossa::solvers {
+
+class UzawaLoop {
+public:
+  // `physical`: per tissue of the assembler's scene, its volumetric law (kappa = inf for nu = 0.5);
+  // each tissue's kappa_AL is the penalty ratio times its matrix's shear modulus.
+  UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton, const IncompressibilityParameters &parameters,
+            const std::vector<materials::VolumetricEnergy> &physical);
+
+  bool augmentedLagrangian() const { return augmented_; }
+  bool mixedPressure() const { return mixed_; }
+  // kappa_AL = penalty ratio x mu (augmented Lagrangian only).
+  static double augmentationKappa(const IncompressibilityParameters &parameters, double mu);
+  // kappa in the tangent: kappa_t = kappa kappa_AL / (kappa + kappa_AL) in augmented-Lagrangian
+  // mode, the material's otherwise (io::DeckError if that is infinite).
+  static double tangentKappa(const IncompressibilityParameters &parameters, double materialKappa, double mu);
+
+  // Solves at fixed time; u and lambda are updated in place (the caller keeps copies to roll
+  // back). `residualTolerance` is absolute, or given by the norm of the first Newton solve's
+  // initial residual (the rule is asked once; every solve of the loop uses its answer).
+  using UzawaCallback = std::function<void(int, const NewtonResult &, const DilatationError &)>;
+  UzawaResult solve(assembly::Vector &u, std::vector<double> &lambda, double residualTolerance,
+                    const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const;
+  UzawaResult solve(assembly::Vector &u, std::vector<double> &lambda, const NewtonSolver::ToleranceRule &residualTolerance,
+                    const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const;
+
+  DilatationError dilatationError(const assembly::ElementFields &fields) const;
+  // The multipliers the next update would set from these element fields, beta p_e per local
+  // element (augmented Lagrangian).
+  std::vector<double> nextMultipliers(const assembly::ElementFields &fields) const;
+
+  // Adaptive kappa_AL (augmented Lagrangian): the Uzawa update contracts the multiplier error by
+  // about S / (S + kappa_AL) per solve, S the stiffness against an element's volume change at
+  // fixed multipliers. An active fibre adds its stress to S through its isochoric stretch (669 kPa
+  // against the matrix's mu = 2 kPa at full activation), and with the default 30 mu the loop
+  // contracts by about 3/4 per solve and stalls. So in a tissue with active fibres (some family's
+  // group at alpha > 0), once a step has taken kSlowSolves solves and the tissue's largest
+  // dilatation error fell by less than kSlowContraction over the last tight one, its kappa_AL is
+  // raised by kAugmentationGrowth (up to kMaximumPenaltyRatio mu) for the rest of the run, and
+  // its tangent's kappa_t with it through `onRaise(tissue, kappa_t)`. Loops of a few solves
+  // (every stored scene) and tissues without active fibres (the thick sphere near its limit
+  // point, where Uzawa slows for another reason) are never touched. Off under a controller (set
+  // false by its owner): a raise inside one candidate's solve would change the others', and GA
+  // control groups solving different candidates would no longer agree.
+  static constexpr double kSlowContraction = 0.5, kAugmentationGrowth = 10.0, kMaximumPenaltyRatio = 1e5;
+  static constexpr int kSlowSolves = 6;
+  void onKappaRaised(std::function<void(std::size_t, double)> onRaise) { onRaise_ = std::move(onRaise); }
+  void allowKappaRaises(bool allow) { allowRaises_ = allow; }
+  // kappa_AL / mu of each tissue now.
+  std::vector<double> penaltyRatios() const;
+  // A restart's: the ratios a checkpoint kept; a tissue whose kappa_AL had been raised gets it
+  // again, with its kappa_t through onKappaRaised. Throws std::invalid_argument for a wrong count.
+  void restorePenaltyRatios(const std::vector<double> &ratios);
+
+private:
+  const assembly::Assembler &assembler_;
+  const NewtonSolver &newton_;
+  bool augmented_;
+  bool mixed_;                // element pressures are Newton unknowns (MixedPressureState)
+  // Stops on the distance from the physical law, with room for more than one Newton solve
+  // (augmented Lagrangian and mixed; a penalty makes one solve and reports |theta - 1|).
+  bool measuresPhysicalLaw() const { return augmented_ || mixed_; }
+  // Per tissue the largest dilatation error of its local elements, maximum over the ranks. Collective.
+  std::vector<double> tissueErrors(const assembly::ElementFields &fields) const;
+  // Raises kappa_AL of the tissues whose error fell by less than kSlowContraction; true if any.
+  bool raiseSlowTissues(const std::vector<double> &errors, const std::vector<double> &previous) const;
+  // Per tissue: whether a local element on any rank has a fibre family whose group is active now. Collective.
+  std::vector<int> activeTissues() const;
+  mutable std::vector<AugmentedLagrangianRule> rules_; // per tissue (kappa_AL may be raised)
+  std::vector<materials::VolumetricEnergy> physical_;  // per tissue
+  std::vector<double> mu_;                              // per tissue: the matrix shear modulus
+  mutable std::vector<double> ratio_;                   // kappa_AL / mu per tissue
+  std::function<void(std::size_t, double)> onRaise_;
+  bool allowRaises_ = true;
+  std::vector<int> localTissue_;               // per local element: its tissue
+  const AugmentedLagrangianRule &ruleOf(std::size_t localElement) const { return rules_[localTissue_[localElement]]; }
+  double tolerance_;
+  int maxIterations_;
+  bool inexact_;              // Uzawa acceleration = inexact inner solves
+  double innerTolerance_;     // their relative residual tolerance
+  double innerLinearTolerance_; // their Krylov solves' largest relative tolerance
+};
+
+} // namespace glossa::solvers

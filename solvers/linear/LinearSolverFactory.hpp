@@ -1,0 +1,49 @@
+#pragma once
+// The linear solver of every Newton step, chosen in the deck's "Linear solver" section and built
+// through Stratimikos: Belos CG (symmetric tangent) or GMRES, preconditioned by MueLu smoothed
+// aggregation (rigid-body modes and coordinates supplied), FROSch two-level Schwarz, Ifpack2 alone,
+// or none; or a direct solve: MUMPS as an exact preconditioner (solvers/linear/MumpsPreconditioner), or
+// Amesos2 KLU2 for comparison. This unit holds the expensive template
+// instantiations (Stratimikos::enableMueLu and enableFROSch, Ifpack2 registration): edit it rarely.
+
+#include <Teuchos_ParameterList.hpp>
+#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+
+#include "assembly/TpetraTypes.hpp"
+#include "solvers/parameters/LinearSolverParameters.hpp"
+
+namespace glossa::solvers {
+
+struct LinearSolverContext {
+  Teuchos::RCP<assembly::MultiVector> coordinates;    // per owned node, 3 columns
+  Teuchos::RCP<assembly::MultiVector> rigidBodyModes; // per owned dof, 6 columns
+  int ranks = 1;
+  long long globalRows = 0;
+  bool symmetric = true; // the tangent is symmetric (no follower loads yet)
+};
+
+// The section chooses a direct solve: type = direct, or auto on one rank at no more than 'direct up
+// to' unknowns.
+bool usesDirectSolve(const LinearSolverParameters &section, const LinearSolverContext &context);
+
+// How long a Newton solver keeps its linear solver: the deck's `MueLu reuse scope` for a MueLu
+// preconditioner; a Newton solve for the direct, FROSch, Ifpack2 and mixed block solves, which
+// build theirs per Newton solve.
+ReuseScope keptReuseScope(const LinearSolverParameters &section, const LinearSolverContext &context,
+                          bool mixedBlockSolve);
+
+// The Stratimikos parameter list the deck section stands for (exposed for tests and the docs).
+Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const LinearSolverParameters &section,
+                                                           const LinearSolverContext &context);
+
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
+buildLinearSolver(const LinearSolverParameters &section, const LinearSolverContext &context);
+
+// For the mixed block solve (solvers/linear/MixedBlockSolver): the preconditioner of the displacement
+// block as the section says (MueLu, FROSch, Ifpack2 or none), and Belos GMRES with the section's
+// tolerance, iteration limit and restart, which takes an external preconditioner.
+Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>>
+buildDisplacementPreconditioner(const LinearSolverParameters &section, const LinearSolverContext &context);
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> buildBlockKrylovSolver(const LinearSolverParameters &section);
+
+} // namespace glossa::solvers

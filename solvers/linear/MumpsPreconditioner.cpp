@@ -1,0 +1,292 @@
+#include "solvers/linear/MumpsPreconditioner.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include <dmumps_c.h>
+#include <mpi.h>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Thyra_DefaultPreconditioner.hpp>
+#include <Thyra_TpetraLinearOp.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+
+namespace glossa::solvers {
+
+namespace {
+std::atomic<int> newtonSolveEpoch{0};
+
+MPI_Comm rawComm(const Teuchos::Comm<int> &comm) {
+  const auto *mpi = dynamic_cast<const Teuchos::MpiComm<int> *>(&comm);
+  if (!mpi) throw std::logic_error("MUMPS needs an MPI communicator");
+  return *mpi->getRawMpiComm();
+}
+} // namespace
+
+// One MUMPS instance: the pattern of the matrix it analysed, and its current numerical factors.
+class MumpsFactorization {
+public:
+  MumpsFactorization(const Teuchos::RCP<const Teuchos::Comm<int>> &comm, bool symmetric)
+      : comm_(comm), symmetric_(symmetric) {
+    id_.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(rawComm(*comm)));
+    id_.par = 1;                    // the host takes part in the factorisation
+    id_.sym = symmetric ? 2 : 0;    // 2: symmetric, possibly indefinite (LDL^T with 2x2 pivots)
+    id_.job = -1;
+    dmumps_c(&id_);
+    check("initialisation");
+    for (int k : {1, 2, 3}) id_.icntl[k - 1] = -1; // no MUMPS output
+    id_.icntl[3] = 0;
+    id_.icntl[17] = 3;  // ICNTL(18): entries given distributed, each rank its owned rows
+    id_.icntl[13] = 40; // ICNTL(14): working-space margin, % (pivoting of indefinite tangents needs room)
+    id_.icntl[6] = 7;   // ICNTL(7): ordering chosen by MUMPS (METIS or SCOTCH here)
+  }
+  ~MumpsFactorization() {
+    // Ending the instance is collective (MUMPS frees the communicator it duplicated). While an
+    // exception unwinds on one rank the others are elsewhere, and it deadlocked: a deleted output
+    // directory on 2 ranks left both waiting until killed. The job is ending then: leave it.
+    if (std::uncaught_exceptions() > 0) return;
+    id_.job = -2;
+    dmumps_c(&id_);
+  }
+  MumpsFactorization(const MumpsFactorization &) = delete;
+  MumpsFactorization &operator=(const MumpsFactorization &) = delete;
+
+  // Numerical factorisation of A, after an analysis if A's pattern is not the analysed one. The
+  // pattern is read once per local graph (the Assembler's graph serves the whole run); every
+  // later factorisation only gathers the values.
+  void factor(const assembly::CrsMatrix &A) {
+    const auto local = A.getLocalMatrixHost();
+    const long long n = static_cast<long long>(A.getGlobalNumRows());
+    const void *pattern = local.graph.entries.data();
+    int changed = pattern != pattern_ || n != n_ || static_cast<std::size_t>(local.nnz()) != patternEntries_ ? 1 : 0, anyChanged = 0;
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, changed, Teuchos::outArg(anyChanged));
+    if (anyChanged) {
+      readPattern(A, n);
+      pattern_ = pattern;
+      patternEntries_ = static_cast<std::size_t>(local.nnz());
+      n_ = n;
+      id_.n = static_cast<MUMPS_INT>(n);
+      id_.nnz_loc = static_cast<MUMPS_INT8>(rows_.size());
+      id_.irn_loc = rows_.data();
+      id_.jcn_loc = cols_.data();
+      id_.a_loc = values_.data();
+      id_.job = 1;
+      dmumps_c(&id_);
+      check("analysis");
+    }
+    for (std::size_t k = 0; k < take_.size(); ++k) values_[k] = local.values(take_[k]);
+    id_.a_loc = values_.data();
+    for (int attempt = 0;; ++attempt) {
+      id_.job = 2;
+      dmumps_c(&id_);
+      // -8, -9: the working space estimated by the analysis was too small (pivoting): more room.
+      if ((id_.infog[0] == -8 || id_.infog[0] == -9) && attempt < 3) {
+        id_.icntl[13] *= 2;
+        continue;
+      }
+      break;
+    }
+    check("factorisation");
+    factoredMatrix_ = &A;
+    factoredEpoch_ = newtonSolveEpoch;
+    negativePivots_ = symmetric_ ? id_.infog[11] : 0; // INFOG(12): negative pivots of LDL^T
+    appliesAtInit_ = applies_;
+  }
+
+  // With reuse k > 0: the factors of an earlier tangent of this Newton solve still serve A when
+  // the last solve with them took at most k Krylov iterations (one preconditioner application each)
+  // and they had no negative pivot. An indefinite stale factor is no preconditioner for CG: at
+  // full activation CG met negative curvature through one and every step was cut back.
+  bool stillServes(const assembly::CrsMatrix &A, int k) {
+    const long long lastSolve = applies_ - appliesAtInit_;
+    appliesAtInit_ = applies_;
+    return k > 0 && factoredMatrix_ == &A && factoredEpoch_ == newtonSolveEpoch && lastSolve <= k &&
+           negativePivots_ == 0 && static_cast<long long>(A.getGlobalNumRows()) == n_;
+  }
+
+  // x = A^-1 b (or A^-T b), the columns of b and x in the distribution of `map`.
+  void solve(const assembly::MultiVector &b, assembly::MultiVector &x, bool transpose) {
+    const auto map = b.getMap();
+    if (rootMap_.is_null() || !rootMap_->isSameAs(*rootMapFor(map))) {
+      rootMap_ = rootMapFor(map);
+      toRoot_ = Teuchos::rcp(new assembly::Import(map, rootMap_));
+      fromRoot_ = Teuchos::rcp(new assembly::Import(rootMap_, map));
+    }
+    const std::size_t nrhs = b.getNumVectors();
+    assembly::MultiVector onRoot(rootMap_, nrhs);
+    onRoot.doImport(b, *toRoot_, Tpetra::INSERT);
+    std::vector<double> rhs;
+    if (comm_->getRank() == 0) {
+      rhs.resize(static_cast<std::size_t>(n_) * nrhs);
+      for (std::size_t j = 0; j < nrhs; ++j) {
+        const auto col = onRoot.getData(j);
+        std::copy(col.begin(), col.end(), rhs.begin() + static_cast<std::ptrdiff_t>(j * n_));
+      }
+      id_.rhs = rhs.data();
+      id_.nrhs = static_cast<MUMPS_INT>(nrhs);
+      id_.lrhs = static_cast<MUMPS_INT>(n_);
+    }
+    ++applies_;
+    id_.icntl[8] = transpose ? 0 : 1; // ICNTL(9): 1 solves A x = b, otherwise A^T x = b
+    id_.job = 3;
+    dmumps_c(&id_);
+    check("solve");
+    if (comm_->getRank() == 0)
+      for (std::size_t j = 0; j < nrhs; ++j) {
+        auto col = onRoot.getDataNonConst(j);
+        std::copy(rhs.begin() + static_cast<std::ptrdiff_t>(j * n_),
+                  rhs.begin() + static_cast<std::ptrdiff_t>((j + 1) * n_), col.begin());
+      }
+    x.doImport(onRoot, *fromRoot_, Tpetra::INSERT);
+  }
+
+private:
+  // MUMPS's 1-based coordinates of A's entries (with a symmetric matrix its upper triangle, the
+  // half MUMPS reads) and where each value sits in A's local values.
+  void readPattern(const assembly::CrsMatrix &A, long long n) {
+    const auto local = A.getLocalMatrixHost();
+    const auto rowMap = A.getRowMap();
+    const auto colMap = A.getColMap();
+    if (rowMap->getMinAllGlobalIndex() != 0 || rowMap->getMaxAllGlobalIndex() != n - 1)
+      throw std::logic_error("MUMPS: the row map is not 0..N-1");
+    rows_.clear();
+    cols_.clear();
+    take_.clear();
+    const std::size_t localRows = local.numRows();
+    for (std::size_t r = 0; r < localRows; ++r) {
+      const auto gr = rowMap->getGlobalElement(static_cast<assembly::LO>(r));
+      for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k) {
+        const auto gc = colMap->getGlobalElement(local.graph.entries(k));
+        if (symmetric_ && gc < gr) continue;
+        rows_.push_back(static_cast<MUMPS_INT>(gr + 1));
+        cols_.push_back(static_cast<MUMPS_INT>(gc + 1));
+        take_.push_back(static_cast<std::size_t>(k));
+      }
+    }
+    values_.resize(take_.size());
+  }
+
+  Teuchos::RCP<const assembly::Map> rootMapFor(const Teuchos::RCP<const assembly::Map> &map) const {
+    const auto n = map->getGlobalNumElements();
+    return Teuchos::rcp(new assembly::Map(n, comm_->getRank() == 0 ? n : 0, 0, comm_));
+  }
+  void check(const char *what) const {
+    if (id_.infog[0] >= 0) return;
+    std::ostringstream m;
+    m << "MUMPS " << what << " failed: INFOG(1) = " << id_.infog[0] << ", INFOG(2) = " << id_.infog[1];
+    if (id_.infog[0] == -10) m << " (the tangent is numerically singular)";
+    throw std::runtime_error(m.str());
+  }
+
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  bool symmetric_;
+  DMUMPS_STRUC_C id_{};
+  long long n_ = -1;
+  std::vector<MUMPS_INT> rows_, cols_;
+  std::vector<std::size_t> take_;
+  std::vector<double> values_;
+  const void *pattern_ = nullptr;
+  std::size_t patternEntries_ = 0;
+  Teuchos::RCP<const assembly::Map> rootMap_;
+  Teuchos::RCP<assembly::Import> toRoot_, fromRoot_;
+  const assembly::CrsMatrix *factoredMatrix_ = nullptr;
+  int factoredEpoch_ = -1;
+  int negativePivots_ = 0;
+  long long applies_ = 0, appliesAtInit_ = 0;
+};
+
+namespace {
+// The factorisation as a Tpetra operator: apply is the solve.
+class MumpsInverse : public Tpetra::Operator<double, assembly::LO, assembly::GO, assembly::Node> {
+public:
+  MumpsInverse(std::shared_ptr<MumpsFactorization> f, Teuchos::RCP<const assembly::Map> domain,
+               Teuchos::RCP<const assembly::Map> range)
+      : f_(std::move(f)), domain_(std::move(domain)), range_(std::move(range)) {}
+  Teuchos::RCP<const assembly::Map> getDomainMap() const override { return range_; }
+  Teuchos::RCP<const assembly::Map> getRangeMap() const override { return domain_; }
+  bool hasTransposeApply() const override { return true; }
+  void apply(const assembly::MultiVector &X, assembly::MultiVector &Y, Teuchos::ETransp mode, double alpha,
+             double beta) const override {
+    assembly::MultiVector Z(Y.getMap(), Y.getNumVectors());
+    f_->solve(X, Z, mode != Teuchos::NO_TRANS);
+    Y.update(alpha, Z, beta);
+  }
+
+private:
+  std::shared_ptr<MumpsFactorization> f_;
+  Teuchos::RCP<const assembly::Map> domain_, range_;
+};
+} // namespace
+
+MumpsPreconditionerFactory::MumpsPreconditionerFactory() = default;
+MumpsPreconditionerFactory::~MumpsPreconditionerFactory() = default;
+
+void MumpsPreconditionerFactory::beginNewtonSolve() { ++newtonSolveEpoch; }
+
+bool MumpsPreconditionerFactory::isCompatible(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const {
+  using ThyraOp = Thyra::TpetraLinearOp<double, assembly::LO, assembly::GO, assembly::Node>;
+  const auto op = Teuchos::rcp_dynamic_cast<const ThyraOp>(fwdOpSrc.getOp());
+  return !op.is_null() && !Teuchos::rcp_dynamic_cast<const assembly::CrsMatrix>(op->getConstTpetraOperator()).is_null();
+}
+
+Teuchos::RCP<Thyra::PreconditionerBase<double>> MumpsPreconditionerFactory::createPrec() const {
+  return Teuchos::rcp(new Thyra::DefaultPreconditioner<double>);
+}
+
+void MumpsPreconditionerFactory::initializePrec(const Teuchos::RCP<const Thyra::LinearOpSourceBase<double>> &fwdOpSrc,
+                                                Thyra::PreconditionerBase<double> *prec,
+                                                const Thyra::ESupportSolveUse) const {
+  using ThyraOp = Thyra::TpetraLinearOp<double, assembly::LO, assembly::GO, assembly::Node>;
+  const auto op = Teuchos::rcp_dynamic_cast<const ThyraOp>(fwdOpSrc->getOp(), true);
+  const auto A = Teuchos::rcp_dynamic_cast<const assembly::CrsMatrix>(op->getConstTpetraOperator(), true);
+  auto *defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double> *>(prec);
+  TEUCHOS_TEST_FOR_EXCEPTION(defaultPrec == nullptr, std::logic_error, "MUMPS: not a DefaultPreconditioner");
+  const bool symmetric = params_.is_null() || params_->get<bool>("symmetric", true);
+  const int reuse = params_.is_null() ? 0 : params_->get<int>("reuse iterations", 0);
+  if (!factorization_) factorization_ = std::make_shared<MumpsFactorization>(A->getComm(), symmetric);
+  if (!factorization_->stillServes(*A, reuse)) factorization_->factor(*A);
+  auto inverse = Teuchos::rcp(new MumpsInverse(factorization_, A->getDomainMap(), A->getRangeMap()));
+  const Teuchos::RCP<Thyra::LinearOpBase<double>> inverseOp =
+      Thyra::tpetraLinearOp<double, assembly::LO, assembly::GO, assembly::Node>(
+          Thyra::tpetraVectorSpace<double>(A->getDomainMap()), Thyra::tpetraVectorSpace<double>(A->getRangeMap()),
+          Teuchos::RCP<Tpetra::Operator<double, assembly::LO, assembly::GO, assembly::Node>>(inverse));
+  defaultPrec->initializeUnspecified(inverseOp);
+}
+
+void MumpsPreconditionerFactory::uninitializePrec(Thyra::PreconditionerBase<double> *prec,
+                                                  Teuchos::RCP<const Thyra::LinearOpSourceBase<double>> *fwdOpSrc,
+                                                  Thyra::ESupportSolveUse *supportSolveUse) const {
+  auto *defaultPrec = dynamic_cast<Thyra::DefaultPreconditioner<double> *>(prec);
+  if (defaultPrec) defaultPrec->uninitialize();
+  if (fwdOpSrc) *fwdOpSrc = Teuchos::null;
+  if (supportSolveUse) *supportSolveUse = Thyra::SUPPORT_SOLVE_UNSPECIFIED;
+}
+
+void MumpsPreconditionerFactory::setParameterList(const Teuchos::RCP<Teuchos::ParameterList> &paramList) {
+  paramList->validateParametersAndSetDefaults(*getValidParameters());
+  params_ = paramList;
+}
+
+Teuchos::RCP<Teuchos::ParameterList> MumpsPreconditionerFactory::unsetParameterList() {
+  auto old = params_;
+  params_ = Teuchos::null;
+  return old;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> MumpsPreconditionerFactory::getValidParameters() const {
+  static const auto valid = [] {
+    auto p = Teuchos::rcp(new Teuchos::ParameterList("MUMPS"));
+    p->set("symmetric", true, "the tangent is symmetric: LDL^T of one triangle (else LU)");
+    p->set("reuse iterations", 0,
+           "0: refactor for every tangent; k > 0: keep the factors within a Newton solve while a solve "
+           "takes at most k Krylov iterations");
+    return p;
+  }();
+  return valid;
+}
+
+} // namespace glossa::solvers

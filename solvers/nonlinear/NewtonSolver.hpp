@@ -1,0 +1,90 @@
+#pragma once
+// One nonlinear solve f(u) = 0 with NOX (line-search Newton) on the Thyra model evaluator,
+// configured from the deck's "Nonlinear solver" section. Reports the iterations, the Krylov
+// iterations and the residual history (to show quadratic convergence).
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "assembly/ModelEvaluator.hpp"
+#include "solvers/nonlinear/SolveStatistics.hpp"
+#include "solvers/parameters/NewtonParameters.hpp"
+
+namespace NOX::Thyra {
+class Group;
+}
+
+namespace glossa::solvers {
+
+class NewtonSolver {
+public:
+  // `onIteration(k, ||f||, krylov iterations)` is called on every rank after each iteration.
+  using IterationCallback = std::function<void(int, double, int)>;
+
+  // `linearTolerance`: relative residual reduction asked of each Krylov solve. `keepLinearSolver`:
+  // one NOX group (and so one Stratimikos solver with its preconditioner) serves every solve
+  // until forgetLinearSolver(), so that a reused MueLu hierarchy lives across Uzawa iterations
+  // (and load steps, if never forgotten).
+  NewtonSolver(Teuchos::RCP<assembly::ModelEvaluator> model, const NewtonParameters &parameters,
+               double lengthScale, double linearTolerance, bool keepLinearSolver = false);
+
+  // The absolute residual tolerance of a solve, from the norm of its initial residual (a caller
+  // that scales the tolerance by the residual at the start needs no assembly of its own).
+  using ToleranceRule = std::function<double(double initialResidualNorm)>;
+
+  // Solves from the initial guess u (owned vector), overwriting it with the solution when
+  // converged: the residual below `residualTolerance` (absolute; the caller scales it by the
+  // load) and the update below the deck's update tolerance relative to the whole field.
+  NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration) const;
+  NewtonResult solve(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration) const;
+  // The Uzawa loop's inexact first solve: it stops on the residual test alone, and each Krylov
+  // solve goes to at most `maximumForcing` relative (Eisenstat-Walker may ask less). Where it
+  // stops the multipliers are updated, so that iterate must not depend on the linear solver:
+  // with the forcing's usual 1e-2 an iterative solve on 2 ranks and a direct one on 1 stopped
+  // 1.1e-5 apart in the answer (doc/incompressibility.md).
+  NewtonResult solveToResidual(assembly::Vector &u, const ToleranceRule &residualTolerance,
+                               const IterationCallback &onIteration, double maximumForcing) const;
+
+  // Solves K(u) x_j = b_j for every column of `rhs` with the tangent at u (the model's time and
+  // Lambda, the three-field bases condensed exactly at u), one preconditioner for all columns,
+  // to the deck's linear tolerance: the sensitivities of a converged state (issue 5). Returns
+  // the Krylov iterations; throws std::runtime_error if u is inadmissible or a solve fails.
+  // `relativeTolerance` > 0 replaces the deck's linear tolerance (a caller that needs a few digits).
+  int solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x,
+                   double relativeTolerance = -1.0) const;
+  // The same for one right-hand side with the linear solver the Newton solves keep (MueLu reuse
+  // scope = step or run), so its preconditioner is updated by the reuse rule rather than built
+  // anew; without a kept solver, solveTangent.
+  int solveTangentWithKeptSolver(const assembly::Vector &u, const assembly::Vector &rhs, assembly::Vector &x,
+                                 double relativeTolerance) const;
+
+  // The next solve builds its linear solver and preconditioner afresh (MueLu reuse scope = step:
+  // called when a step solve starts, so a step's iterates do not depend on earlier steps' solves).
+  void forgetLinearSolver() const { group_ = Teuchos::null; }
+
+  double relativeResidualTolerance() const { return parameters_.residualTolerance; }
+  // The model it solves: its nominal time and multipliers are those of the next solve.
+  assembly::ModelEvaluator &model() const { return *model_; }
+
+  // The Eisenstat-Walker forcing's first and largest value (the Krylov tolerance of a Newton
+  // iteration far from the solution).
+  static constexpr double kForcingCeiling = 1e-2;
+
+private:
+  // `updateTest`: the deck's (solve) or none (solveToResidual); `maximumForcing`: the
+  // Eisenstat-Walker forcing's first and largest value.
+  NewtonResult run(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration,
+                   bool updateTest, double maximumForcing) const;
+  // The deck's update test as a forecast for the model, for the update from the last accepted iterate.
+  assembly::ModelEvaluator::ConvergenceForecast updateForecast(double floor) const;
+
+  Teuchos::RCP<assembly::ModelEvaluator> model_;
+  NewtonParameters parameters_;
+  double lengthScale_;
+  double linearTolerance_;
+  bool keepLinearSolver_;
+  mutable Teuchos::RCP<NOX::Thyra::Group> group_; // kept between solves when keepLinearSolver_
+};
+
+} // namespace glossa::solvers

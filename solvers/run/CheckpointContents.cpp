@@ -1,0 +1,50 @@
+#include "solvers/run/CheckpointContents.hpp"
+
+namespace glossa::solvers {
+
+nlohmann::json toJson(const OutputMark &mark) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto &step : mark.fieldSteps) {
+    nlohmann::json attributes = nlohmann::json::array();
+    for (const auto &a : step.attributes)
+      attributes.push_back({a.name, a.components, a.center == io::Centering::Node ? "node" : "cell", a.dataset});
+    steps.push_back({{"time", step.time}, {"attributes", attributes}});
+  }
+  return {{"csv_bytes", mark.csvBytes}, {"field_steps", steps}};
+}
+
+OutputMark outputMarkFromJson(const nlohmann::json &j) {
+  OutputMark mark;
+  mark.csvBytes = j.at("csv_bytes").get<std::map<std::string, std::uintmax_t>>();
+  for (const auto &step : j.at("field_steps")) {
+    io::XdmfStep s{step.at("time").get<double>(), {}};
+    for (const auto &a : step.at("attributes"))
+      s.attributes.push_back({a.at(0).get<std::string>(), a.at(1).get<int>(),
+                              a.at(2).get<std::string>() == "node" ? io::Centering::Node : io::Centering::Cell,
+                              a.at(3).get<std::string>()});
+    mark.fieldSteps.push_back(std::move(s));
+  }
+  return mark;
+}
+
+nlohmann::json toJson(const model::MuscleHistory::Snapshot &h) {
+  nlohmann::json overrides = nlohmann::json::array();
+  for (const auto &u : h.overrides) overrides.push_back(u ? nlohmann::json(*u) : nlohmann::json());
+  return {{"lambda_c", h.lambdaC},   {"alpha", h.alpha}, {"input", h.input}, {"external_lambda_c", h.externalLambdaC},
+          {"overrides", overrides}, {"time", h.time},   {"dt", h.dt}};
+}
+
+model::MuscleHistory::Snapshot muscleSnapshotFromJson(const nlohmann::json &j) {
+  model::MuscleHistory::Snapshot h;
+  h.lambdaC = j.at("lambda_c").get<std::vector<double>>();
+  h.alpha = j.at("alpha").get<std::vector<double>>();
+  h.input = j.at("input").get<std::vector<double>>();
+  h.externalLambdaC = j.at("external_lambda_c").get<std::vector<std::vector<double>>>();
+  for (const auto &u : j.at("overrides"))
+    h.overrides.push_back(u.is_null() ? std::optional<double>() : std::optional<double>(u.get<double>()));
+  h.time = j.at("time").get<double>();
+  h.dt = j.at("dt").get<double>();
+  return h;
+}
+
+} // namespace glossa::solvers

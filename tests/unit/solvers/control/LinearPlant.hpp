@@ -1,0 +1,73 @@
+#pragma once
+// A fake plant for the control driver: the control points move linearly with the inputs,
+// d = A u (3 rows per point, one column per muscle group), so every objective is known in closed
+// form. A candidate can be made to fail; the kept state is the kept candidate's inputs, and its
+// statistics carry the inputs too, so a test can tell whose state and statistics won.
+
+#include <functional>
+#include <stdexcept>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solvers/control/ControlPlant.hpp"
+
+namespace glossa::test {
+
+class LinearPlant final : public solvers::ControlPlant {
+public:
+  explicit LinearPlant(Eigen::MatrixXd A) : A_(std::move(A)) {}
+
+  // Inputs for which the solve fails.
+  std::function<bool(const std::vector<double> &)> fails = [](const std::vector<double> &) { return false; };
+  // The sensitivity reported is this times the true one (1: exact).
+  double sensitivityScale = 1.0;
+  int solves = 0;
+  std::vector<std::vector<double>> solved; // the inputs of every solve, in order
+
+  Eigen::Matrix3Xd displacement(const std::vector<double> &inputs) const {
+    const Eigen::VectorXd d = A_ * Eigen::Map<const Eigen::VectorXd>(inputs.data(), static_cast<Eigen::Index>(inputs.size()));
+    return Eigen::Map<const Eigen::Matrix3Xd>(d.data(), 3, d.size() / 3);
+  }
+
+  solvers::CandidateSolve solve(const std::vector<double> &inputs) override {
+    ++solves;
+    solved.push_back(inputs);
+    last_ = inputs;
+    solvers::CandidateSolve out;
+    out.ok = !fails(inputs);
+    if (!out.ok) {
+      out.why = "the fake solve failed";
+      return out;
+    }
+    out.pointDisplacement = displacement(inputs);
+    out.statistics.converged = true;
+    out.statistics.solves = 1;
+    solvers::NewtonResult n;
+    n.converged = true;
+    n.residualNorms = inputs;
+    out.statistics.newton.push_back(n);
+    return out;
+  }
+
+  void keepLast() override { kept_ = last_; }
+
+  solvers::InputSensitivity sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) override {
+    if (inputs != kept_) throw std::logic_error("LinearPlant: sensitivity away from the kept state");
+    solvers::InputSensitivity s;
+    s.dxdu.resize(A_.rows(), static_cast<Eigen::Index>(groups.size()));
+    for (std::size_t j = 0; j < groups.size(); ++j) s.dxdu.col(static_cast<Eigen::Index>(j)) = sensitivityScale * A_.col(groups[j]);
+    s.krylovIterations = static_cast<int>(groups.size());
+    return s;
+  }
+
+  std::vector<double> packKept() const override { return kept_; }
+  void unpackKept(const std::vector<double> &state) override { kept_ = state; }
+  const std::vector<double> &kept() const { return kept_; }
+
+private:
+  Eigen::MatrixXd A_;
+  std::vector<double> last_, kept_;
+};
+
+} // namespace glossa::test
