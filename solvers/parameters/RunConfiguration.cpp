@@ -1,0 +1,60 @@
+#include "solvers/parameters/RunConfiguration.hpp"
+
+#include <sstream>
+
+#include "io/deck/Deck.hpp"
+#include "solvers/parameters/ControlSection.hpp"
+
+namespace glossa::solvers {
+
+namespace {
+void listParameters(const Teuchos::ParameterList &list, const std::string &path, std::ostringstream &out) {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string name = path + list.name(it);
+    const Teuchos::ParameterEntry &entry = list.entry(it);
+    if (entry.isList()) listParameters(Teuchos::getValue<Teuchos::ParameterList>(entry), name + "/", out);
+    else out << name << " = " << entry.getAny(false) << '\n';
+  }
+}
+
+std::string parameterListing(const Teuchos::ParameterList &deck) {
+  std::ostringstream out;
+  out.precision(17);
+  listParameters(deck, "", out);
+  return out.str();
+}
+
+// The Linear solver parameters that only an iterative solve uses.
+const char *const kIterativeOnly[] = {
+    "preconditioner", "MueLu smoother", "smoother degree", "vertex-patch levels", "patch sweeps",
+    "Chebyshev eigenvalue method", "Chebyshev eigenvalue iterations", "Chebyshev eigenvalue ratio", "MueLu reuse",
+    "MueLu reuse scope", "coarse size", "FROSch coarse space", "FROSch overlap", "Ifpack2 type"};
+} // namespace
+
+RunConfiguration parseRunConfiguration(const io::Deck &deck) {
+  const Teuchos::ParameterList &D = deck.root();
+  RunConfiguration c;
+  c.deckFile = deck.file();
+  c.time = parseTimeParameters(D.sublist("Time"));
+  c.incompressibility = parseIncompressibilityParameters(D.sublist("Incompressibility"));
+  c.newton = parseNewtonParameters(D.sublist("Nonlinear solver"));
+  c.linear = parseLinearSolverParameters(D.sublist("Linear solver"));
+  c.output = parseOutputParameters(D.sublist("Output"));
+  c.controlled = controlRequested(D.sublist("Control"));
+  c.listing = parameterListing(D);
+  for (const char *name : kIterativeOnly)
+    if (deck.given({"Linear solver", name})) c.givenIterativeOnly.push_back(deck.where({"Linear solver", name}));
+  return c;
+}
+
+std::string firstListingDifference(const std::string &run, const std::string &now) {
+  std::istringstream a(run), b(now);
+  std::string l1, l2;
+  while (true) {
+    const bool more1 = static_cast<bool>(std::getline(a, l1)), more2 = static_cast<bool>(std::getline(b, l2));
+    if (!more1 && !more2) return "";
+    if (!more1 || !more2 || l1 != l2) return "the run's " + (more1 ? l1 : "end") + ", now " + (more2 ? l2 : "end");
+  }
+}
+
+} // namespace glossa::solvers
