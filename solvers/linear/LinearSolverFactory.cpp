@@ -168,6 +168,15 @@ ReuseScope keptReuseScope(const LinearSolverParameters &s, const LinearSolverCon
   return s.reuseScope;
 }
 
+LinearSolverPlan planLinearSolver(const LinearSolverParameters &s, const LinearSolverContext &c, bool mixedBlockSolve) {
+  LinearSolverPlan plan;
+  plan.direct = usesDirectSolve(s, c);
+  plan.keptScope = keptReuseScope(s, c, mixedBlockSolve);
+  // With the mixed method: the displacement block's preconditioner.
+  plan.description = plan.direct ? "direct (" + s.directSolverName + ")" : "iterative (" + s.preconditionerName + ")";
+  return plan;
+}
+
 Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &s, const LinearSolverContext &c) {
   auto p = Teuchos::rcp(new ParameterList("Linear solver"));
   const bool direct = usesDirectSolve(s, c);

@@ -6,6 +6,7 @@
 // Amesos2 KLU2 for comparison. This unit holds the expensive template
 // instantiations (Stratimikos::enableMueLu and enableFROSch, Ifpack2 registration): edit it rarely.
 
+#include <string>
 #include <Teuchos_ParameterList.hpp>
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 
@@ -31,6 +32,16 @@ bool usesDirectSolve(const LinearSolverParameters &section, const LinearSolverCo
 // build theirs per Newton solve.
 ReuseScope keptReuseScope(const LinearSolverParameters &section, const LinearSolverContext &context,
                           bool mixedBlockSolve);
+
+// A run's linear solve, resolved once from the section and the problem: whether it is direct,
+// how long Newton keeps it (keptReuseScope) and what the summary calls it.
+struct LinearSolverPlan {
+  bool direct = false;
+  ReuseScope keptScope = ReuseScope::newtonSolve;
+  std::string description; // "direct (MUMPS)", "iterative (MueLu)"
+};
+LinearSolverPlan planLinearSolver(const LinearSolverParameters &section, const LinearSolverContext &context,
+                                  bool mixedBlockSolve);
 
 // The Stratimikos parameter list the deck section stands for (exposed for tests and the docs).
 Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const LinearSolverParameters &section,

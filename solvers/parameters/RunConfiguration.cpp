@@ -31,6 +31,15 @@ const char *const kIterativeOnly[] = {
     "MueLu reuse scope", "coarse size", "FROSch coarse space", "FROSch overlap", "Ifpack2 type"};
 } // namespace
 
+void declareSolverParameters(Teuchos::ParameterList &schema) {
+  schema.set("Time", timeParameters(), "load/time stepping");
+  schema.set("Incompressibility", incompressibilityParameters(), "the incompressibility algorithm");
+  schema.set("Nonlinear solver", nonlinearSolverParameters(), "Newton's method (NOX)");
+  schema.set("Linear solver", linearSolverParameters(), "Krylov solver and preconditioner (Belos, MueLu, Ifpack2, Amesos2)");
+  schema.set("Output", outputParameters(), "result files");
+  schema.set("Control", controlParameters(), "neural control of the muscle groups (paper §6.1)");
+}
+
 RunConfiguration parseRunConfiguration(const io::Deck &deck) {
   const Teuchos::ParameterList &D = deck.root();
   RunConfiguration c;

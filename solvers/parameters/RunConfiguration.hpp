@@ -34,6 +34,10 @@ struct RunConfiguration {
   std::vector<std::string> givenIterativeOnly;
 };
 
+// Parameters of the sections the solver side owns ("Time", "Incompressibility",
+// "Nonlinear solver", "Linear solver", "Output", "Control"), to be merged into the deck schema.
+void declareSolverParameters(Teuchos::ParameterList &schema);
+
 // `deck`: validated (every default filled in).
 RunConfiguration parseRunConfiguration(const io::Deck &deck);
 

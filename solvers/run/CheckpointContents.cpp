@@ -1,5 +1,7 @@
 #include "solvers/run/CheckpointContents.hpp"
 
+#include "io/output/OutputError.hpp"
+
 namespace glossa::solvers {
 
 nlohmann::json toJson(const OutputMark &mark) {
@@ -45,6 +47,28 @@ model::MuscleHistory::Snapshot muscleSnapshotFromJson(const nlohmann::json &j) {
   h.time = j.at("time").get<double>();
   h.dt = j.at("dt").get<double>();
   return h;
+}
+
+std::vector<double> ownedValues(const assembly::Vector &v) {
+  const auto data = v.getData();
+  return std::vector<double>(data.begin(), data.end());
+}
+
+void assignOwnedValues(assembly::Vector &v, const nlohmann::json &values, const char *what) {
+  const auto x = values.get<std::vector<double>>();
+  auto data = v.getDataNonConst();
+  if (x.size() != static_cast<std::size_t>(data.size()))
+    throw io::OutputError(std::string("the checkpoint's ") + what + " has " + std::to_string(x.size()) + " values here, " +
+                          std::to_string(data.size()) + " expected (another mesh or partition)");
+  std::copy(x.begin(), x.end(), data.begin());
+}
+
+std::vector<double> elementValues(const nlohmann::json &values, std::size_t expected, const char *what) {
+  auto x = values.get<std::vector<double>>();
+  if (x.size() != expected)
+    throw io::OutputError(std::string("the checkpoint's ") + what + " has " + std::to_string(x.size()) +
+                          " element values here, " + std::to_string(expected) + " expected (another mesh or partition)");
+  return x;
 }
 
 } // namespace glossa::solvers

@@ -1,11 +1,12 @@
 #pragma once
 // The plain parts of a run's checkpoint as JSON (stored as CBOR by io::CheckpointStore, so every
 // double comes back bit-identical): where the output files had got, and the muscle history.
-// What the Simulation itself keeps (its displacement, multipliers, time, step size, the monitors'
-// and the controller's state, the summary so far) it packs beside these (doc/output.md, restart).
+// What the run's parts keep (the load stepper's states and step size, the monitors' and the
+// controller's state, the summary so far) each packs beside these (doc/output.md, restart).
 
 #include <nlohmann/json.hpp>
 
+#include "assembly/TpetraTypes.hpp"
 #include "model/MuscleHistory.hpp"
 #include "solvers/run/StepRecorder.hpp"
 
@@ -16,5 +17,12 @@ OutputMark outputMarkFromJson(const nlohmann::json &j);
 
 nlohmann::json toJson(const model::MuscleHistory::Snapshot &history);
 model::MuscleHistory::Snapshot muscleSnapshotFromJson(const nlohmann::json &j);
+
+// A distributed vector's owned values, and back: io::OutputError if the count differs (another
+// mesh or partition). `what` names it in the message.
+std::vector<double> ownedValues(const assembly::Vector &v);
+void assignOwnedValues(assembly::Vector &v, const nlohmann::json &values, const char *what);
+// Per-local-element values, checked against the count expected.
+std::vector<double> elementValues(const nlohmann::json &values, std::size_t expected, const char *what);
 
 } // namespace glossa::solvers

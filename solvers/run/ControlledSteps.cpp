@@ -1,0 +1,171 @@
+#include "solvers/run/ControlledSteps.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "assembly/Assembler.hpp"
+#include "assembly/ModelEvaluator.hpp"
+#include "io/output/KeyedCsvWriter.hpp"
+#include "model/Scene.hpp"
+#include "solvers/control/CommControlGroups.hpp"
+#include "solvers/control/ControlSensitivity.hpp"
+#include "solvers/incompressibility/UzawaLoop.hpp"
+#include "solvers/run/LoadStepper.hpp"
+
+namespace glossa::solvers {
+
+ControlledSteps::ControlledSteps(const ControlSetup &setup, const StepSolverParts &parts, const StepSolver &solver,
+                                 const LoadStepper &stepper, const CommControlGroups &groups,
+                                 const std::filesystem::path &dir, std::optional<std::uintmax_t> resumeControlsAt,
+                                 bool writer, bool talk)
+    : setup_(setup), parts_(parts), solver_(solver), stepper_(stepper), last_(stepper.committed()),
+      kept_(stepper.committed()) {
+  if (writer)
+    controls_ = std::make_unique<io::KeyedCsvWriter>(
+        dir / "controls.csv", "group",
+        std::vector<std::string>{"u [-]", "evaluated [-]", "objective [m]", "candidates [-]"}, resumeControlsAt);
+  const model::Scene &scene = parts.assembler.scene();
+  ControlDriverSetup driver;
+  driver.parameters = setup.parameters;
+  for (const auto &g : scene.muscles.groups) driver.groupNames.push_back(g.name);
+  driver.controlled = setup.groups;
+  driver.referencePositions.resize(3, static_cast<Eigen::Index>(setup.pointNodes.size()));
+  for (std::size_t p = 0; p < setup.pointNodes.size(); ++p)
+    driver.referencePositions.col(static_cast<Eigen::Index>(p)) = scene.mesh.nodes[setup.pointNodes[p]];
+  driver.goals = setup.goals;
+  driver.weights = setup.weights;
+  driver.talk = talk;
+  driver_ = std::make_unique<ControlDriver>(std::move(driver), *this, groups);
+}
+
+ControlledSteps::~ControlledSteps() = default;
+
+void ControlledSteps::applyInputs(const std::vector<double> &inputs) {
+  for (int g : setup_.groups) parts_.history.overrideInput(g, inputs[g]);
+}
+
+Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const StepState &state) const {
+  const std::vector<double> all = parts_.assembler.gatherDisplacement(state.u);
+  Eigen::Matrix3Xd d(3, static_cast<Eigen::Index>(setup_.pointNodes.size()));
+  for (std::size_t p = 0; p < setup_.pointNodes.size(); ++p) {
+    const auto n = setup_.pointNodes[p];
+    d.col(static_cast<Eigen::Index>(p)) = Eigen::Vector3d(all[3 * n], all[3 * n + 1], all[3 * n + 2]);
+  }
+  return d;
+}
+
+CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
+  applyInputs(inputs);
+  last_.assign(stepper_.stepStart());
+  const StepTrial &trial = stepper_.trial();
+  StepAttempt a = solver_.solve(trial.time, trial.dt, last_, true);
+  CandidateSolve out;
+  out.ok = a.ok;
+  out.why = a.why;
+  out.statistics = std::move(a.uzawa);
+  if (a.ok) out.pointDisplacement = pointDisplacement(last_);
+  return out;
+}
+
+void ControlledSteps::keepLast() { kept_.assign(last_); }
+
+InputSensitivity ControlledSteps::sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) {
+  const StepTrial &trial = stepper_.trial();
+  applyInputs(inputs);
+  parts_.history.beginStep(trial.time, trial.dt);
+  parts_.model.setTime(trial.time);
+  parts_.model.setMultipliers(kept_.lambda);
+  const auto s = controlPointSensitivity(parts_.newton, kept_.u, groups);
+  return {s.dxdu, s.krylovIterations};
+}
+
+std::vector<double> ControlledSteps::packKept() const {
+  std::vector<double> state = parts_.assembler.gatherDisplacement(kept_.u);
+  const std::vector<double> lambdaAll = parts_.assembler.gatherElementField(kept_.lambda, 1);
+  state.insert(state.end(), lambdaAll.begin(), lambdaAll.end());
+  return state;
+}
+
+void ControlledSteps::unpackKept(const std::vector<double> &state) {
+  const auto split = state.begin() + static_cast<long>(3 * parts_.assembler.scene().mesh.numNodes());
+  parts_.assembler.scatterDisplacement(std::vector<double>(state.begin(), split), kept_.u);
+  kept_.lambda = parts_.assembler.localElementValues(std::vector<double>(split, state.end()));
+}
+
+void ControlledSteps::step(StepTrial &trial, int committedSteps) {
+  trial.control = driver_->step(committedSteps, committedStretch_);
+  if (!trial.control.found()) {
+    trial.attempt.why = "no candidate input converged";
+    return;
+  }
+  // The winner's trial muscle history (activation and lambda_c at its converged state, no
+  // solve), then its state, become the trial's.
+  applyInputs(trial.control.inputs);
+  parts_.history.beginStep(trial.time, trial.dt);
+  trial.attempt.muscle = assembly::updateMuscleHistory(parts_.assembler, kept_.u, parts_.history);
+  trial.state.assign(kept_);
+  trial.attempt.uzawa = trial.control.solve;
+  trial.attempt.ok = true;
+}
+
+nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
+  const ControlStepResult &outcome = trial.control;
+  const bool ga = setup_.parameters.type == control::ControllerType::geneticAlgorithm;
+  nlohmann::json c;
+  c["objective"] = outcome.objective;
+  c["candidates"] = outcome.candidates;
+  if (ga) {
+    c["generations"] = outcome.generations;
+    // The Gauss-Newton step of the prediction seed (Control/prediction seed).
+    if (outcome.sensitivities > 0) c["sensitivity_evaluations"] = outcome.sensitivities;
+  } else {
+    c["iterations"] = outcome.iterations;
+    c["sensitivity_evaluations"] = outcome.sensitivities;
+    c["sensitivity_krylov"] = outcome.sensitivityKrylov;
+    if (outcome.sensitivityCheck >= 0.0) c["sensitivity_check"] = outcome.sensitivityCheck;
+  }
+  c["stop"] = outcome.stop;
+  // Candidates whose solve failed are ranked last and otherwise silent: count them, with a reason.
+  c["failed_candidates"] = outcome.failedCandidates;
+  if (!outcome.firstFailure.empty()) c["first_candidate_failure"] = outcome.firstFailure;
+  const auto &groups = parts_.assembler.scene().muscles.groups;
+  nlohmann::json inputs = nlohmann::json::object(), errors = nlohmann::json::object();
+  std::vector<std::pair<std::string, std::vector<double>>> rows;
+  for (int g : setup_.groups) {
+    const bool evaluated = std::find(outcome.evaluated.begin(), outcome.evaluated.end(), g) != outcome.evaluated.end();
+    inputs[groups[g].name] = outcome.inputs[g];
+    rows.push_back({groups[g].name,
+                    {outcome.inputs[g], evaluated ? 1.0 : 0.0, outcome.objective, static_cast<double>(outcome.candidates)}});
+  }
+  for (std::size_t p = 0; p < setup_.pointNames.size(); ++p)
+    errors[setup_.pointNames[p]] = outcome.pointErrors(static_cast<Eigen::Index>(p));
+  c["inputs"] = inputs;
+  c["point_errors"] = errors;
+  if (controls_) controls_->append(t, rows);
+  char line[200];
+  std::snprintf(line, sizeof line, "  control: eq. 25 %.3g m, %zu candidates (%zu failed), %s %d (%s)",
+                outcome.objective, outcome.candidates, outcome.failedCandidates, ga ? "generations" : "iterations",
+                ga ? outcome.generations : outcome.iterations, outcome.stop.c_str());
+  controlLine_ = line;
+  return c;
+}
+
+void ControlledSteps::save(nlohmann::json &run) const {
+  const auto memory = driver_->memory();
+  run["control_memory"] = {memory.first, memory.second};
+  run["committed_stretch"] = committedStretch_;
+}
+
+std::optional<std::uintmax_t> ControlledSteps::controlsBytes() const {
+  if (!controls_) return std::nullopt;
+  return controls_->bytes();
+}
+
+void ControlledSteps::restore(const nlohmann::json &run) {
+  if (run.contains("control_memory"))
+    driver_->restoreMemory({run.at("control_memory").at(0).get<control::Genome>(),
+                            run.at("control_memory").at(1).get<control::Genome>()});
+  committedStretch_ = run.at("committed_stretch").get<std::vector<double>>();
+}
+
+} // namespace glossa::solvers

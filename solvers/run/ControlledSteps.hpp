@@ -1,0 +1,77 @@
+#pragma once
+// The controlled step (paper §6.1): the control driver searches the inputs of the controlled
+// muscle groups that keep the control points at their goals (eq. 25), each candidate a full
+// step solve from where the step starts; the winner's state becomes the step's trial. This is
+// the driver's plant (ControlPlant) over the run's step solver, and controls.csv with the
+// summary's "control" record of each step.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "solvers/control/ControlDriver.hpp"
+#include "solvers/parameters/ControlSection.hpp"
+#include "solvers/run/StepSolver.hpp"
+
+namespace glossa::io {
+class KeyedCsvWriter;
+}
+
+namespace glossa::solvers {
+
+class CommControlGroups;
+class LoadStepper;
+
+class ControlledSteps final : public ControlPlant {
+public:
+  // `resumeControlsAt`: a restart's length of controls.csv. `writer`: this rank writes it.
+  ControlledSteps(const ControlSetup &setup, const StepSolverParts &parts, const StepSolver &solver,
+                  const LoadStepper &stepper, const CommControlGroups &groups, const std::filesystem::path &dir,
+                  std::optional<std::uintmax_t> resumeControlsAt, bool writer, bool talk);
+  ~ControlledSteps() override;
+
+  // Searches the step's inputs; the winner's state and statistics become `trial`'s. Collective.
+  void step(StepTrial &trial, int committedSteps);
+  // A committed step's record: controls.csv's rows, the summary's "control" object, and the
+  // console's line about it (controlLine()).
+  nlohmann::json record(const StepTrial &trial, double t);
+  const std::string &controlLine() const { return controlLine_; }
+  // The committed step's mean fibre stretch of every group (pruning, §6.1).
+  void committed(const StepTrial &trial) { committedStretch_ = trial.attempt.muscle.groupMeanStretch; }
+  void setCommittedStretch(const std::vector<double> &stretch) { committedStretch_ = stretch; }
+
+  // A checkpoint's part (rank 0's): the driver's memory and the committed stretches.
+  void save(nlohmann::json &run) const;
+  void restore(const nlohmann::json &run);
+  // How far controls.csv has got (the writer rank's; empty elsewhere), for a checkpoint's mark.
+  std::optional<std::uintmax_t> controlsBytes() const;
+
+  // ControlPlant: candidates solved from the step's start.
+  CandidateSolve solve(const std::vector<double> &inputs) override;
+  void keepLast() override;
+  InputSensitivity sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) override;
+  std::vector<double> packKept() const override; // [u of every node (3 per node), Lambda of every element]
+  void unpackKept(const std::vector<double> &state) override;
+
+private:
+  void applyInputs(const std::vector<double> &inputs);
+  // The control points' displacement (one column per point), gathered from every rank.
+  Eigen::Matrix3Xd pointDisplacement(const StepState &state) const;
+
+  const ControlSetup &setup_;
+  StepSolverParts parts_;
+  const StepSolver &solver_;
+  const LoadStepper &stepper_;
+  StepState last_, kept_;
+  std::unique_ptr<ControlDriver> driver_;
+  std::unique_ptr<io::KeyedCsvWriter> controls_;
+  std::vector<double> committedStretch_;
+  std::string controlLine_; // the last control step's summary, for its step's line
+};
+
+} // namespace glossa::solvers

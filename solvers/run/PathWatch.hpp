@@ -1,0 +1,65 @@
+#pragma once
+// The load path's watch under load control (Time/at a limit point = stop or follow): the
+// tangent's stiffness along each converged step (PathStiffness), a step past a limit point
+// refused, the note once the path has softened, and, after refused steps, the limit point
+// located between the last accepted and the first refused load (LimitPointMonitor).
+
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "solvers/run/StepState.hpp"
+
+namespace glossa::assembly {
+class Assembler;
+class ModelEvaluator;
+} // namespace glossa::assembly
+
+namespace glossa::solvers {
+
+class LimitPointMonitor;
+class NewtonSolver;
+
+class PathWatch {
+public:
+  // `nominalStep`: the deck's step, the monitor's scale; `tolerance`: Time/limit point tolerance.
+  PathWatch(const assembly::Assembler &assembler, assembly::ModelEvaluator &model, const NewtonSolver &newton,
+            double nominalStep, double tolerance, bool talk);
+  ~PathWatch();
+
+  // A converged trial: its stiffness along the step, and the trial refused (unstable) when that
+  // is not positive. Collective.
+  void check(StepTrial &trial);
+  // A committed step at t: the monitor's history, and the note once the path has softened.
+  void accepted(double t, double pathStiffness);
+
+  // After a refused trial from the committed state at t: the monitor learns where it failed;
+  // whether the limit point is now located, given the next step (0 if none is left).
+  struct Verdict {
+    bool located = false;
+    nlohmann::json record;   // summary.json's limit_point
+    std::string description; // the failure, if the run stops there
+  };
+  Verdict refused(double t, const StepTrial &trial, const StepState &committed, double nextStep, bool stepLeft);
+
+  nlohmann::json state() const; // for a checkpoint
+  void restore(const nlohmann::json &run);
+
+private:
+  const assembly::Assembler &assembler_;
+  assembly::ModelEvaluator &model_;
+  const NewtonSolver &newton_;
+  std::unique_ptr<LimitPointMonitor> limit_;
+  bool talk_;
+  bool softeningSaid_ = false; // the note that the path has softened, once
+};
+
+// The mesh node with the largest |v| and that |v| (gathered on every rank). Collective.
+struct LargestMotion {
+  std::size_t node = 0;
+  double norm = 0.0;
+};
+LargestMotion largestMotion(const assembly::Assembler &assembler, const assembly::Vector &v);
+
+} // namespace glossa::solvers

@@ -1,0 +1,67 @@
+#pragma once
+// The run's checkpoints (glossa run --restart): each rank's part of the committed state written
+// to <output>/checkpoint and published once every part is on disk (io::CheckpointStore), and a
+// restart's read with its checks that the deck, the ranks and the control groups are the run's.
+// What goes into a part is each run component's own (LoadStepper::save, ...).
+
+#include <filesystem>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include "solvers/run/StepRecorder.hpp"
+
+namespace glossa::io {
+class CheckpointStore;
+}
+
+namespace glossa::solvers {
+
+// A restart's: the latest checkpoint's state.
+struct Restart {
+  int step = 0;
+  nlohmann::json run;  // rank 0's part: the scalars, the monitors' and controller's state, the summary, the files' lengths
+  nlohmann::json part; // this rank's: displacement, multipliers, muscle history
+  OutputMark outputs;
+};
+
+class RunCheckpoint {
+public:
+  // `every`: Output/checkpoint every (0: never).
+  RunCheckpoint(const std::filesystem::path &dir, Teuchos::RCP<const Teuchos::Comm<int>> comm, int every);
+  ~RunCheckpoint();
+
+  // Whether a step's commit writes one.
+  bool due(int step) const { return every_ > 0 && step % every_ == 0; }
+  bool enabled() const { return every_ > 0; }
+  // Writes this rank's part of step `step` (unless that step has one) and publishes it once
+  // every rank's is on disk; a rank that cannot write stops them all (io::OutputError). Collective.
+  void write(int step, const nlohmann::json &part);
+  // A restart read from it counts as written.
+  void restored(int step) { written_ = step; }
+  const std::filesystem::path &directory() const;
+
+  // The latest checkpoint in `dir`: io::DeckError if there is none, if `listing` is not the
+  // run's deck, or if the ranks or control groups differ. Collective.
+  static std::unique_ptr<Restart> read(const std::filesystem::path &dir, const Teuchos::Comm<int> &comm,
+                                       const std::string &listing, int controlGroups);
+
+private:
+  std::unique_ptr<io::CheckpointStore> store_;
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  int every_;
+  int written_ = -1; // the step of the latest checkpoint written
+};
+
+struct RunParts;
+
+// The committed state of every part of a run (the load stepper's states, the muscle history, the
+// monitors', the Uzawa loop's and the controller's state, where the files had got, the summary)
+// checkpointed as this rank's part, unless this step has one. Collective.
+void writeCheckpoint(RunParts &run);
+// A restart: every part back to the checkpoint's state, the summary told of the restart.
+void restoreRun(RunParts &run, const Restart &restart);
+
+} // namespace glossa::solvers

@@ -1,0 +1,211 @@
+#include "solvers/run/RunReport.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sys/resource.h>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+
+#include "assembly/ModelEvaluator.hpp"
+#include "io/output/SummaryWriter.hpp"
+#include "solvers/run/StopSignals.hpp"
+
+namespace glossa::solvers {
+
+namespace {
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Seconds a Trilinos timer has accumulated (0 if it does not exist yet).
+double timerSeconds(const std::string &name) {
+  const auto timer = Teuchos::TimeMonitor::lookupCounter(name);
+  return timer.is_null() ? 0.0 : timer->totalElapsedTime();
+}
+
+double peakMemoryMegabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// "interrupted by SIGTERM after step 12 (t = 3.75)": the reason the summary and the log give.
+std::string interruption(int signal, std::size_t steps, double time) {
+  return std::string("interrupted by ") + signalName(signal) + " after step " + std::to_string(steps) + " (t = " +
+         std::to_string(time) + ")";
+}
+
+// A summary (as last written) marked as ended by `signal` after its last step.
+void markInterrupted(nlohmann::json &summary, int signal) {
+  const std::size_t steps = summary.contains("steps") ? summary["steps"].size() : 0;
+  const double time = steps > 0 ? summary["steps"].back().value("time", 0.0) : 0.0;
+  summary["running"] = false;
+  summary["converged"] = false;
+  summary["interrupted"] = signalName(signal);
+  summary["failure"] = interruption(signal, steps, time) + "; the files hold the steps up to there";
+}
+} // namespace
+
+std::string readableDuration(double seconds) {
+  char text[64];
+  const long s = std::lround(std::max(seconds, 0.0));
+  if (s < 60) std::snprintf(text, sizeof text, "%ld s", s);
+  else if (s < 3600) std::snprintf(text, sizeof text, "%ld min %02ld s", s / 60, s % 60);
+  else std::snprintf(text, sizeof text, "%ld h %02ld min", s / 3600, (s % 3600) / 60);
+  return text;
+}
+
+void prepareOutputDirectory(const std::filesystem::path &dir) {
+  std::filesystem::create_directories(dir);
+  std::filesystem::remove_all(dir / "checkpoint"); // an earlier run's: --restart must not continue it
+  std::filesystem::remove_all(dir / "results_steps");
+  for (const char *file : {"results.xdmf", "results.h5", "traces.csv", "reactions.csv", "resultants.csv",
+                           "volumes.csv", "activation.csv", "controls.csv", "summary.json"})
+    std::filesystem::remove(dir / file);
+}
+
+RunReport::RunReport(Teuchos::RCP<const Teuchos::Comm<int>> comm, bool root, bool talk)
+    : comm_(std::move(comm)), root_(root), talk_(talk), start_(Clock::now()), stepsStart_(start_),
+      setupAtStart_(timerSeconds("NOX Total Preconditioner Construction")),
+      solveAtStart_(timerSeconds("NOX Total Linear Solve")) {}
+
+RunReport::~RunReport() {
+  if (root_) onStopSignal({});
+}
+
+void RunReport::warn(const std::string &text) {
+  doc_["warnings"].push_back(text);
+  if (root_) std::fprintf(stderr, "glossa: warning: %s\n", text.c_str());
+}
+
+AssemblyCounters assemblyCounters(const assembly::ModelEvaluator &model) {
+  return {model.assemblySeconds(), model.residualEvaluations(), model.tangentEvaluations(),
+          model.tangentsFromResidualPass(), model.residualOnlyPasses()};
+}
+
+void RunReport::write(const AssemblyCounters &counters) {
+  doc_["wall_seconds"] = since(start_);
+  doc_["assembly_seconds"] = counters.assemblySeconds;
+  // Element passes NOX asked for: residuals (each also assembles the tangent where it can), the
+  // tangents among them, and the tangent requests the residual pass had already served.
+  doc_["residual_evaluations"] = counters.residualEvaluations;
+  doc_["tangent_evaluations"] = counters.tangentEvaluations;
+  doc_["tangents_from_residual_pass"] = counters.tangentsFromResidualPass;
+  doc_["residual_only_passes"] = counters.residualOnlyPasses;
+  // NOX's own timers split the linear solves into preconditioner set-up and Krylov iterations.
+  doc_["preconditioner_setup_seconds"] = timerSeconds("NOX Total Preconditioner Construction") - setupAtStart_;
+  doc_["linear_solve_seconds"] = timerSeconds("NOX Total Linear Solve") - solveAtStart_;
+  double peak = peakMemoryMegabytes(), peakMax = 0.0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, peak, Teuchos::outArg(peakMax));
+  doc_["peak_memory_mb_per_rank"] = peakMax;
+  if (!root_) return;
+  std::lock_guard<std::recursive_mutex> lock(mutex_);
+  if (!summary_) summary_ = std::make_unique<io::SummaryWriter>(dir_ / "summary.json");
+  summary_->root() = doc_;
+  // The watcher wrote "interrupted" already; a step committed since keeps saying so.
+  if (interruptedBy_ != 0 && !doc_.contains("interrupted")) markInterrupted(summary_->root(), interruptedBy_);
+  summary_->write();
+}
+
+void RunReport::beginSteps(double t) {
+  stepsStart_ = Clock::now();
+  stepsStartTime_ = t;
+  installStopSignalHandlers();
+  if (root_) onStopSignal([this](int signal) { interrupted(signal); });
+}
+
+void RunReport::interrupted(int signal) {
+  std::lock_guard<std::recursive_mutex> lock(mutex_);
+  interruptedBy_ = signal;
+  if (!summary_) return;
+  markInterrupted(summary_->root(), signal);
+  try {
+    summary_->write();
+  } catch (const std::exception &) {
+    // Nothing more can be done on this thread; the main thread reports output errors.
+  }
+}
+
+bool RunReport::stopRequested(int step, double t) {
+  // Every rank agrees to stop at the same step boundary (a signal may reach them apart).
+  int signal = stopSignal(), anySignal = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, signal, Teuchos::outArg(anySignal));
+  if (anySignal == 0) return false;
+  stoppedBy_ = anySignal;
+  failure_ = interruption(anySignal, static_cast<std::size_t>(step), t);
+  return true;
+}
+
+void RunReport::addStep(const StepTrial &trial, double t, bool onPath, double assemblySeconds, nlohmann::json step) {
+  const UzawaResult &r = trial.attempt.uzawa;
+  step["time"] = t;
+  step["dt"] = trial.dt;
+  step["newton_iterations"] = r.newtonIterations;
+  if (!onPath) step["linear_iterations"] = r.linearIterations; // LOCA's bordered solves are not counted
+  step["uzawa_iterations"] = r.solves;
+  step["max_dilatation_error"] = r.dilatation.max;
+  step["mean_dilatation_error"] = r.dilatation.mean;
+  step["max_volume_change"] = r.dilatation.maxVolumeChange;
+  step["min_corner_J"] = trial.attempt.minCornerJ;
+  step["min_regular_corner_J"] = trial.attempt.minRegularCornerJ;
+  if (std::isfinite(trial.attempt.pathStiffness)) step["path_stiffness"] = trial.attempt.pathStiffness;
+  if (!(trial.attempt.minCornerJ > 0.0) && talk_)
+    std::printf("  note: element %lld has a corner turned over at t = %.6g (det F = %.3g there; its Gauss points are "
+                "not inverted)\n", static_cast<long long>(trial.attempt.cornerElement), t, trial.attempt.minCornerJ);
+  step["seconds"] = since(trial.start);
+  step["assembly_seconds"] = assemblySeconds - trial.assemblyAtStart;
+  nlohmann::json histories = nlohmann::json::array();
+  for (const auto &n : r.newton) histories.push_back({{"residual_norms", n.residualNorms}, {"krylov", n.linearIterationsPerStep}});
+  step["newton_solves"] = histories;
+  doc_["steps"].push_back(step);
+}
+
+void RunReport::stepLine(int step, double t, double endTime, double dt, const UzawaResult &r, bool onPath,
+                         const std::string &controlLine) const {
+  if (!talk_) return;
+  if (onPath) {
+    std::printf("step %d  t = %.6g (load %.4g of the end time's)  newton %d  dilatation error %.1e  [%s elapsed]\n",
+                step, t, t / endTime, r.newtonIterations, r.dilatation.max, readableDuration(since(stepsStart_)).c_str());
+    return;
+  }
+  // step k/N with N from the step size now (the controller may still cut back or grow it), and
+  // the time left from the wall time per simulated second so far.
+  const double elapsed = since(stepsStart_);
+  const long left = t < endTime ? std::lround(std::ceil((endTime - t) / dt - 1e-9)) : 0;
+  const double remaining = t > stepsStartTime_ ? elapsed * (endTime - t) / (t - stepsStartTime_) : 0.0;
+  std::printf("step %d/%ld  t = %.6g of %.6g s  newton %d  krylov %d  uzawa %d  dilatation error %.1e%s  "
+              "[%s elapsed, about %s left]\n",
+              step, step + left, t, endTime, r.newtonIterations, r.linearIterations, r.solves, r.dilatation.max,
+              controlLine.c_str(), readableDuration(elapsed).c_str(), readableDuration(remaining).c_str());
+}
+
+void RunReport::stepRefused(const StepTrial &trial) {
+  if (talk_) std::printf("  step failed at t = %.6g: %s; cutting back\n", trial.time, trial.attempt.why.c_str());
+  if (trial.attempt.insideOut.is_null()) return;
+  nlohmann::json refusal = trial.attempt.insideOut;
+  refusal["time"] = trial.time;
+  doc_["inside_out_refusals"].push_back(refusal);
+}
+
+void RunReport::restored(const nlohmann::json &summary, int step, double t) {
+  doc_ = summary;
+  if (!doc_.contains("restarts")) doc_["restarts"] = nlohmann::json::array();
+  doc_["restarts"].push_back({{"after_step", step}, {"time", t}});
+}
+
+void RunReport::finish(const AssemblyCounters &counters, double t, const nlohmann::json &finalDisplacement) {
+  doc_["final_displacement"] = finalDisplacement;
+  doc_["final_time"] = t;
+  doc_["converged"] = failure_.empty();
+  doc_["running"] = false;
+  if (stoppedBy_ != 0) doc_["interrupted"] = signalName(stoppedBy_);
+  if (!failure_.empty()) doc_["failure"] = failure_;
+  write(counters);
+  if (failure_.empty() && talk_) std::printf("glossa: done in %.2f s; results in %s\n", since(start_), dir_.c_str());
+  // Why a run stopped goes to stderr, also with --quiet: a script must see it.
+  if (!failure_.empty() && root_)
+    std::fprintf(stderr, "glossa: stopped: %s; results so far in %s\n", failure_.c_str(), dir_.c_str());
+}
+
+} // namespace glossa::solvers

@@ -1,0 +1,101 @@
+#pragma once
+// What a run says about itself: summary.json (the run's description, a record per committed
+// step, the warnings, the timers, how it ended), the console's lines, and the stop signals
+// (SIGTERM, SIGINT), on which summary.json says at once why the run ends and the run stops at
+// the next step boundary on every rank.
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include "solvers/run/StepState.hpp"
+
+namespace glossa::assembly {
+class ModelEvaluator;
+}
+namespace glossa::io {
+class SummaryWriter;
+}
+
+namespace glossa::solvers {
+
+// Creates the output directory and removes an earlier run's files from it (a controlled run's
+// activation.csv must not stand beside a later passive run's traces). Rank 0 only.
+void prepareOutputDirectory(const std::filesystem::path &dir);
+
+// 42 s, 3 min 05 s, 2 h 07 min: a duration as a person reads it.
+std::string readableDuration(double seconds);
+
+// The model evaluator's counters for the summary (element passes NOX asked for, assembly time).
+struct AssemblyCounters {
+  double assemblySeconds = 0.0;
+  int residualEvaluations = 0, tangentEvaluations = 0, tangentsFromResidualPass = 0, residualOnlyPasses = 0;
+};
+AssemblyCounters assemblyCounters(const assembly::ModelEvaluator &model);
+
+class RunReport {
+public:
+  // `talk`: this rank prints (rank 0, not --quiet); `root`: it writes summary.json.
+  RunReport(Teuchos::RCP<const Teuchos::Comm<int>> comm, bool root, bool talk);
+  ~RunReport();
+
+  nlohmann::json &doc() { return doc_; }
+  bool talk() const { return talk_; }
+  void setDirectory(const std::filesystem::path &dir) { dir_ = dir; }
+  const std::filesystem::path &directory() const { return dir_; }
+  // A warning: in summary.json's warnings and on stderr (also with --quiet).
+  void warn(const std::string &text);
+
+  // Writes summary.json with the model's counters and the timers so far. Collective.
+  void write(const AssemblyCounters &counters);
+  // Held over a commit's whole output, so that an interrupted summary.json never lags a step
+  // behind traces.csv.
+  std::unique_lock<std::recursive_mutex> holdOutput() { return std::unique_lock<std::recursive_mutex>(mutex_); }
+
+  // From here a stop signal ends the run at the next step boundary; the time steps begin at t.
+  void beginSteps(double t);
+  // A stop signal reached some rank: every rank agrees, and the reason is recorded. Collective.
+  bool stopRequested(int step, double t);
+  int stoppedBy() const { return stoppedBy_; }
+  const std::string &failure() const { return failure_; }
+  bool converged() const { return failure_.empty(); }
+  void fail(const std::string &why) { failure_ = why; }
+
+  // The summary's record of a committed step (its reactions and activation given), and its line.
+  void addStep(const StepTrial &trial, double t, bool onPath, double assemblySeconds, nlohmann::json step);
+  void stepLine(int step, double t, double endTime, double dt, const UzawaResult &r, bool onPath,
+                const std::string &controlLine) const;
+  // A refused trial: its line, and where it was inside out.
+  void stepRefused(const StepTrial &trial);
+  // A restart's summary so far, with the restart recorded.
+  void restored(const nlohmann::json &summary, int step, double t);
+  // The end: the final displacements, how it ended, and where the results are. Collective.
+  void finish(const AssemblyCounters &counters, double t, const nlohmann::json &finalDisplacement);
+
+private:
+  void interrupted(int signal); // on the signal watcher thread (rank 0)
+
+  using Clock = std::chrono::steady_clock;
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  bool root_, talk_;
+  Clock::time_point start_, stepsStart_;
+  double stepsStartTime_ = 0.0;         // the simulated time when the steps began (a restart's)
+  double setupAtStart_, solveAtStart_; // NOX's timers when the run began
+  std::filesystem::path dir_;
+  nlohmann::json doc_;
+  std::unique_ptr<io::SummaryWriter> summary_;
+  // summary_ and interruptedBy_, shared with the signal watcher.
+  std::recursive_mutex mutex_;
+  int interruptedBy_ = 0; // the stop signal, once received
+  int stoppedBy_ = 0;     // the signal the run loop stopped for (every rank)
+  std::string failure_;
+};
+
+} // namespace glossa::solvers

@@ -1,0 +1,216 @@
+#include "solvers/run/RunSetup.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "assembly/Assembler.hpp"
+#include "assembly/ModelEvaluator.hpp"
+#include "input/SceneFactory.hpp"
+#include "io/deck/DeckError.hpp"
+#include "model/Scene.hpp"
+#include "solvers/control/CommControlGroups.hpp"
+#include "solvers/incompressibility/UzawaLoop.hpp"
+#include "solvers/linear/MixedBlockSolver.hpp"
+#include "solvers/nonlinear/NewtonSolver.hpp"
+#include "solvers/parameters/RunChecks.hpp"
+
+namespace glossa::solvers {
+
+RunParts::~RunParts() = default;
+
+StepSolverParts RunParts::stepSolverParts() const { return {*assembler, *model, *newton, *uzawa, *history}; }
+
+namespace {
+// The scene, each tissue's volumetric law kept physical for the Uzawa loop while the tangent's
+// gets its kappa_t.
+void buildScene(const io::Deck &deck, RunParts &run) {
+  run.scene = std::make_unique<model::Scene>(input::buildScene(deck, run.config.time.steps.endTime));
+  if (run.options.adjustScene) run.options.adjustScene(*run.scene);
+  for (auto &tissue : run.scene->tissues) {
+    run.physicalVolumetric.push_back(tissue.volumetric);
+    tissue.volumetric = tissue.volumetric.withKappa(UzawaLoop::tangentKappa(
+        run.config.incompressibility, tissue.volumetric.kappa(), tissue.matrix->shearModulus()));
+  }
+}
+
+ArcLengthSettings arcLengthSettings(const RunConfiguration &config, const assembly::Assembler &assembler) {
+  ArcLengthSettings s;
+  s.endTime = config.time.steps.endTime;
+  s.stepSize = std::min(config.time.steps.nominal, s.endTime);
+  s.minimumStepSize = config.time.steps.minimum;
+  s.maximumSteps = config.time.arcLengthSteps;
+  s.stopAtDisplacement = config.time.stopAtDisplacement;
+  s.maximumNewtonIterations = config.newton.maximumIterations;
+  // Relative to the load at the end time: the path's loads are fractions of it.
+  const double reference = assembler.externalForceNorm(s.endTime);
+  s.residualTolerance = config.newton.residualTolerance * (reference > 0.0 ? reference : 1.0);
+  s.linearTolerance = config.linear.tolerance;
+  return s;
+}
+
+// The assembly, the model evaluator with its linear solver, Newton and the Uzawa loop, on the
+// control group's communicator; the control points are the model's response (their
+// sensitivities to the neural inputs).
+void buildSolvers(RunParts &run) {
+  const RunConfiguration &config = run.config;
+  model::Scene &scene = *run.scene;
+  const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = run.groups->groupComm();
+  assembly::DofLayout layout = assembly::distributeScene(scene, solverComm);
+  run.history = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
+  run.assembler = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *run.history, solverComm));
+  LinearSolverContext context{run.assembler->coordinates(), run.assembler->rigidBodyModes(), solverComm->getSize(),
+                              run.assembler->layout().numGlobalDofs(), scene.symmetricTangent};
+  Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
+  if (config.incompressibility.method == IncompressibilityMethod::mixed)
+    mixedPressure = Teuchos::rcp(
+        new assembly::MixedPressureState(run.physicalVolumetric[0], scene.tissues[0].matrix->shearModulus()));
+  run.linearPlan = planLinearSolver(config.linear, context, !mixedPressure.is_null());
+  run.model = Teuchos::rcp(new assembly::ModelEvaluator(
+      run.assembler, mixedPressure.is_null() ? buildLinearSolver(config.linear, context)
+                                             : buildMixedBlockSolver(config.linear, context, mixedPressure),
+      run.history.get(), run.control.enabled ? run.control.pointNodes : std::vector<mesh::NodeId>{}));
+  run.model->setMixedPressure(mixedPressure);
+  double lengthScale = 0.0; // the largest |X| of the mesh
+  for (const auto &x : scene.mesh.nodes) lengthScale = std::max(lengthScale, x.norm());
+  run.newton = std::make_unique<NewtonSolver>(run.model, config.newton, lengthScale, config.linear.tolerance,
+                                              run.linearPlan.keptScope != ReuseScope::newtonSolve);
+  run.uzawa = std::make_unique<UzawaLoop>(*run.assembler, *run.newton, config.incompressibility, run.physicalVolumetric);
+  // A raised kappa_AL reaches the tangent through the tissue's volumetric law (the Assembler's).
+  run.uzawa->onKappaRaised([&run](std::size_t tissue, double kappaT) {
+    model::Tissue &t = run.scene->tissues[tissue];
+    t.volumetric = t.volumetric.withKappa(kappaT);
+    if (run.talk)
+      std::printf("  note: the Uzawa loop contracts slowly in tissue '%s': kappa_AL raised to %.3g mu for the rest of "
+                  "the run\n", t.name.c_str(), run.uzawa->penaltyRatios()[tissue]);
+  });
+  // Every candidate of a controlled step must see the same kappa_AL.
+  if (run.control.enabled) run.uzawa->allowKappaRaises(false);
+  const bool onPath = config.time.pathFollowing == PathFollowing::arcLength;
+  if (onPath || config.time.atLimitPoint == AtLimitPoint::follow)
+    run.arcLength = std::make_unique<ArcLengthSettings>(arcLengthSettings(config, *run.assembler));
+  run.solver = std::make_unique<StepSolver>(run.stepSolverParts(), scene, run.linearPlan.keptScope, run.detail);
+  if (mixedPressure.is_null() && !onPath && config.time.atLimitPoint != AtLimitPoint::ignore)
+    run.watch = std::make_unique<PathWatch>(*run.assembler, *run.model, *run.newton, config.time.steps.nominal,
+                                            config.time.limitPointTolerance, run.talk);
+}
+
+// What summary.json says of the run before its first step, and the console's first lines. The
+// summary's kappa/mu figures are the Material section's tissue's (tissues[0]).
+void describeRun(RunParts &run) {
+  const model::Scene &scene = *run.scene;
+  nlohmann::json &doc = run.report->doc();
+  const double mu = scene.tissues[0].matrix->shearModulus();
+  const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = run.groups->groupComm();
+  doc["linear_solver"] = run.linearPlan.description; // what Linear solver/type = auto chose
+  for (const std::string &warning : ignoredIterativeSettings(run.config, run.linearPlan.direct,
+                                                             run.assembler->layout().numGlobalDofs()))
+    run.report->warn(warning);
+  doc["deck"] = run.config.deckFile;
+  doc["converged"] = false;
+  doc["running"] = true;
+  doc["ranks"] = run.comm->getSize();
+  doc["control_groups"] = run.options.controlGroups;
+  // The partition's balance (per rank of a control group).
+  std::vector<double> mine(solverComm->getSize(), 0.0), all(mine.size(), 0.0);
+  mine[solverComm->getRank()] = static_cast<double>(run.assembler->numLocalElements());
+  Teuchos::reduceAll(*solverComm, Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(), all.data());
+  doc["elements_per_rank"] = all;
+  doc["partitioner"] = scene.partitioner == model::Partitioner::coordinateBisection ? "coordinate bisection"
+                       : scene.partitioner == model::Partitioner::zoltan2Rcb        ? "Zoltan2 RCB"
+                                                                                     : "Zoltan2 multijagged";
+  doc["dofs"] = run.assembler->layout().numGlobalDofs();
+  doc["elements"] = scene.mesh.numElements();
+  doc["incompressibility"] = methodName(run.config.incompressibility.method);
+  doc["kappa_tangent"] = scene.tissues[0].volumetric.kappa();
+  doc["kappa_over_mu"] = scene.tissues[0].volumetric.kappa() / mu;
+  doc["kappa_physical_over_mu"] = run.physicalVolumetric[0].kappa() / mu; // inf is written as null
+  doc["tissues"] = nlohmann::json::array();
+  for (std::size_t t = 0; t < scene.tissues.size(); ++t) {
+    const auto &tissue = scene.tissues[t];
+    const auto elements = scene.elementTissue.empty()
+                              ? scene.mesh.numElements()
+                              : static_cast<std::size_t>(std::count(scene.elementTissue.begin(), scene.elementTissue.end(), static_cast<int>(t)));
+    doc["tissues"].push_back({{"name", tissue.name}, {"elements", elements}, {"mu", tissue.matrix->shearModulus()},
+                              {"kappa_physical", run.physicalVolumetric[t].kappa()}, {"kappa_tangent", tissue.volumetric.kappa()},
+                              {"density", tissue.density}});
+  }
+  if (run.uzawa->augmentedLagrangian())
+    doc["kappa_AL_over_mu"] = UzawaLoop::augmentationKappa(run.config.incompressibility, mu) / mu;
+  doc["steps"] = nlohmann::json::array();
+  if (run.talk)
+    std::printf("glossa: %s  %zu elements  %lld dofs  %d rank(s)  %s (kappa/mu = %.3g)\n", run.config.deckFile.c_str(),
+                scene.mesh.numElements(), static_cast<long long>(run.assembler->layout().numGlobalDofs()),
+                run.comm->getSize(), methodName(run.config.incompressibility.method), scene.tissues[0].volumetric.kappa() / mu);
+  if (run.talk)
+    for (const std::string &note : scene.meshNotes) std::printf("glossa: note: %s\n", note.c_str());
+}
+
+// Where the results go: a new run's directory cleared of an earlier run's files, or a restart's
+// with its checkpoint read (a bad deck has been refused before either).
+std::filesystem::path outputDirectory(RunParts &run) {
+  const RunOptions &options = run.options;
+  std::filesystem::path dir =
+      options.outputDirectory.empty() ? std::filesystem::path(run.config.output.directory) : options.outputDirectory;
+  if (!options.restartDirectory.empty()) {
+    if (!options.outputDirectory.empty())
+      throw io::DeckError("--restart continues in the directory it names; leave out --output");
+    dir = options.restartDirectory;
+    run.restart = RunCheckpoint::read(dir, *run.comm, run.config.listing, options.controlGroups);
+  }
+  if (run.root && !run.restart) prepareOutputDirectory(dir);
+  run.comm->barrier();
+  return dir;
+}
+} // namespace
+
+std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
+                                   const RunOptions &options) {
+  auto run = std::make_unique<RunParts>();
+  run->config = parseRunConfiguration(deck);
+  run->options = options;
+  run->comm = comm;
+  run->root = comm->getRank() == 0;
+  run->talk = run->root && !options.quiet;
+  run->detail = run->talk && options.verbose;
+  run->report = std::make_unique<RunReport>(comm, run->root, run->talk);
+  checkControlGroupCount(options.controlGroups, comm->getSize());
+  buildScene(deck, *run);
+  // Control groups: the world splits into G groups of equal size, each with its own copy of the
+  // whole solver on a sub-communicator (every group steps the same committed state; GA
+  // candidates are dealt out among the groups and the winner's state is broadcast).
+  run->groups = std::make_unique<CommControlGroups>(comm, options.controlGroups);
+  run->control = buildControl(deck, *run->scene);
+  checkRunConfiguration(deck, run->config, *run->scene, run->control,
+                        {comm->getSize(), options.controlGroups, !options.restartDirectory.empty()});
+  buildSolvers(*run);
+
+  const std::filesystem::path dir = outputDirectory(*run);
+  run->report->setDirectory(dir);
+  const OutputParameters &output = run->config.output;
+  run->recorder = std::make_unique<StepRecorder>(*run->assembler, dir, output.fields, run->root, output.resultantFaceSets,
+                                                 output.volumeFaceSets, run->restart ? &run->restart->outputs : nullptr);
+  // None on an arc-length path (its direction and step are LOCA's own state).
+  run->checkpoints = std::make_unique<RunCheckpoint>(dir, comm, output.checkpointEvery);
+  describeRun(*run);
+
+  // auto: not with the penalty method, whose kappa (5000 mu at nu = 0.4999) multiplies the volume
+  // error of an extrapolated displacement into its pressures (doc/theory.md, bench/README.md).
+  const Predictor predictor = run->config.time.predictor;
+  const bool extrapolate = predictor == Predictor::linearExtrapolation ||
+                           (predictor == Predictor::automatic &&
+                            run->config.incompressibility.method != IncompressibilityMethod::penalty);
+  run->stepper = std::make_unique<LoadStepper>(
+      run->config.time.steps, extrapolate, StepState(run->assembler->ownedMap(), run->assembler->numLocalElements()));
+  if (run->control.enabled) {
+    std::optional<std::uintmax_t> resumeAt;
+    if (run->restart && run->restart->outputs.csvBytes.count("controls.csv"))
+      resumeAt = run->restart->outputs.csvBytes.at("controls.csv");
+    run->controlled = std::make_unique<ControlledSteps>(run->control, run->stepSolverParts(), *run->solver, *run->stepper,
+                                                        *run->groups, dir, resumeAt, run->root, run->detail);
+  }
+  return run;
+}
+
+} // namespace glossa::solvers

@@ -1,0 +1,60 @@
+#pragma once
+// One load step's solve and the checks its converged state must pass: the Uzawa loop of Newton
+// solves at the step's time (UzawaLoop), the muscle history at the converged state, the smallest
+// corner det F (reported), and the refusal of a state that has passed through a symmetry plane.
+
+#include <vector>
+
+#include "solvers/linear/LinearSolverFactory.hpp"
+#include "solvers/run/StepState.hpp"
+
+namespace glossa::assembly {
+class Assembler;
+class ModelEvaluator;
+} // namespace glossa::assembly
+namespace glossa::model {
+class MuscleHistory;
+struct Scene;
+struct SymmetryPlane;
+} // namespace glossa::model
+
+namespace glossa::solvers {
+
+class NewtonSolver;
+class UzawaLoop;
+
+// The solver stack a step solve drives (owned by the run's set-up).
+struct StepSolverParts {
+  const assembly::Assembler &assembler;
+  assembly::ModelEvaluator &model;
+  NewtonSolver &newton;
+  const UzawaLoop &uzawa;
+  model::MuscleHistory &history;
+};
+
+class StepSolver {
+public:
+  // `keptScope`: how long Newton keeps its linear solver (a step's: forgotten before each
+  // solve). `progress`: a line per Newton and Uzawa iteration on the console.
+  StepSolver(const StepSolverParts &parts, const model::Scene &scene, ReuseScope keptScope, bool progress);
+  ~StepSolver();
+
+  // Solves from `state` (the start on entry) to `time` into `state`; the muscle history's trial
+  // values are this step's. `quiet`: no per-iteration output (a controller's candidates). Collective.
+  StepAttempt solve(double time, double dt, StepState &state, bool quiet) const;
+  // A converged state in which material has crossed a symmetry plane is refused
+  // (model/SymmetryPlanes.hpp): `attempt` then fails, saying where. Collective.
+  void refuseInsideOut(const StepState &state, StepAttempt &attempt) const;
+  // The corner checks of a converged state (Assembler::worstCorner) into `attempt`. Collective.
+  void measureCorners(const StepState &state, StepAttempt &attempt) const;
+
+private:
+  StepSolverParts parts_;
+  const model::Scene &scene_;
+  ReuseScope keptScope_;
+  bool progress_;
+  std::vector<model::SymmetryPlane> planes_;
+  double lengthScale_ = 0.0; // the largest |X| of the mesh
+};
+
+} // namespace glossa::solvers

@@ -1,0 +1,142 @@
+// The run's report without a run: a committed step's record in summary.json, a refused step's
+// inside-out record, how the end is told (converged, or the failure and its reason), and a stop
+// signal agreed by every rank and written into the summary by the watcher at once.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <fstream>
+
+#include <Tpetra_Core.hpp>
+
+#include "ScratchDirectory.hpp"
+#include "solvers/run/RunReport.hpp"
+
+using namespace glossa;
+using namespace glossa::solvers;
+
+namespace {
+Teuchos::RCP<const assembly::Map> map() {
+  static const auto m = Teuchos::rcp(new assembly::Map(4, 0, Tpetra::getDefaultComm()));
+  return m;
+}
+
+nlohmann::json readSummary(const std::filesystem::path &dir) {
+  std::ifstream in(dir / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
+StepTrial trialTo(double time, double dt) {
+  StepTrial trial(time, dt, 0.5, StepState(map(), 2));
+  UzawaResult &r = trial.attempt.uzawa;
+  r.newtonIterations = 5;
+  r.linearIterations = 40;
+  r.solves = 2;
+  r.dilatation.max = 3e-4;
+  r.dilatation.mean = 1e-4;
+  NewtonResult n;
+  n.residualNorms = {1.0, 1e-3, 1e-9};
+  n.linearIterationsPerStep = {20, 20};
+  r.newton = {n};
+  trial.attempt.minCornerJ = 0.7;
+  trial.attempt.minRegularCornerJ = 0.8;
+  return trial;
+}
+
+bool root() { return Tpetra::getDefaultComm()->getRank() == 0; }
+} // namespace
+
+TEST(RunReport, AStepsRecordCarriesItsSolveStatistics) {
+  io::testing::ScratchDirectory dir;
+  RunReport report(Tpetra::getDefaultComm(), root(), false);
+  report.setDirectory(dir.path());
+  report.addStep(trialTo(0.5, 0.25), 0.5, false, 2.0, {{"reactions", nlohmann::json::object()}});
+  report.write({2.0, 7, 3, 2, 1});
+  if (!root()) return;
+  const nlohmann::json summary = readSummary(dir.path());
+  ASSERT_EQ(summary["steps"].size(), 1u);
+  const nlohmann::json &step = summary["steps"][0];
+  EXPECT_EQ(step["time"], 0.5);
+  EXPECT_EQ(step["dt"], 0.25);
+  EXPECT_EQ(step["newton_iterations"], 5);
+  EXPECT_EQ(step["linear_iterations"], 40);
+  EXPECT_EQ(step["uzawa_iterations"], 2);
+  EXPECT_EQ(step["max_dilatation_error"], 3e-4);
+  EXPECT_EQ(step["min_corner_J"], 0.7);
+  EXPECT_EQ(step["assembly_seconds"], 1.5); // since the trial began
+  EXPECT_FALSE(step.contains("path_stiffness"));  // not measured
+  EXPECT_EQ(step["newton_solves"][0]["residual_norms"].size(), 3u);
+  EXPECT_TRUE(step.contains("reactions"));
+  EXPECT_EQ(summary["residual_evaluations"], 7);
+  EXPECT_EQ(summary["tangents_from_residual_pass"], 2);
+}
+
+TEST(RunReport, OnAnArcLengthPathTheKrylovCountIsNotClaimed) {
+  io::testing::ScratchDirectory dir;
+  RunReport report(Tpetra::getDefaultComm(), root(), false);
+  report.setDirectory(dir.path());
+  report.addStep(trialTo(0.5, 0.25), 0.5, true, 0.0, {});
+  EXPECT_FALSE(report.doc()["steps"][0].contains("linear_iterations"));
+}
+
+TEST(RunReport, ARefusedInsideOutStepIsRecordedWithItsTime) {
+  RunReport report(Tpetra::getDefaultComm(), root(), false);
+  StepTrial trial = trialTo(0.75, 0.25);
+  trial.attempt.why = "inside out";
+  trial.attempt.insideOut = {{"condition", "symmetry x"}, {"node", 12}, {"distance", 1e-3}};
+  report.stepRefused(trial);
+  report.stepRefused(trialTo(0.75, 0.25)); // an ordinary failure adds nothing
+  ASSERT_EQ(report.doc()["inside_out_refusals"].size(), 1u);
+  EXPECT_EQ(report.doc()["inside_out_refusals"][0]["time"], 0.75);
+  EXPECT_EQ(report.doc()["inside_out_refusals"][0]["node"], 12);
+}
+
+TEST(RunReport, TheEndSaysWhetherTheRunConvergedAndWhy) {
+  io::testing::ScratchDirectory dir;
+  {
+    RunReport report(Tpetra::getDefaultComm(), root(), false);
+    report.setDirectory(dir.path());
+    report.finish({}, 1.0, {{"tip", {0.0, 0.0, -1e-3}}});
+    EXPECT_TRUE(report.converged());
+    if (root()) {
+      const nlohmann::json summary = readSummary(dir.path());
+      EXPECT_EQ(summary["converged"], true);
+      EXPECT_EQ(summary["running"], false);
+      EXPECT_EQ(summary["final_time"], 1.0);
+      EXPECT_EQ(summary["final_displacement"]["tip"][2], -1e-3);
+      EXPECT_FALSE(summary.contains("failure"));
+    }
+  }
+  RunReport report(Tpetra::getDefaultComm(), root(), false);
+  report.setDirectory(dir.path());
+  report.fail("step to t = 0.5 failed (Newton did not converge) below the minimum step size");
+  report.finish({}, 0.25, nlohmann::json::object());
+  if (!root()) return;
+  const nlohmann::json summary = readSummary(dir.path());
+  EXPECT_EQ(summary["converged"], false);
+  EXPECT_EQ(summary["final_time"], 0.25);
+  EXPECT_EQ(summary["failure"], "step to t = 0.5 failed (Newton did not converge) below the minimum step size");
+}
+
+TEST(RunReport, AStopSignalIsAgreedAndWrittenAtOnce) {
+  io::testing::ScratchDirectory dir;
+  RunReport report(Tpetra::getDefaultComm(), root(), false);
+  report.setDirectory(dir.path());
+  report.addStep(trialTo(0.25, 0.25), 0.25, false, 0.0, {});
+  report.write({});
+  report.beginSteps(0.25);
+  EXPECT_FALSE(report.stopRequested(1, 0.25));
+  if (root()) std::raise(SIGTERM); // one rank's signal: every rank must stop
+  EXPECT_TRUE(report.stopRequested(1, 0.25));
+  EXPECT_EQ(report.stoppedBy(), SIGTERM);
+  EXPECT_EQ(report.failure().rfind("interrupted by SIGTERM after step 1", 0), 0u) << report.failure();
+  if (!root()) return;
+  // The watcher thread marks summary.json before the run loop reaches its next boundary.
+  nlohmann::json summary;
+  for (int k = 0; k < 200; ++k) {
+    summary = readSummary(dir.path());
+    if (summary.contains("interrupted")) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_EQ(summary["interrupted"], "SIGTERM");
+  EXPECT_EQ(summary["running"], false);
+}
