@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <chrono>
 #include <fstream>
+#include <thread>
 
 #include <Tpetra_Core.hpp>
 
