@@ -36,34 +36,31 @@ def blank_comments_and_strings(text):
     """The text with comments and the insides of string and character literals replaced by
     blanks; newlines (hence line numbers) are kept."""
     out, i, n = [], 0, len(text)
-    keep_newlines = lambda s: re.sub(r"[^\n]", " ", s)
+    blank = lambda s: re.sub(r"[^\n]", " ", s)
     while i < n:
-        c = text[i]
+        raw = re.match(r'R"([^()\\\s]{0,16})\(', text[i:i + 20]) if not re.match(r"\w", text[i - 1:i]) else None
         if text.startswith("//", i):
-            j = text.find("\n", i)
-            j = n if j < 0 else j
-            out.append(keep_newlines(text[i:j]))
-            i = j
+            end = text.find("\n", i)
+            end = n if end < 0 else end
+            out.append(blank(text[i:end]))
         elif text.startswith("/*", i):
-            j = text.find("*/", i + 2)
-            j = n if j < 0 else j + 2
-            out.append(keep_newlines(text[i:j]))
-            i = j
-        elif c == "R" and re.match(r'R"([^()\\\s]{0,16})\(', text[i:]) and not re.match(r"\w", text[i - 1:i]):
-            delimiter = re.match(r'R"([^()\\\s]{0,16})\(', text[i:]).group(1)
-            end = text.find(")" + delimiter + '"', i)
-            end = n if end < 0 else end + len(delimiter) + 2
-            out.append('R"' + keep_newlines(text[i + 2:end - 1]) + '"')
-            i = end
-        elif c == '"' or (c == "'" and not re.match(r"\w", text[i - 1:i])):
-            j = i + 1
-            while j < n and text[j] != c and text[j] != "\n":
-                j += 2 if text[j] == "\\" else 1
-            out.append(c + " " * (min(j, n) - i - 1) + (c if j < n and text[j] == c else ""))
-            i = j + 1 if j < n and text[j] == c else j
+            end = text.find("*/", i + 2)
+            end = n if end < 0 else end + 2
+            out.append(blank(text[i:end]))
+        elif raw:
+            end = text.find(")" + raw.group(1) + '"', i)
+            end = n if end < 0 else end + len(raw.group(1)) + 2
+            out.append('R"' + blank(text[i + 2:end - 1]) + '"')
+        elif text[i] == '"' or (text[i] == "'" and not re.match(r"\w", text[i - 1:i])):  # not 1'000
+            quote, end = text[i], i + 1
+            while end < n and text[end] not in (quote, "\n"):
+                end += 2 if text[end] == "\\" else 1
+            end = min(end + 1, n) if end < n and text[end] == quote else end
+            out.append(quote + blank(text[i + 1:end - 1]) + text[end - 1])
         else:
-            out.append(c)
-            i += 1
+            end = i + 1
+            out.append(text[i])
+        i = end
     return "".join(out)
 
 
@@ -80,15 +77,23 @@ def deck_declarations(files):
     return names, functions
 
 
+def either(words):
+    return "|".join(map(re.escape, sorted(words)))
+
+
+def deck_objects(names, functions):
+    """Patterns of an expression that is a Deck: a Deck's name, or a call of a function that
+    returns one."""
+    objects = [r"\b(?:%s)" % either(names)] if names else []
+    if functions:
+        objects.append(r"\b(?:%s)\s*\([^;(){}]*\)" % either(functions))
+    return objects
+
+
 def deck_calls(code, names, functions):
     """(offset of the method's name, text) of each root(), given( or where( called on a Deck."""
-    either = lambda words: "|".join(map(re.escape, sorted(words)))
-    patterns = []
-    if names:
-        patterns.append(r"\b(?:%s)\s*(?:\.|->)\s*(?P<method>root|given|where)\s*\(" % either(names))
-    if functions:
-        patterns.append(r"\b(?:%s)\s*\([^;(){}]*\)\s*(?:\.|->)\s*(?P<method>root|given|where)\s*\(" % either(functions))
-    patterns.append(r"(?:\.|->)\s*(?P<method>given|where)\s*\(\s*\{")
+    patterns = [obj + r"\s*(?:\.|->)\s*(?P<method>root|given|where)\s*\(" for obj in deck_objects(names, functions)]
+    patterns.append(r"(?:\.|->)\s*(?P<method>given|where)\s*\(\s*\{")  # Deck's braced path, on anything
     calls = {}
     for pattern in patterns:
         for m in re.finditer(pattern, code):
@@ -99,12 +104,7 @@ def deck_calls(code, names, functions):
 def bound_to_deck(code, names, functions):
     """Names bound (by `=`) to the deck's list or one of its sublists: to root() of a Deck, or to
     such a name, followed by nothing but sublist(...) calls."""
-    either = lambda words: "|".join(map(re.escape, sorted(words)))
-    roots = []
-    if names:
-        roots.append(r"\b(?:%s)\s*(?:\.|->)\s*root\s*\(\s*\)" % either(names))
-    if functions:
-        roots.append(r"\b(?:%s)\s*\([^;(){}]*\)\s*(?:\.|->)\s*root\s*\(\s*\)" % either(functions))
+    roots = [obj + r"\s*(?:\.|->)\s*root\s*\(\s*\)" for obj in deck_objects(names, functions)]
     assignments = [(m.group(1), m.group(2)) for m in re.finditer(r"\b(\w+)\s*=(?!=)\s*([^;]*)", code)]
     bound = set()
     while True:
@@ -132,7 +132,7 @@ def deck_reads(code, names, functions):
     bound = bound_to_deck(code, names, functions)
     if bound:
         pattern = r"\b(?:%s)\s*(?:\.|->)\s*(?P<method>%s)\s*%s\s*\((?=\s*[^\s)])" % (
-            "|".join(map(re.escape, sorted(bound))), LIST_READS, TEMPLATE_ARGUMENTS)
+            either(bound), LIST_READS, TEMPLATE_ARGUMENTS)
         for m in re.finditer(pattern, code):
             found.setdefault(line_of(m.start("method")), call_text(m.group(0)))
     return sorted(found.items())
@@ -147,8 +147,8 @@ def main():
     folders = sys.argv[1:]
     files = {}
     for folder in folders:
-        for root, _, names in os.walk(folder):
-            for name in sorted(names):
+        for root, _, entries in os.walk(folder):
+            for name in sorted(entries):
                 if name.endswith(SOURCE_SUFFIXES):
                     path = os.path.normpath(os.path.join(root, name))
                     with open(path, encoding="utf-8") as f:
