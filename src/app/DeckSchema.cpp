@@ -1,8 +1,8 @@
 #include "app/DeckSchema.hpp"
 
-#include "app/PointCommand.hpp"
-#include "app/ZeroStrainCommand.hpp"
+#include "input/PointParameters.hpp"
 #include "input/SceneFactory.hpp"
+#include "input/ZeroStrainParameters.hpp"
 #include "solvers/run/Simulation.hpp"
 
 namespace glossa::app {
@@ -11,8 +11,8 @@ Teuchos::ParameterList deckSchema() {
   Teuchos::ParameterList schema("Glossa");
   input::declareSceneParameters(schema);
   solvers::declareSolverParameters(schema);
-  schema.set("Point", pointParameters(), "the deformation path of glossa point (one material point)");
-  schema.set("Zero strain", zeroStrainParameters(),
+  schema.set("Point", input::pointParameters(), "the deformation path of glossa point (one material point)");
+  schema.set("Zero strain", input::zeroStrainParameters(),
              "glossa zero-strain: the zero-strain configuration under the deck's gravity (§8.1)");
   return schema;
 }

@@ -17,17 +17,14 @@
 
 #include <filesystem>
 
-#include <Teuchos_ParameterList.hpp>
-
 #include "io/deck/Deck.hpp"
+#include "solvers/parameters/TimeParameters.hpp"
 
 namespace glossa::app {
 
-Teuchos::ParameterList pointParameters();
-
-// `deck` validated against the schema. Throws io::DeckError for a deck the driver cannot use,
-// std::runtime_error if the point law fails along the path (naming the time and why).
-// Returns the number of rows written.
-int runPointDriver(const io::Deck &deck, const std::filesystem::path &csv);
+// `deck` validated against the schema, `time` its Time section. Throws io::DeckError for a deck
+// the driver cannot use, std::runtime_error if the point law fails along the path (naming the
+// time and why). Returns the number of rows written.
+int runPointDriver(const io::Deck &deck, const solvers::TimeParameters &time, const std::filesystem::path &csv);
 
 } // namespace glossa::app

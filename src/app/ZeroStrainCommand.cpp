@@ -4,12 +4,10 @@
 #include <cstdio>
 #include <fstream>
 
-#include "io/deck/DeckError.hpp"
-#include "io/deck/ParameterSpec.hpp"
-#include "mesh/ReferenceCoordinates.hpp"
 #include "input/SceneFactory.hpp"
+#include "input/ZeroStrainParameters.hpp"
+#include "mesh/ReferenceCoordinates.hpp"
 #include "solvers/run/Simulation.hpp"
-#include "solvers/parameters/TimeParameters.hpp"
 
 namespace glossa::app {
 
@@ -47,27 +45,8 @@ Distance distance(const std::vector<Eigen::Vector3d> &x, const std::vector<Eigen
   return d;
 }
 
-// glossa zero-strain maps the mesh as read (the imaged geometry) under the deck's gravity alone.
-void requireImagedGeometryUnderGravity(const io::Deck &deck, const model::Scene &imaged) {
-  if (!imaged.mesh.imagedNodes.empty())
-    throw io::DeckError(
-        deck.where({"Mesh", "reference coordinates file"}) +
-        ": glossa zero-strain starts from the mesh as read (the imaged geometry); leave it empty");
-  auto refuse = [&](const std::string &name, const std::string &kind) {
-    throw io::DeckError(deck.where({"Loads", name, "type"}) +
-                        ": glossa zero-strain needs a deck loaded by gravity alone (the configuration "
-                        "gravity maps onto the imaged geometry); '" + name + "' is a " + kind + " load");
-  };
-  for (const auto &l : imaged.tractions) refuse(l.name, "dead traction");
-  for (const auto &l : imaged.pressures) refuse(l.name, "follower pressure");
-  for (const auto &l : imaged.bodyForces)
-    if (!l.gravity) refuse(l.name, "body force");
-  if (imaged.bodyForces.empty())
-    throw io::DeckError(deck.where({"Loads"}) + ": glossa zero-strain needs at least one gravity load");
-}
-
 // The zero-strain reference coordinates to `output` and its report beside it (.json). Rank 0.
-void writeZeroStrain(const io::Deck &deck, const ZeroStrainParameters &z, const ZeroStrainResult &result,
+void writeZeroStrain(const io::Deck &deck, const input::ZeroStrainParameters &z, const ZeroStrainResult &result,
                      const std::vector<Eigen::Vector3d> &X, const std::filesystem::path &output, bool quiet) {
   char line[256];
   std::snprintf(line, sizeof line, "under the deck's gravity: max |x - X_img| = %.6e m, mean %.6e m",
@@ -85,7 +64,7 @@ void writeZeroStrain(const io::Deck &deck, const ZeroStrainParameters &z, const 
   report["iterations"] = result.iterations;
   report["solves"] = result.solves;
   report["mesh_size"] = result.meshSize;
-  if (z.method == ZeroStrainMethod::inverse)
+  if (z.method == input::ZeroStrainMethod::inverse)
     report["tolerance"] = result.tolerance;
   else
     report["gravity_factor"] = z.gravityFactor;
@@ -103,46 +82,17 @@ void writeZeroStrain(const io::Deck &deck, const ZeroStrainParameters &z, const 
 }
 }  // namespace
 
-Teuchos::ParameterList zeroStrainParameters() {
-  Teuchos::ParameterList p;
-  io::declareString(
-      p, "method", "inverse",
-      "glossa zero-strain: approximate (the paper, §8.1: the imaged geometry deformed by the "
-      "deck's gravity reversed and scaled by 'gravity factor') or inverse (fixed-point update of "
-      "the reference coordinates until the deck's gravity maps them onto the imaged geometry)",
-      {"approximate", "inverse"});
-  io::declareDouble(p, "gravity factor", 1.2, "",
-                    "approximate: the reversed gravity is this multiple of the deck's (the paper: 1.2)",
-                    io::Range::positive());
-  io::declareDouble(p, "tolerance", 1e-3, "",
-                    "inverse: stop when the largest nodal distance between the configuration under gravity "
-                    "and the imaged geometry is at most this multiple of the mean element edge",
-                    io::Range::positive());
-  io::declareInt(p, "maximum iterations", 10, "inverse: reference updates before giving up",
-                 io::Range::closed(1, 1000));
-  return p;
-}
-
-ZeroStrainParameters parseZeroStrainParameters(const Teuchos::ParameterList &z) {
-  ZeroStrainParameters p;
-  p.method = z.get<std::string>("method") == "approximate" ? ZeroStrainMethod::approximate : ZeroStrainMethod::inverse;
-  p.gravityFactor = z.get<double>("gravity factor");
-  p.tolerance = z.get<double>("tolerance");
-  p.maximumIterations = z.get<int>("maximum iterations");
-  return p;
-}
-
-ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
+ZeroStrainResult computeZeroStrain(const io::Deck &deck, const solvers::TimeParameters &time,
+                                   const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
                                    const std::filesystem::path &output, bool quiet) {
   const auto start = Clock::now();
   const bool root = comm->getRank() == 0;
-  const ZeroStrainParameters z = parseZeroStrainParameters(deck.root().sublist("Zero strain"));
+  const input::ZeroStrainParameters z = input::parseZeroStrainParameters(deck);
 
   ZeroStrainResult result;
-  result.method = z.method == ZeroStrainMethod::approximate ? "approximate" : "inverse";
-  const double endTime = solvers::parseTimeParameters(deck.root().sublist("Time")).steps.endTime;
-  const model::Scene imaged = input::buildScene(deck, endTime);
-  requireImagedGeometryUnderGravity(deck, imaged);
+  result.method = z.method == input::ZeroStrainMethod::approximate ? "approximate" : "inverse";
+  const model::Scene imaged = input::buildScene(deck, time.steps.endTime);
+  input::requireImagedGeometryUnderGravity(deck, imaged);
   const std::vector<Eigen::Vector3d> &Ximg = imaged.mesh.nodes;
   result.meshSize = meanEdgeLength(imaged.mesh);
   result.tolerance = z.tolerance * result.meshSize;
@@ -184,7 +134,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<cons
   };
 
   std::vector<Eigen::Vector3d> X = Ximg;
-  if (z.method == ZeroStrainMethod::approximate) {
+  if (z.method == input::ZeroStrainMethod::approximate) {
     // The deck's gravity reversed and scaled, on the imaged geometry.
     const auto [x, seconds] = forward(Ximg, -z.gravityFactor, "unload");
     record("unload", distance(x, Ximg), seconds);

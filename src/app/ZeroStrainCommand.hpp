@@ -11,27 +11,15 @@
 // approximate): no solver set-up is duplicated here and no deck is rewritten.
 
 #include <Teuchos_Comm.hpp>
-#include <Teuchos_ParameterList.hpp>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "io/deck/Deck.hpp"
+#include "solvers/parameters/TimeParameters.hpp"
 
 namespace glossa::app {
-
-// The deck section "Zero strain" (method, tolerance, maximum iterations, gravity factor),
-// declared and parsed once.
-Teuchos::ParameterList zeroStrainParameters();
-enum class ZeroStrainMethod { approximate, inverse };
-struct ZeroStrainParameters {
-  ZeroStrainMethod method = ZeroStrainMethod::inverse;
-  double gravityFactor = 1.2;    // approximate: the reversed gravity's multiple of the deck's
-  double tolerance = 1e-3;       // inverse: of the mean element edge
-  int maximumIterations = 10;    // inverse: reference updates
-};
-ZeroStrainParameters parseZeroStrainParameters(const Teuchos::ParameterList &section);
 
 struct ZeroStrainResult {
   std::string method;
@@ -47,12 +35,14 @@ struct ZeroStrainResult {
   std::vector<double> reference;  // the stored coordinates, 3 per node
 };
 
-// Computes the zero-strain configuration of a validated deck and writes it to `output` (the
+// Computes the zero-strain configuration of a validated deck (`time`: its Time section; the
+// method is its Zero strain section, input/ZeroStrainParameters.hpp) and writes it to `output` (the
 // coordinates file) and `output` with extension .json (the report); the forward runs' result
 // files go to `output` without extension + "_runs/". Collective. Throws io::DeckError for a
 // deck that does not fit (no gravity load, other loads, a reference coordinates file already
 // set) and std::runtime_error when a forward solve does not converge.
-ZeroStrainResult computeZeroStrain(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
+ZeroStrainResult computeZeroStrain(const io::Deck &deck, const solvers::TimeParameters &time,
+                                   const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
                                    const std::filesystem::path &output, bool quiet);
 
 }  // namespace glossa::app

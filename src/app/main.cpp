@@ -23,6 +23,7 @@
 #include "io/output/OutputError.hpp"
 #include "mesh/MeshError.hpp"
 #include "input/SceneFactory.hpp"
+#include "solvers/parameters/RunConfiguration.hpp"
 #include "solvers/run/Simulation.hpp"
 
 namespace {
@@ -216,7 +217,7 @@ int main(int argc, char **argv) {
       const auto deck = loadDeck(a, schema);
       if (root) {
         const std::string file = a.output.empty() ? "point.csv" : a.output;
-        const int rows = glossa::app::runPointDriver(deck, file);
+        const int rows = glossa::app::runPointDriver(deck, glossa::solvers::parseRunConfiguration(deck).time, file);
         std::cout << "wrote " << rows << " rows to " << file << '\n';
       }
       return 0;
@@ -224,8 +225,7 @@ int main(int argc, char **argv) {
     if (a.command == "validate") {
       const auto deck = loadDeck(a, schema);
       // Building the scene checks what needs the mesh too (set names, named points).
-      const auto scene =
-          glossa::input::buildScene(deck, glossa::solvers::parseTimeParameters(deck.root().sublist("Time")).steps.endTime);
+      const auto scene = glossa::input::buildScene(deck, glossa::solvers::parseRunConfiguration(deck).time.steps.endTime);
       if (root)
         for (const std::string &note : scene.meshNotes) std::fprintf(stderr, "glossa: note: %s\n", note.c_str());
       if (root) std::cout << deck.toXml();
@@ -237,7 +237,8 @@ int main(int argc, char **argv) {
       if (a.output.empty()) throw glossa::io::DeckError("glossa zero-strain needs --output FILE (the coordinates file)");
       const auto deck = loadDeck(a, schema);
       stage = Stage::Running;
-      const auto result = glossa::app::computeZeroStrain(deck, comm, a.output, a.quiet);
+      const auto result =
+          glossa::app::computeZeroStrain(deck, glossa::solvers::parseRunConfiguration(deck).time, comm, a.output, a.quiet);
       if (!result.converged && root)
         std::fprintf(stderr, "glossa: zero-strain: max distance %.3e m after %d iterations is above the tolerance %.3e m\n",
                      result.maxDistance, result.iterations, result.tolerance);

@@ -15,6 +15,7 @@
 #include "RunDeck.hpp"
 #include "app/PointCommand.hpp"
 #include "io/deck/DeckError.hpp"
+#include "solvers/parameters/RunConfiguration.hpp"
 
 using namespace glossa;
 
@@ -27,7 +28,7 @@ Table runPoint(const std::vector<std::string> &overrides, const std::string &tag
   for (const auto &o : overrides) deck.applyOverride(o, schema);
   deck.validate(schema);
   const auto file = test::scratchDirectory("point") / (tag + ".csv");
-  const int rows = app::runPointDriver(deck, file);
+  const int rows = app::runPointDriver(deck, solvers::parseRunConfiguration(deck).time, file);
   std::ifstream in(file);
   std::string line;
   std::getline(in, line);

@@ -18,6 +18,7 @@
 #include "mesh/MeshFile.hpp"
 #include "input/SceneFactory.hpp"
 #include "solvers/parameters/ControlSection.hpp"
+#include "solvers/parameters/RunConfiguration.hpp"
 
 namespace glossa::test {
 namespace {
@@ -69,7 +70,7 @@ app::ZeroStrainResult zeroStrain(const std::string &method, const std::filesyste
   for (const auto &o : kCheap) deck.applyOverride(o, schema);
   deck.applyOverride("Zero strain/method=" + method, schema);
   deck.validate(schema);
-  return app::computeZeroStrain(deck, Tpetra::getDefaultComm(), output, true);
+  return app::computeZeroStrain(deck, solvers::parseRunConfiguration(deck).time, Tpetra::getDefaultComm(), output, true);
 }
 
 TEST(ZeroStrain, InverseReturnsTheImagedGeometryTenTimesCloserThanTheApproximation) {

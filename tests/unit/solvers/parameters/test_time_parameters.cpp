@@ -1,0 +1,54 @@
+// The Time section's words parsed into enums, and its numbers into the step-size rule.
+#include <gtest/gtest.h>
+
+#include "DeckOnFile.hpp"
+#include "solvers/parameters/TimeParameters.hpp"
+
+namespace glossa::solvers {
+namespace {
+
+TimeParameters parsed(const std::vector<std::string> &overrides) {
+  Teuchos::ParameterList schema("Glossa");
+  schema.set("Time", timeParameters());
+  const io::Deck deck = test::deckOnFile("time.xml", "", schema, overrides);
+  return parseTimeParameters(deck.root().sublist("Time"));
+}
+
+TEST(TimeParameters, Defaults) {
+  const TimeParameters t = parsed({});
+  EXPECT_EQ(t.steps.endTime, 1.0);
+  EXPECT_EQ(t.steps.nominal, 0.1);
+  EXPECT_EQ(t.steps.minimum, 1e-6);
+  EXPECT_EQ(t.predictor, Predictor::automatic);
+  EXPECT_EQ(t.atLimitPoint, AtLimitPoint::stop);
+  EXPECT_EQ(t.limitPointTolerance, 0.01);
+  EXPECT_EQ(t.pathFollowing, PathFollowing::loadControl);
+  EXPECT_EQ(t.arcLengthSteps, 200);
+  EXPECT_EQ(t.stopAtDisplacement, 0.0);
+}
+
+TEST(TimeParameters, GivenValues) {
+  const TimeParameters t =
+      parsed({"Time/end time=3", "Time/step size=0.5", "Time/minimum step size=1e-3", "Time/predictor=linear extrapolation",
+              "Time/at a limit point=follow", "Time/limit point tolerance=0.05", "Time/path following=arc length",
+              "Time/arc length steps=40", "Time/stop at displacement=0.02"});
+  EXPECT_EQ(t.steps.endTime, 3.0);
+  EXPECT_EQ(t.steps.nominal, 0.5);
+  EXPECT_EQ(t.steps.minimum, 1e-3);
+  EXPECT_EQ(t.predictor, Predictor::linearExtrapolation);
+  EXPECT_EQ(t.atLimitPoint, AtLimitPoint::follow);
+  EXPECT_EQ(t.limitPointTolerance, 0.05);
+  EXPECT_EQ(t.pathFollowing, PathFollowing::arcLength);
+  EXPECT_EQ(t.arcLengthSteps, 40);
+  EXPECT_EQ(t.stopAtDisplacement, 0.02);
+}
+
+TEST(TimeParameters, EachWordOfPredictorAndLimitPoint) {
+  EXPECT_EQ(parsed({"Time/predictor=none"}).predictor, Predictor::none);
+  EXPECT_EQ(parsed({"Time/predictor=auto"}).predictor, Predictor::automatic);
+  EXPECT_EQ(parsed({"Time/at a limit point=ignore"}).atLimitPoint, AtLimitPoint::ignore);
+  EXPECT_EQ(parsed({"Time/at a limit point=stop"}).atLimitPoint, AtLimitPoint::stop);
+}
+
+} // namespace
+} // namespace glossa::solvers
