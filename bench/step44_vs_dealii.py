@@ -55,8 +55,8 @@ ANSWER_TOLERANCE = 0.005  # the same answer within 0.5 %
 CONFIGS = {
     "default": [],
     "iterative": ["Linear solver/type=iterative"],
-    # The defaults before 2026-12-03 (bench/LOG.md): the power-method eigenvalue estimate (50
-    # iterations) and the hierarchy rebuilt at every Newton solve (doc/incompressibility.md).
+    # The defaults before 2026-12-03: the power-method eigenvalue estimate (50 iterations) and the
+    # hierarchy rebuilt at every Newton solve (bench/LOG.md).
     "power-newton-scope": ["Linear solver/Chebyshev eigenvalue method=power",
                            "Linear solver/MueLu reuse scope=Newton solve"],
 }
