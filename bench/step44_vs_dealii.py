@@ -30,7 +30,7 @@ Appends to bench/results/step44_vs_dealii_runs.csv one row per run and one `medi
 configuration; with `--dealii run` also deal.II's own rows (config `deal.II`: its runs and their
 median; krylov = its CG iterations).  Every Glossa row carries deal.II's CPU and wall, where they come
 from (dealii_source: run, stored or given), deal.II's u_y and Glossa's u_y relative difference from it
-(asked: within 0.5 %), and the CPU speed-up.  A file with the older, shorter header is rewritten with
+(the target: within 0.5 %), and the CPU speed-up.  A file with the older, shorter header is rewritten with
 the new columns (empty, dealii_source = stored where a reference was used) before appending.  Prints a
 summary table at the end.  Run it on an otherwise quiet machine: CPU time is the fair measure, but
 cache contention with another job still inflates it.
