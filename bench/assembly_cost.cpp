@@ -1,6 +1,6 @@
 // One assembly (residual and tangent) of a deck's mesh against the element work it contains: the
-// same kernels with the same point laws over the same elements, nothing gathered (issue 19:
-// assembly per element within 1.5x of the kernel plus its point laws). The state is a smooth
+// same kernels with the same point laws over the same elements, nothing gathered (the
+// target: assembly per element within 1.5x of the kernel plus its point laws). The state is a smooth
 // shear, u = (0, s (x - x_min), 0) with s = 0.02, so that every point law (and every Hill fibre's local
 // contractile solve) does its real work.
 //

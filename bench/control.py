@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""GA against gradient controller on the §7.2 block (issue 5), run on demand:
+"""GA against gradient controller on the §7.2 block (doc/control.md), run on demand:
 
   /usr/bin/python3 bench/control.py [--end-time 1.25] [--ranks 1,2] [--glossa build/glossa]
 

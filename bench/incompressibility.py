@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""The incompressibility matrix (issue 8): nu x n x strategy on the step-44 block and on Cook's
-membrane, augmented Lagrangian with the material's physical kappa (nu = 0.5: exact).
+"""The incompressibility matrix (doc/incompressibility.md): nu x n x strategy on the step-44 block
+and on Cook's membrane, augmented Lagrangian with the material's physical kappa (nu = 0.5: exact).
 
   /usr/bin/python3 bench/incompressibility.py [--sizes 8,16] [--nus 0.3,...,0.5]
         [--strategies cheb3,sgs2,...] [--scenes block,cook] [--timeout 900] [--glossa PATH]
@@ -47,21 +47,22 @@ STRATEGIES = {
     "patch-inexact": ["Linear solver/MueLu smoother=vertex-patch", "Incompressibility/Uzawa acceleration=inexact"],
     "frosch": ["Linear solver/preconditioner=FROSch", "Incompressibility/Uzawa acceleration=inexact"],
     "cheb3-run": ["Linear solver/MueLu smoother=Chebyshev", "Linear solver/MueLu reuse scope=run"],
-    # The plain nested Uzawa loop against the inexact first solve (the default since issue 8).
+    # The plain nested Uzawa loop against the inexact first solve (the default).
     "cheb3-plain": ["Linear solver/MueLu smoother=Chebyshev", "Incompressibility/Uzawa acceleration=none"],
     "cheb3-inexact": ["Linear solver/MueLu smoother=Chebyshev", "Incompressibility/Uzawa acceleration=inexact"],
     "cheb6r100-inexact": ["Linear solver/MueLu smoother=Chebyshev", "Linear solver/smoother degree=6",
                           "Linear solver/Chebyshev eigenvalue ratio=100", "Incompressibility/Uzawa acceleration=inexact"],
-    # The default with kappa_AL = 30 mu instead of 100 mu (the Krylov-total ratio of issue 8); issue 19,
-    # the moonshot: smaller kappa_AL bound the tangent's volumetric modulus, kappa_t <= kappa_AL, so
-    # the linear solves stay alike from nu = 0.3 up; the Uzawa loop does the rest.
+    # The default with kappa_AL = 30 mu instead of 100 mu (the whole run's Krylov total within 3x of
+    # nu = 0.3's), and smaller ones for counts independent of nu and n: smaller kappa_AL bound the
+    # tangent's volumetric modulus, kappa_t <= kappa_AL, so the linear solves stay alike from
+    # nu = 0.3 up; the Uzawa loop does the rest.
     **{f"cheb6r100-inexact-kal{r}": ["Linear solver/MueLu smoother=Chebyshev", "Linear solver/smoother degree=6",
                                      "Linear solver/Chebyshev eigenvalue ratio=100",
                                      "Incompressibility/Uzawa acceleration=inexact",
                                      f"Incompressibility/penalty ratio={r}"] for r in (30, 10, 3)},
-    # Issue 8 (d): element pressures as unknowns, GMRES on the block system with Teko's block
-    # upper-triangular preconditioner (the default MueLu on K, C + M_p/mu on the Schur complement);
-    # no Uzawa loop at any nu, nu = 0.5 exactly.
+    # Incompressibility/method = mixed: element pressures as unknowns, GMRES on the block system with
+    # Teko's block upper-triangular preconditioner (the default MueLu on K, C + M_p/mu on the Schur
+    # complement); no Uzawa loop at any nu, nu = 0.5 exactly.
     "mixed": ["Incompressibility/method=mixed"],
     "sgs2-inexact": ["Linear solver/MueLu smoother=symmetric Gauss-Seidel", "Linear solver/smoother degree=2",
                      "Incompressibility/Uzawa acceleration=inexact"],

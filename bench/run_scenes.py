@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Time per step and per Newton iteration of every scene deck (issue 4), run on demand:
+"""Time per step and per Newton iteration of every scene deck, run on demand:
 
   /usr/bin/python3 bench/run_scenes.py [--repeats 3] [--ranks 1,2] [--glossa build/glossa] [--only 's7_1_*']
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The step-44 block at n elements per side, Glossa against deal.II step-44 (issues 8 and 19).
+"""The step-44 block at n elements per side, Glossa against deal.II step-44.
 
 Glossa: the block of inputs/verification/step44_block.xml with the augmented Lagrangian, run `--repeats`
 times per configuration on one rank (or `--ranks`), CPU time (user + system, from the child's rusage)
@@ -30,7 +30,7 @@ Appends to bench/results/step44_vs_dealii_runs.csv one row per run and one `medi
 configuration; with `--dealii run` also deal.II's own rows (config `deal.II`: its runs and their
 median; krylov = its CG iterations).  Every Glossa row carries deal.II's CPU and wall, where they come
 from (dealii_source: run, stored or given), deal.II's u_y and Glossa's u_y relative difference from it
-(issue 19: within 0.5 %), and the CPU speed-up.  A file with the older, shorter header is rewritten with
+(the target: within 0.5 %), and the CPU speed-up.  A file with the older, shorter header is rewritten with
 the new columns (empty, dealii_source = stored where a reference was used) before appending.  Prints a
 summary table at the end.  Run it on an otherwise quiet machine: CPU time is the fair measure, but
 cache contention with another job still inflates it.
@@ -51,18 +51,18 @@ RESULTS = os.path.join(ROOT, "bench", "results")
 DECK = os.path.join(ROOT, "inputs", "verification", "step44_block.xml")
 DEALII_SUMMARY = os.path.join(ROOT, "bench", "step44_dealii", "summarise_log.awk")
 DEALII_SCRIPT = os.path.join(ROOT, "bench", "step44_dealii", "run_step44.sh")
-ANSWER_TOLERANCE = 0.005  # issue 19: the same answer within 0.5 %
+ANSWER_TOLERANCE = 0.005  # the same answer within 0.5 %
 CONFIGS = {
     "default": [],
     "iterative": ["Linear solver/type=iterative"],
-    # The defaults before issue 19's last change: the power-method eigenvalue estimate (50
-    # iterations) and the hierarchy rebuilt at every Newton solve (doc/incompressibility.md).
+    # The defaults before 2026-12-03: the power-method eigenvalue estimate (50 iterations) and the
+    # hierarchy rebuilt at every Newton solve (bench/LOG.md).
     "power-newton-scope": ["Linear solver/Chebyshev eigenvalue method=power",
                            "Linear solver/MueLu reuse scope=Newton solve"],
 }
 FIELDS = ["n", "ranks", "config", "run", "newton", "krylov", "uzawa", "uy_top_centre_mm", "cpu_s", "wall_s",
           "assembly_s", "prec_setup_s", "krylov_s", "peak_mb", "dealii_cpu_s", "speedup_cpu",
-          # added for issue 19 (older rows leave them empty)
+          # added later (older rows leave them empty)
           "dealii_source", "dealii_wall_s", "dealii_uy_top_centre_mm", "uy_rel_diff"]
 
 
@@ -299,7 +299,7 @@ def main():
                          f"{uy:.6f}", f"{ref_uy:.6f}" if ref_uy is not None else "-",
                          (f"{100 * d:+.4f} %" + ("" if abs(d) <= ANSWER_TOLERANCE else " (!)")) if d is not None else "-"))
     if any(d is not None and abs(d) > ANSWER_TOLERANCE for *_, d in summary):
-        print(f"(!) u_y differs from deal.II's by more than {100 * ANSWER_TOLERANCE:g} % (issue 19)")
+        print(f"(!) u_y differs from deal.II's by more than {100 * ANSWER_TOLERANCE:g} %")
     print(f"rows appended to {path}")
 
 

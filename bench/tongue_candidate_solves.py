@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""What a controller's candidate solve costs on the tongue, one change at a time (issue 15), run
-on demand:
+"""What a controller's candidate solve costs on the tongue, one change at a time (doc/tongue.md,
+s8_5), run on demand:
 
   /usr/bin/python3 bench/tongue_candidate_solves.py [--glossa build/glossa] [--repeats 3]
                                                     [--end-time 0.9375] [--medium]

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """s8_2 mesh dependence of the tongue (paper Tables III-IV analogue) and the fine-tongue bench
-(issue 7), run on demand:
+(doc/tongue.md, s8_2), run on demand:
 
   /usr/bin/python3 bench/tongue_mesh_study.py [--glossa build/glossa] [--refines 0,1,2]
       [--fine-ranks 2] [--fine-decks D1,D2] [--timeout 720] [--workdir DIR] [--reuse] [--wait-for PATTERN]
@@ -90,7 +90,7 @@ def main():
     finest = max(args.refines)
     cases = [(d, r, 1) for r in sorted(args.refines) for d in DECKS]
     if args.fine_ranks > 1:
-        # gravity + pressure first: it is the issue's fine-tongue bench
+        # gravity + pressure first: it is the fine-tongue bench
         cases += [(d, finest, args.fine_ranks) for d in reversed(DECKS) if d in args.fine_decks]
     results = {}
     for deck, refine, ranks in cases:

@@ -1,5 +1,5 @@
 #pragma once
-// The gradient-based controller of a control step (issue 5, beyond the paper's GA): a projected,
+// The gradient-based controller of a control step (beyond the paper's GA; doc/control.md): a projected,
 // damped Gauss-Newton iteration on the continuous neural inputs u in [0, 1]^n of the evaluated
 // muscle groups. With r(u) the weighted offsets of the control points from their goals
 // (r_p = w_p (x_p - xbar_p), stacked, 3 per point) and S = dr/du from the converged tangent

@@ -1,5 +1,5 @@
 #pragma once
-// One control step (issue 5, paper §6.1): prune the muscle groups by their mean fibre stretch at
+// One control step (paper §6.1, doc/control.md): prune the muscle groups by their mean fibre stretch at
 // the committed state, search the inputs of the others (the elitist GA or the projected
 // Gauss-Newton controller of control/), each candidate a full step solve by the plant from the
 // committed state, and, with control groups, share the winner among them. The state of the

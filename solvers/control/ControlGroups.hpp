@@ -1,7 +1,8 @@
 #pragma once
-// The exchanges among control groups (issue 5) that the control driver makes: the ranks split
-// into groups, each solving some of a generation's candidates on its own sub-communicator. Every
-// rank must then see the same objectives, and the winning group's state must reach every group.
+// The exchanges among control groups (--control-groups, doc/control.md) that the control driver
+// makes: the ranks split into groups, each solving some of a generation's candidates on its own
+// sub-communicator. Every rank must then see the same objectives, and the winning group's state
+// must reach every group.
 // Abstract so that the driver tests without MPI; CommControlGroups is the Teuchos one.
 
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// What the control driver needs of the solver at a control step (issue 5), and no more: solve the
+// What the control driver needs of the solver at a control step, and no more: solve the
 // step from the committed state with given neural inputs, keep the state of the candidate that
 // beats every earlier one (so the winner is at hand when the search ends, without another
 // solve), the sensitivity of the control points to the inputs at that kept state, and the kept

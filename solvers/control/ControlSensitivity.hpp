@@ -1,7 +1,7 @@
 #pragma once
-// The sensitivity of the control points to the neural inputs at a converged step (issue 5,
-// gradient controller), from the model evaluator's derivatives: with f(x; p) = 0 the condensed
-// residual, g(x) the control points' displacements (response g0) and p the inputs (p2),
+// The sensitivity of the control points to the neural inputs at a converged step (the gradient
+// controller's, doc/control.md), from the model evaluator's derivatives: with f(x; p) = 0 the
+// condensed residual, g(x) the control points' displacements (response g0) and p the inputs (p2),
 //
 //   dg/dp = -DgDx W^{-1} DfDp,
 //
@@ -10,8 +10,8 @@
 // activations times d alpha / d u of the backward-Euler activation step (ActivationDynamics).
 // The augmented Lagrange multipliers (p1) are held fixed: with the tangent's kappa_t = kappa
 // kappa_AL / (kappa + kappa_AL) the volumetric response is that of kappa_t, a relative error of
-// order mu / kappa_AL (1 % at the default kappa_AL = 100 mu) which the controller's full solves
-// absorb.
+// order mu / kappa_AL (about 3 % at the default kappa_AL = 30 mu, which is never raised under a
+// controller) which the controller's full solves absorb.
 
 #include <vector>
 

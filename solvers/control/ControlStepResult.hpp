@@ -1,5 +1,5 @@
 #pragma once
-// What a control step decided (issue 5): the inputs, which groups were searched, the winner's
+// What a control step decided (doc/control.md): the inputs, which groups were searched, the winner's
 // objective and per-point errors, how much the search cost, and the winning solve's statistics.
 // It travels among control groups as a flat buffer of doubles (one broadcast from the winning
 // group's root), so it serialises to and from one, exactly.

@@ -7,7 +7,7 @@
 //   Lambda_0(t + dt) = Lambda*_n + dt / dt_n (Lambda*_n - Lambda*_(n-1)).
 // With it the first, inexact solve of a step often meets the dilatation tolerance already and the
 // multiplier update after it is skipped (UzawaLoop): on the step-44 block 4 Newton iterations per
-// step instead of 5 in most steps (doc/incompressibility.md).
+// step instead of 5 in most steps (bench/LOG.md, 2026-12-04 evening).
 //
 // Per local element; no Trilinos. Kept in checkpoints so that a restarted run predicts as the
 // uninterrupted one did.

@@ -1,5 +1,5 @@
 #pragma once
-// The linear solve of Incompressibility/method = mixed (issue 8, strategy d): NOX hands it the
+// The linear solve of Incompressibility/method = mixed (doc/incompressibility.md): NOX hands it the
 // model evaluator's blocked tangent over [u; p~] (assembly::MixedPressureState),
 //   [ K  B^T ] [du ]   [ b_u ]
 //   [ B  -C  ] [dp~] = [ b_p ],

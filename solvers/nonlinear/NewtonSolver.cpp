@@ -82,7 +82,7 @@ private:
 // ||x_k - x_(k-1)||_2 <= tolerance ||x_k||_2 + floor sqrt(N): the Newton update relative to the
 // whole field. NOX's weighted RMS norm weighs every component by its own size, so the unknowns
 // that hardly move (beside symmetry planes and supports) decided it and asked for one or two
-// Newton iterations per solve beyond the residual test (doc/incompressibility.md, issue 19).
+// Newton iterations per solve beyond the residual test (doc/incompressibility.md).
 double relativeUpdateBound(double tolerance, double floor, double xNorm, double length) {
   return tolerance * xNorm + floor * std::sqrt(length);
 }

@@ -48,7 +48,7 @@ public:
 
   // Solves K(u) x_j = b_j for every column of `rhs` with the tangent at u (the model's time and
   // Lambda, the three-field bases condensed exactly at u), one preconditioner for all columns,
-  // to the deck's linear tolerance: the sensitivities of a converged state (issue 5). Returns
+  // to the deck's linear tolerance: the sensitivities of a converged state (gradient control). Returns
   // the Krylov iterations; throws std::runtime_error if u is inadmissible or a solve fails.
   // `relativeTolerance` > 0 replaces the deck's linear tolerance (a caller that needs a few digits).
   int solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x,

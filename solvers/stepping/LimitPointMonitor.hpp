@@ -1,8 +1,9 @@
 #pragma once
-// Limit points of a load path (issue 17). Under load control a path with a maximum (the thick
-// sphere's pressure, a snap-through) has no equilibrium nearby past it, and before it Newton can
-// converge to the other, unstable branch within one step without a word. After each converged
-// step the tangent's stiffness along the path is measured (solvers/stepping/PathStiffness),
+// Limit points of a load path (doc/theory.md, "Limit points"). Under load control a path with a
+// maximum (the thick sphere's pressure, a snap-through) has no equilibrium nearby past it, and
+// before it Newton can converge to the other, unstable branch within one step without a word.
+// After each converged step the tangent's stiffness along the path is measured
+// (solvers/stepping/PathStiffness),
 //   s_k = u'^T K(u_k) u' / u'^T u',   u' = du/dt = -K^-1 df/dt,
 // and the monitor reports it relative to the first step's: the current stiffness parameter
 // S_k = s_k / s_1 (Bergan's, with the path tangent in place of the secant). S is 1 on a linear

@@ -196,7 +196,7 @@ Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const Quadratu
   // The pressure's nodal forces p g cancel against the deviatoric ones in the residual, so their
   // size belongs in the round-off scale too: with the mixed method (kappa = 0 here, the pressure
   // an unknown) the residual of a uniform active state is otherwise below its own round-off and
-  // Newton never stops (the isometric block at full activation, issue 17).
+  // Newton never stops (the isometric block at full activation, doc/incompressibility.md).
   r.forceScale = std::hypot(std::hypot(r.residual.norm(), volumetric.d2U(r.theta) * std::cbrt(V * V)),
                             r.pressure * g.norm());
   r.valid = true;

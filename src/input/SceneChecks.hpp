@@ -1,5 +1,5 @@
 #pragma once
-// The checks a scene passes before anything is assembled (issue 16), on the whole mesh on every
+// The checks a scene passes before anything is assembled (doc/meshes.md), on the whole mesh on every
 // rank, so that 1 and N ranks answer alike:
 //  - the mesh checks of mesh/MeshChecks.hpp, on the mesh as its file gives it (a zero-strain
 //    configuration replacing its coordinates is a computed deformation of it): duplicate

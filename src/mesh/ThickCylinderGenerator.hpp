@@ -1,5 +1,5 @@
 #pragma once
-// A quarter of a thick-walled cylinder (verification of follower pressure, issue 4): radii
+// A quarter of a thick-walled cylinder (verification of follower pressure, doc/loads.md): radii
 // [innerRadius, outerRadius], angle [0, pi/2] from +x towards +y, height [0, height] along z.
 // Cells are uniform in r, angle and z. Face and node sets: inner, outer, y0 (the plane y = 0),
 // x0 (the plane x = 0), zmin, zmax; element set "all"; named point "inner" at (innerRadius, 0, 0).

@@ -1,5 +1,5 @@
 #pragma once
-// Reference fibre directions per element for one fibre family (issue 3, item 2): a constant
+// Reference fibre directions per element for one fibre family (doc/materials.md): a constant
 // direction, a radial fan from a point (the genioglossus fans out from its mandibular
 // attachment), or vectors read from a file, per element or per node. Fibres are axial, so N and
 // -N are the same fibre: node vectors are aligned in sign before they are averaged over an
@@ -47,11 +47,11 @@ Eigen::Vector3d nearestSegmentDirection(const Polylines &polylines, const Eigen:
 std::vector<Eigen::Vector3d> polylineDirections(const mesh::HexMesh &mesh, const std::vector<mesh::ElementId> &elements,
                                                 const Polylines &polylines);
 
-// Per quadrature point (issue 7, item 3): for each element, the direction of the segment nearest
-// to each of its 8 Gauss points (the reference position x(xi_q) of fem::gaussHex2(), in that
-// order). An element a fibre bends through, or that lies between two fibres, then carries the
-// local direction at each point instead of one direction for all eight. Same sign convention and
-// errors as nearestSegmentDirection.
+// Per quadrature point (the tongue's polylines, doc/tongue.md): for each element, the direction of
+// the segment nearest to each of its 8 Gauss points (the reference position x(xi_q) of
+// fem::gaussHex2(), in that order). An element a fibre bends through, or that lies between two
+// fibres, then carries the local direction at each point instead of one direction for all eight.
+// Same sign convention and errors as nearestSegmentDirection.
 using PointDirections = std::array<Eigen::Vector3d, 8>;
 std::vector<PointDirections> polylinePointDirections(const mesh::HexMesh &mesh,
                                                      const std::vector<mesh::ElementId> &elements,

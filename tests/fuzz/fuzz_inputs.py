@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Fuzzing Glossa's inputs (issue 16): mutated decks and mesh files, each either accepted with
+"""Fuzzing Glossa's inputs: mutated decks and mesh files, each either accepted with
 exactly the value it holds or refused with a message; never a signal, a hang, a value silently
 changed, a Trilinos source path as the message, or a NaN in the output.
 

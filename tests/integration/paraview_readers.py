@@ -1,4 +1,4 @@
-"""ParaView reads Glossa's results as Glossa means them (issue 16). Run with Debian's pvpython
+"""ParaView reads Glossa's results as Glossa means them (doc/output.md). Run with Debian's pvpython
 under xvfb-run (its build renders through X):
 
   xvfb-run -a pvpython tests/integration/paraview_readers.py GLOSSA WORKDIR

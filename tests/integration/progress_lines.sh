@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# progress_lines.sh GLOSSA DECK OUT: the console of a run as a person reads it (issue 20).
+# progress_lines.sh GLOSSA DECK OUT: the console of a run as a person reads it (doc/output.md).
 # Default: one line per step, "step k/N  t = ... of T s ... [E elapsed, about R left]", and no
 # per-iteration lines; --verbose adds every Newton iteration; --quiet prints nothing on stdout.
 set -u

@@ -1,4 +1,4 @@
-// The active muscle through the full solve (issue 3): a block of muscle held at fixed length and
+// The active muscle through the full solve (doc/materials.md): a block of muscle held at fixed length and
 // activated with u = 1 (inputs/verification/isometric_muscle.xml), and the same block released
 // by 5 % once active. References, independent of the solver:
 //  - the activation ODE's exact solution alpha(t) = 1 - exp(-t/tau_R), which backward Euler

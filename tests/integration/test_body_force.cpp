@@ -79,7 +79,7 @@ TEST(ElasticSupport, HangingBarTranslatesByWeightOverStiffness) {
   EXPECT_GT(weight / k, 9 * std::abs(uFixed)); // the spring's share dominates, so the check has teeth
 }
 
-// The tongue with an elastic hyoid (issue 7: "hyoid attachment nodes fixed or elastic"): the jaw
+// The tongue with an elastic hyoid (its attachment nodes fixed or on springs, doc/tongue.md): the jaw
 // and the hyoid's springs still carry the weight to 1e-9, a soft hyoid (1000 N/m in all) lets the
 // tongue base sink further than the fixed one, and a stiff one (1e5 N/m) gives the fixed
 // attachment's tip displacement back to 0.5 % (measured 0.12 %).

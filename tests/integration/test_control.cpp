@@ -2,7 +2,7 @@
 // the same seed gives the same run (inputs, objectives, trace, bit for bit); the controlled
 // corner P stays within 20 % of the passive run's peak displacement (the passive trace is
 // tests/regression/s7_2_passive.csv); and the e2 family, the one the lateral
-// compression stretches, is the one the controller contracts (paper §7.2). The measure:
+// compression stretches, is the one the controller contracts (paper §7.2). The measure of success:
 // P within a fraction of the passive run's peak displacement (aim: under 20 %).
 #include <cmath>
 

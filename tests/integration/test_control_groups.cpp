@@ -1,4 +1,4 @@
-// Control groups (issue 5) on the control driver alone, under mpiexec -np 2: two groups of one
+// Control groups (--control-groups) on the control driver alone, under mpiexec -np 2: two groups of one
 // rank, each solving half of every generation on a linear fake plant (LinearPlant.hpp), pick the
 // same winner, bit for bit, as one group solving every candidate, step after step (seeded by the
 // previous winner), and both groups end holding the winner's state; the work really was shared.

@@ -3,7 +3,7 @@
 // closed form, integrated here independently of the solver (Ogden, Non-linear Elastic
 // Deformations, §5.3): with c = a^2 - A^2, r^2 = R^2 + c and lambda = r / R,
 //   p(a) = mu int_a^b (lambda^2 - lambda^-2) dr / r,   b^2 = B^2 + c.
-// The deformed inner radius matches within 0.5 % at 8 x 16 cells (the issue asks 1 %), the error
+// The deformed inner radius matches within 0.5 % at 8 x 16 cells (1 % would do), the error
 // falls by about 4x per refinement, and Newton stays quadratic with the non-symmetric tangent.
 #include <cmath>
 

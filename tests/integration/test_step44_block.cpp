@@ -50,8 +50,8 @@ void expectMatchesDealII(int n) {
   const auto ours = runBlock(n, "");
   for (const auto &[t, uRef] : ref) {
     ASSERT_TRUE(ours.count(t)) << "no trace at t = " << t;
-    // The issue asks for 0.5 %; the same formulation agrees to the Newton tolerances (1e-8
-    // measured), so a much tighter bound is asserted.
+    // A comparison of two codes would need 0.5 %; the same formulation agrees to the Newton
+    // tolerances (1e-8 measured), so a much tighter bound is asserted.
     EXPECT_NEAR(ours.at(t), uRef, 1e-4 * std::abs(uRef)) << n << " elements per side, t = " << t;
   }
 }
