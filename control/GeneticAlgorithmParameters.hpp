@@ -1,7 +1,7 @@
 #pragma once
 // The genome and the parameters of the elitist genetic algorithm (paper §6.1; doc/control.md).
 // A genome holds one neural input u_M in [0, 1] per evaluated muscle group, so the caller can
-// hand a genome's genes straight to MuscleHistory::overrideInput.
+// hand a genome's genes straight to the step's neural inputs (the model evaluator's p2).
 
 #include <cstdint>
 #include <string>

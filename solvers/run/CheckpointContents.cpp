@@ -30,10 +30,8 @@ OutputMark outputMarkFromJson(const nlohmann::json &j) {
 }
 
 nlohmann::json toJson(const model::MuscleHistory::Snapshot &h) {
-  nlohmann::json overrides = nlohmann::json::array();
-  for (const auto &u : h.overrides) overrides.push_back(u ? nlohmann::json(*u) : nlohmann::json());
-  return {{"lambda_c", h.lambdaC},   {"alpha", h.alpha}, {"input", h.input}, {"external_lambda_c", h.externalLambdaC},
-          {"overrides", overrides}, {"time", h.time},   {"dt", h.dt}};
+  return {{"lambda_c", h.lambdaC}, {"alpha", h.alpha}, {"input", h.input}, {"external_lambda_c", h.externalLambdaC},
+          {"time", h.time},        {"dt", h.dt}};
 }
 
 model::MuscleHistory::Snapshot muscleSnapshotFromJson(const nlohmann::json &j) {
@@ -42,8 +40,6 @@ model::MuscleHistory::Snapshot muscleSnapshotFromJson(const nlohmann::json &j) {
   h.alpha = j.at("alpha").get<std::vector<double>>();
   h.input = j.at("input").get<std::vector<double>>();
   h.externalLambdaC = j.at("external_lambda_c").get<std::vector<std::vector<double>>>();
-  for (const auto &u : j.at("overrides"))
-    h.overrides.push_back(u.is_null() ? std::optional<double>() : std::optional<double>(u.get<double>()));
   h.time = j.at("time").get<double>();
   h.dt = j.at("dt").get<double>();
   return h;

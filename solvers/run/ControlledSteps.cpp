@@ -40,8 +40,11 @@ ControlledSteps::ControlledSteps(const ControlSetup &setup, const StepSolverPart
 
 ControlledSteps::~ControlledSteps() = default;
 
-void ControlledSteps::applyInputs(const std::vector<double> &inputs) {
-  for (int g : setup_.groups) parts_.history.overrideInput(g, inputs[g]);
+std::vector<double> ControlledSteps::stepInputs(const std::vector<double> &inputs, double time) const {
+  std::vector<double> step(inputs.size());
+  for (std::size_t g = 0; g < step.size(); ++g) step[g] = parts_.history.input(static_cast<int>(g), time);
+  for (int g : setup_.groups) step[g] = inputs[g];
+  return step;
 }
 
 Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const StepState &state) const {
@@ -55,10 +58,9 @@ Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const StepState &state) cons
 }
 
 CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
-  applyInputs(inputs);
   last_.assign(stepper_.stepStart());
   const StepTrial &trial = stepper_.trial();
-  StepAttempt a = solver_.solve(trial.time, trial.dt, last_, true);
+  StepAttempt a = solver_.solve(trial.time, trial.dt, last_, true, stepInputs(inputs, trial.time));
   CandidateSolve out;
   out.ok = a.ok;
   out.why = a.why;
@@ -71,9 +73,7 @@ void ControlledSteps::keepLast() { kept_.assign(last_); }
 
 InputSensitivity ControlledSteps::sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) {
   const StepTrial &trial = stepper_.trial();
-  applyInputs(inputs);
-  parts_.history.beginStep(trial.time, trial.dt);
-  parts_.model.setTime(trial.time);
+  parts_.model.beginStep(trial.time, trial.dt, stepInputs(inputs, trial.time));
   parts_.model.setMultipliers(kept_.lambda);
   const auto s = controlPointSensitivity(parts_.newton, kept_.u, groups);
   return {s.dxdu, s.krylovIterations};
@@ -100,8 +100,7 @@ void ControlledSteps::step(StepTrial &trial, int committedSteps) {
   }
   // The winner's trial muscle history (activation and lambda_c at its converged state, no
   // solve), then its state, become the trial's.
-  applyInputs(trial.control.inputs);
-  parts_.history.beginStep(trial.time, trial.dt);
+  parts_.model.beginStep(trial.time, trial.dt, stepInputs(trial.control.inputs, trial.time));
   trial.attempt.muscle = assembly::updateMuscleHistory(parts_.assembler, kept_.u, parts_.history);
   trial.state.assign(kept_);
   trial.attempt.uzawa = trial.control.solve;

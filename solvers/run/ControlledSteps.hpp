@@ -59,7 +59,9 @@ public:
   void unpackKept(const std::vector<double> &state) override;
 
 private:
-  void applyInputs(const std::vector<double> &inputs);
+  // The neural inputs of every group over the step: the controller's for the controlled groups,
+  // the deck's u(t) for the others (the model evaluator's p2 for the step).
+  std::vector<double> stepInputs(const std::vector<double> &inputs, double time) const;
   // The control points' displacement (one column per point), gathered from every rank.
   Eigen::Matrix3Xd pointDisplacement(const StepState &state) const;
 

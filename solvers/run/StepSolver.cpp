@@ -32,13 +32,13 @@ std::string failureReason(const StepAttempt &a) {
 }
 } // namespace
 
-StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool quiet) const {
+StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool quiet,
+                              const std::vector<double> &inputs) const {
   StepAttempt out;
   if (keptScope_ == ReuseScope::step) parts_.newton.forgetLinearSolver();
   parts_.assembler.applyDirichlet(state.u, time);
-  parts_.model.setTime(time);
+  parts_.model.beginStep(time, dt, inputs); // trial activation; lambda_c stays at its committed value
   parts_.model.setMultipliers(state.lambda);
-  parts_.history.beginStep(time, dt); // trial activation; lambda_c stays at its committed value
 
   // The Newton tolerance scales with the load: the external force and the step's initial
   // residual, which the first Newton solve assembles anyway.

@@ -40,8 +40,10 @@ public:
   ~StepSolver();
 
   // Solves from `state` (the start on entry) to `time` into `state`; the muscle history's trial
-  // values are this step's. `quiet`: no per-iteration output (a controller's candidates). Collective.
-  StepAttempt solve(double time, double dt, StepState &state, bool quiet) const;
+  // values are this step's, at the neural inputs `inputs` (one per muscle group; empty: the
+  // deck's u(t)), which reach the model as its p2. `quiet`: no per-iteration output (a
+  // controller's candidates). Collective.
+  StepAttempt solve(double time, double dt, StepState &state, bool quiet, const std::vector<double> &inputs = {}) const;
   // A converged state in which material has crossed a symmetry plane is refused
   // (model/SymmetryPlanes.hpp): `attempt` then fails, saying where. Collective.
   void refuseInsideOut(const StepState &state, StepAttempt &attempt) const;

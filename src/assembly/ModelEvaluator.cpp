@@ -109,6 +109,12 @@ void ModelEvaluator::acceptSolution(const Thyra::VectorBase<double> &x, Vector &
   for (std::size_t i = 0; i < lambda_.size(); ++i) lambda_[i] = pressure_->sigma[i] * data[i];
 }
 
+void ModelEvaluator::beginStep(double time, double dt, const std::vector<double> &inputs) {
+  TEUCHOS_TEST_FOR_EXCEPTION(!history_ && !inputs.empty(), std::logic_error, "neural inputs without a muscle history");
+  setTime(time);
+  if (history_) history_->beginStep(time, dt, inputs);
+}
+
 MEB::InArgs<double> ModelEvaluator::getNominalValues() const {
   MEB::InArgs<double> nominal = nominal_;
   auto time = Thyra::createMember(timeSpace_);

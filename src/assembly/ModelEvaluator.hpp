@@ -42,6 +42,11 @@ public:
     time_ = t;
     tangentCached_ = false;
   }
+  // Nominal p0 and p2 for a step of length dt from the committed state: the time, and the neural
+  // inputs of every muscle group over the step (a controller's candidate; empty: the deck's
+  // u(t)). The muscle history begins the step at them (its trial activation, eq. 24), which every
+  // evaluation at the nominal p2 reads. Needs the history (the constructor's) when inputs are given.
+  void beginStep(double time, double dt, const std::vector<double> &inputs = {});
   // Nominal p1, per local element (zero until set). With element pressures as unknowns
   // (setMixedPressure) they are those pressures, which every accepted Newton iterate updates:
   // read them back after a solve.

@@ -29,27 +29,22 @@ MuscleHistory::MuscleHistory(const MuscleArchitecture &architecture, const std::
   for (const auto &g : architecture.groups) alpha_.push_back(g.initialActivation);
   alphaTrial_ = alpha_;
   inputTrial_.assign(alpha_.size(), 0.0);
-  override_.assign(alpha_.size(), std::nullopt);
 }
 
 double MuscleHistory::input(int group, double t) const {
-  const double u = override_[group] ? *override_[group] : architecture_->groups[group].input(t);
-  return std::clamp(u, 0.0, 1.0);
+  return std::clamp(architecture_->groups[group].input(t), 0.0, 1.0);
 }
 
-void MuscleHistory::overrideInput(int group, std::optional<double> u) {
-  if (group < 0 || group >= static_cast<int>(override_.size()))
-    throw std::out_of_range("MuscleHistory::overrideInput: no muscle group " + std::to_string(group));
-  override_[group] = u;
-}
-
-void MuscleHistory::beginStep(double tNew, double dt) {
+void MuscleHistory::beginStep(double tNew, double dt, const std::vector<double> &inputs) {
   if (!(dt > 0.0)) throw std::invalid_argument("MuscleHistory::beginStep: dt must be positive");
+  if (!inputs.empty() && inputs.size() != alpha_.size())
+    throw std::invalid_argument("MuscleHistory::beginStep: " + std::to_string(inputs.size()) + " inputs for " +
+                                std::to_string(alpha_.size()) + " muscle groups");
   dt_ = dt;
   timeTrial_ = tNew;
   if (!architecture_) return;
   for (std::size_t g = 0; g < alpha_.size(); ++g) {
-    inputTrial_[g] = input(static_cast<int>(g), tNew);
+    inputTrial_[g] = inputs.empty() ? input(static_cast<int>(g), tNew) : std::clamp(inputs[g], 0.0, 1.0);
     alphaTrial_[g] = architecture_->groups[g].activation.step(alpha_[g], inputTrial_[g], dt);
   }
   lambdaCTrial_ = lambdaC_;
@@ -115,12 +110,12 @@ void MuscleHistory::commit() {
 }
 
 MuscleHistory::Snapshot MuscleHistory::snapshot() const {
-  return {lambdaC_, alpha_, inputTrial_, externalLambdaC_, override_, time_, dt_};
+  return {lambdaC_, alpha_, inputTrial_, externalLambdaC_, time_, dt_};
 }
 
 void MuscleHistory::restore(const Snapshot &state) {
   bool fits = state.lambdaC.size() == lambdaC_.size() && state.alpha.size() == alpha_.size() &&
-              state.overrides.size() == override_.size() && state.externalLambdaC.size() == externalLambdaC_.size();
+              state.externalLambdaC.size() == externalLambdaC_.size();
   for (std::size_t m = 0; fits && m < externalLambdaC_.size(); ++m)
     fits = state.externalLambdaC[m].size() == externalLambdaC_[m].size();
   if (!fits) throw std::invalid_argument("MuscleHistory::restore: the state is another mesh's or partition's");
@@ -128,7 +123,6 @@ void MuscleHistory::restore(const Snapshot &state) {
   alpha_ = alphaTrial_ = state.alpha;
   inputTrial_ = state.input;
   externalLambdaC_ = externalLambdaCTrial_ = state.externalLambdaC;
-  override_ = state.overrides;
   time_ = timeTrial_ = state.time;
   dt_ = state.dt;
 }

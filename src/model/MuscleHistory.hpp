@@ -1,5 +1,5 @@
 #pragma once
-// The history of the active muscle on one rank (issue 3, item 5): the activation of every
+// The history of the active muscle on one rank (doc/materials.md, "History"): the activation of every
 // muscle group and the contractile stretch lambda_c of every fibre family at every quadrature
 // point of the rank's elements, each as a committed value and a trial value.
 //
@@ -10,7 +10,6 @@
 // begins again: nothing committed has changed. So a controller may evaluate many candidate
 // inputs from one committed state.
 
-#include <optional>
 #include <vector>
 
 #include "materials/MuscleMaterial.hpp"
@@ -25,10 +24,11 @@ public:
   // `elements`: the mesh ids of the rank's elements, in its local order.
   MuscleHistory(const MuscleArchitecture &architecture, const std::vector<mesh::ElementId> &elements);
 
-  // Trial activation of every group at tNew = t_committed + dt (dt > 0).
-  void beginStep(double tNew, double dt);
-  // A controller's input for a group, replacing the deck's u(t) until cleared (nullopt).
-  void overrideInput(int group, std::optional<double> u);
+  // Trial activation of every group at tNew = t_committed + dt (dt > 0), from the neural inputs
+  // over the step: `inputs` (one per group, clamped to [0, 1]; a controller's, which reach it
+  // as the model evaluator's p2), or the deck's u(tNew) when empty.
+  void beginStep(double tNew, double dt, const std::vector<double> &inputs = {});
+  // The deck's input u(t) of a group, in [0, 1].
   double input(int group, double t) const;
 
   double dt() const { return dt_; }
@@ -75,7 +75,6 @@ public:
   struct Snapshot {
     std::vector<double> lambdaC, alpha, input;
     std::vector<std::vector<double>> externalLambdaC;
-    std::vector<std::optional<double>> overrides;
     double time = 0.0, dt = 1.0;
   };
   Snapshot snapshot() const;
@@ -90,7 +89,6 @@ private:
   mutable std::vector<double> lambdaCStart_;
   std::vector<std::vector<double>> externalLambdaC_, externalLambdaCTrial_;
   std::vector<double> alpha_, alphaTrial_, inputTrial_;
-  std::vector<std::optional<double>> override_;
   // dt before the first step: any positive value (the reference state has no rate).
   double time_ = 0.0, dt_ = 1.0, timeTrial_ = 0.0;
 };

@@ -91,9 +91,9 @@ TEST(ModelParameters, InputDerivativeResponseAndMultipliers) {
   assembly::ModelEvaluator model(assembler, Teuchos::null, &history, nodes);
   const int groups = static_cast<int>(scene.muscles.groups.size());
   ASSERT_GE(groups, 2);
-  for (int g = 0; g < groups; ++g) history.overrideInput(g, 0.3 + 0.2 * g);
-  history.beginStep(0.05, 0.05);
-  model.setTime(0.05);
+  std::vector<double> inputs;
+  for (int g = 0; g < groups; ++g) inputs.push_back(0.3 + 0.2 * g);
+  model.beginStep(0.05, 0.05, inputs);
 
   // A smooth displacement: a 2 % stretch along x with a shear, so the fibres are stretched.
   std::vector<double> all(3 * scene.mesh.numNodes());

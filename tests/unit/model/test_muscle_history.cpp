@@ -52,20 +52,22 @@ TEST(MuscleHistory, TrialActivationIsBackwardEulerFromTheCommittedState) {
   EXPECT_DOUBLE_EQ(h.trialActivation()[0], a1 * tau / (tau + 0.1));
 }
 
-TEST(MuscleHistory, ControllerOverrideAndFamilyActivation) {
+TEST(MuscleHistory, AControllersInputsAndFamilyActivation) {
   const auto a = architecture();
   model::MuscleHistory h(a, {0, 1});
-  h.overrideInput(0, 0.5);
-  h.beginStep(0.01, 0.01);
+  h.beginStep(0.01, 0.01, {0.5});
   EXPECT_EQ(h.trialInput()[0], 0.5);
+  EXPECT_DOUBLE_EQ(h.trialActivation()[0], h.trialActivationForInput(0, 0.5));
   const auto alpha = h.familyActivation(1);
   ASSERT_EQ(alpha.size(), 2);
   EXPECT_DOUBLE_EQ(alpha(0), h.trialActivation()[0]);
   EXPECT_EQ(alpha(1), 0.0); // passive family
-  h.overrideInput(0, std::nullopt);
+  // The next step without inputs follows the deck's u(t) again: nothing of the last one stays.
   h.beginStep(0.01, 0.01);
   EXPECT_EQ(h.trialInput()[0], 1.0);
-  EXPECT_THROW(h.overrideInput(3, 1.0), std::out_of_range);
+  h.beginStep(0.01, 0.01, {1.7}); // clamped to [0, 1]
+  EXPECT_EQ(h.trialInput()[0], 1.0);
+  EXPECT_THROW(h.beginStep(0.01, 0.01, {0.5, 0.5}), std::invalid_argument);
   EXPECT_THROW(h.beginStep(0.01, 0.0), std::invalid_argument);
 }
 
