@@ -13,6 +13,8 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/NullSpace.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "io/deck/NameList.hpp"
@@ -100,8 +102,8 @@ struct LargestMotion {
   std::size_t node = 0;
   double norm = 0.0;
 };
-LargestMotion largestMotion(const assembly::Assembler &assembler, const assembly::Vector &v) {
-  const std::vector<double> all = assembler.gatherDisplacement(v);
+LargestMotion largestMotion(const assembly::ResultEvaluator &results, const assembly::Vector &v) {
+  const std::vector<double> all = results.gatherDisplacement(v);
   LargestMotion best;
   double largest = -1.0;
   for (std::size_t n = 0; 3 * n + 2 < all.size(); ++n) {
@@ -239,7 +241,7 @@ struct Simulation::Attempt {
   std::string why;
   double minCornerJ = 1.0;       // the smallest corner det F of the converged state
   mesh::ElementId cornerElement = 0; // where
-  double minRegularCornerJ = 1.0; // the same over regular corners (Assembler::WorstCorner)
+  double minRegularCornerJ = 1.0; // the same over regular corners (ResultEvaluator::WorstCorner)
   mesh::ElementId regularCornerElement = 0;
   double pathStiffness = std::numeric_limits<double>::quiet_NaN(); // S (LimitPointMonitor); NaN: not measured
   bool unstable = false;         // converged, but past a limit point (S <= 0)
@@ -291,16 +293,16 @@ public:
 
   // [u of every node (3 per node), Lambda of every element].
   std::vector<double> packKept() const override {
-    std::vector<double> state = sim_.assembler_->gatherDisplacement(kept_.u);
-    const std::vector<double> lambdaAll = sim_.assembler_->gatherElementField(kept_.lambda, 1);
+    std::vector<double> state = sim_.results_->gatherDisplacement(kept_.u);
+    const std::vector<double> lambdaAll = sim_.results_->gatherElementField(kept_.lambda, 1);
     state.insert(state.end(), lambdaAll.begin(), lambdaAll.end());
     return state;
   }
 
   void unpackKept(const std::vector<double> &state) override {
     const auto split = state.begin() + static_cast<long>(3 * sim_.scene_->mesh.numNodes());
-    sim_.assembler_->scatterDisplacement(std::vector<double>(state.begin(), split), kept_.u);
-    kept_.lambda = sim_.assembler_->localElementValues(std::vector<double>(split, state.end()));
+    sim_.results_->scatterDisplacement(std::vector<double>(state.begin(), split), kept_.u);
+    kept_.lambda = sim_.results_->localElementValues(std::vector<double>(split, state.end()));
   }
 
   // The winner's trial muscle history (activation and lambda_c at its converged state, no
@@ -308,7 +310,7 @@ public:
   void adoptKept(Trial &trial) {
     sim_.applyControlInputs(trial.control.inputs);
     sim_.muscleHistory_->beginStep(trial.time, trial.dt);
-    trial.attempt.muscle = assembly::updateMuscleHistory(*sim_.assembler_, kept_.u, *sim_.muscleHistory_);
+    trial.attempt.muscle = assembly::updateMuscleHistory(*sim_.results_, kept_.u, *sim_.muscleHistory_);
     trial.state.assign(kept_);
     trial.attempt.uzawa = trial.control.solve;
     trial.attempt.ok = true;
@@ -376,7 +378,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   }
   if (root_ && !restart) prepareOutputDirectory(dir_);
   comm->barrier();
-  recorder_ = std::make_unique<StepRecorder>(*assembler_, dir_, output_.fields, root_, output_.resultantFaceSets,
+  recorder_ = std::make_unique<StepRecorder>(*results_, dir_, output_.fields, root_, output_.resultantFaceSets,
                                              output_.volumeFaceSets, restart ? &restart->outputs : nullptr);
   checkpoints_ = std::make_unique<io::CheckpointStore>(dir_);
   checkpointEvery_ = output_.checkpointEvery; // none on an arc-length path
@@ -384,14 +386,15 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
 
   describeRun(deck, physicalVolumetric);
 
-  committed_ = std::make_unique<StepState>(assembler_->ownedMap(), assembler_->numLocalElements());
+  committed_ =
+      std::make_unique<StepState>(assembler_->layout().ownedMap(), assembler_->layout().numLocalElements());
   stepStart_ = std::make_unique<StepState>(*committed_);
   previous_ = std::make_unique<StepState>(*committed_);
   // auto: not with the penalty method, whose kappa (5000 mu at nu = 0.4999) multiplies the volume
   // error of an extrapolated displacement into its pressures (doc/theory.md, bench/README.md).
   extrapolate_ = time_.predictor == Predictor::linearExtrapolation ||
                  (time_.predictor == Predictor::automatic && incompressibility_.method != IncompressibilityMethod::penalty);
-  const assembly::MuscleFields initialMuscle = assembly::updateMuscleHistory(*assembler_, committed_->u, *muscleHistory_);
+  const assembly::MuscleFields initialMuscle = assembly::updateMuscleHistory(*results_, committed_->u, *muscleHistory_);
   std::vector<double> initialInputs;
   for (std::size_t g = 0; g < scene.muscles.groups.size(); ++g)
     initialInputs.push_back(muscleHistory_->input(static_cast<int>(g), 0.0));
@@ -422,8 +425,9 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
   assembly::DofLayout layout = assembly::distributeScene(scene, solverComm);
   muscleHistory_ = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
   assembler_ = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *muscleHistory_, solverComm));
-  LinearSolverContext context{assembler_->coordinates(), assembler_->rigidBodyModes(), solverComm->getSize(),
-                              assembler_->layout().numGlobalDofs(), scene.symmetricTangent};
+  results_ = std::make_unique<const assembly::ResultEvaluator>(*assembler_);
+  LinearSolverContext context{assembly::coordinates(*assembler_), assembly::rigidBodyModes(*assembler_),
+                              solverComm->getSize(), assembler_->layout().numGlobalDofs(), scene.symmetricTangent};
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
   if (incompressibility_.method == IncompressibilityMethod::mixed) {
     requireMixedCompatible(linear_, controlled_, scene);
@@ -448,7 +452,7 @@ void Simulation::buildSolvers(const io::Deck &deck, const std::vector<materials:
   keptScope_ = keptReuseScope(linear_, context, !mixedPressure.is_null());
   newton_ = std::make_unique<NewtonSolver>(model_, newtonParameters_, lengthScale_, linear_.tolerance,
                                            keptScope_ != ReuseScope::newtonSolve);
-  uzawa_ = std::make_unique<UzawaLoop>(*assembler_, *newton_, incompressibility_, physicalVolumetric);
+  uzawa_ = std::make_unique<UzawaLoop>(*results_, *newton_, incompressibility_, physicalVolumetric);
   // A raised kappa_AL reaches the tangent through the tissue's volumetric law (the Assembler's).
   uzawa_->onKappaRaised([this](std::size_t tissue, double kappaT) {
     model::Tissue &t = scene_->tissues[tissue];
@@ -499,7 +503,7 @@ void Simulation::describeRun(const io::Deck &deck, const std::vector<materials::
   {
     // The partition's balance (per rank of a control group).
     std::vector<double> mine(solverComm->getSize(), 0.0), all(mine.size(), 0.0);
-    mine[solverComm->getRank()] = static_cast<double>(assembler_->numLocalElements());
+    mine[solverComm->getRank()] = static_cast<double>(assembler_->layout().numLocalElements());
     Teuchos::reduceAll(*solverComm, Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(), all.data());
     doc_["elements_per_rank"] = all;
     doc_["partitioner"] = scene.partitioner == model::Partitioner::coordinateBisection ? "coordinate bisection"
@@ -762,7 +766,7 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
   };
   out.uzawa = uzawa_->solve(state.u, state.lambda, tolerance, onNewton, onUzawa);
   // The history at the converged state: lambda_c of every point with this step's activation.
-  if (out.uzawa.converged) out.muscle = assembly::updateMuscleHistory(*assembler_, state.u, *muscleHistory_);
+  if (out.uzawa.converged) out.muscle = assembly::updateMuscleHistory(*results_, state.u, *muscleHistory_);
   // What the Gauss points cannot see: the smallest det F at the elements' corners, at all corners
   // and at regular ones. Reported per step (summary.json, and a note when a corner has turned
   // over), not refused: in the tongue scenes, whose Gauss points and answers are sound, corners
@@ -770,7 +774,7 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
   // 0.2 of their element's mean, to -1.1 (s8_5 passive supine) and -0.21 (s8_4_sg), so no corner
   // threshold tells those from an element inside out as a whole (doc/theory.md).
   if (out.uzawa.converged) {
-    const auto worst = assembler_->worstCorner(state.u);
+    const auto worst = results_->worstCorner(state.u);
     out.minCornerJ = worst.J;
     out.cornerElement = worst.element;
     out.minRegularCornerJ = worst.regularJ;
@@ -792,7 +796,7 @@ Simulation::Attempt Simulation::solveStep(double time, double dt, StepState &sta
 
 void Simulation::refuseInsideOut(const StepState &state, Attempt &attempt) const {
   if (planes_.empty()) return;
-  const model::PlaneCrossing deepest = model::deepestCrossing(planes_, scene_->mesh, assembler_->gatherDisplacement(state.u));
+  const model::PlaneCrossing deepest = model::deepestCrossing(planes_, scene_->mesh, results_->gatherDisplacement(state.u));
   // Material across a symmetry plane overlaps its mirror image. A node next to a plane but not
   // on it (on another plane's edge) may sit a little across in a sound state (2.6e-9 m, 1.3e-6 of
   // the thick sphere's size, at p = 0.72 mu): 1e-3 of the body's size is the threshold.
@@ -815,7 +819,7 @@ void Simulation::applyControlInputs(const std::vector<double> &inputs) {
 }
 
 Eigen::Matrix3Xd Simulation::controlPointDisplacement(const StepState &state) const {
-  const std::vector<double> all = assembler_->gatherDisplacement(state.u);
+  const std::vector<double> all = results_->gatherDisplacement(state.u);
   Eigen::Matrix3Xd d(3, static_cast<Eigen::Index>(control_->pointNodes.size()));
   for (std::size_t p = 0; p < control_->pointNodes.size(); ++p) {
     const auto n = control_->pointNodes[p];
@@ -900,7 +904,7 @@ bool Simulation::rollBack() {
     assembly::Vector motion(trial_->state.u, Teuchos::Copy);
     if (trial_->attempt.unstable) motion.update(-1.0, committed_->u, 1.0);
     else motion.assign(committed_->u);
-    limit_->refused(t_, trial_->time, trial_->attempt.unstable, largestMotion(*assembler_, motion).node);
+    limit_->refused(t_, trial_->time, trial_->attempt.unstable, largestMotion(*results_, motion).node);
   }
   const bool stepLeft = steps_->cutBack();
   if (limit_ && (limit_->located(steps_->stepSize()) || (!stepLeft && limit_->located(0.0)))) {
@@ -935,7 +939,7 @@ void Simulation::commitTrial() {
   // carry no multipliers: every group takes them from the committed state alike.
   if (driver_ && uzawa_->augmentedLagrangian() && !uzawa_->mixedPressure())
     multiplierPredictor_.commit(
-        uzawa_->nextMultipliers(assembler_->elementDilatations(committed_->u, committed_->lambda)), trial.dt);
+        uzawa_->nextMultipliers(results_->elementDilatations(committed_->u, committed_->lambda)), trial.dt);
   else
     multiplierPredictor_.commit(trial.attempt.uzawa.nextMultipliers, trial.dt);
   t_ = trial.time;
@@ -1061,7 +1065,7 @@ nlohmann::json Simulation::controlJson(const Trial &trial) {
 void Simulation::finish() {
   // Stopped by a signal: the committed state is sound, so it is kept for --restart.
   if (stoppedBy_ != 0 && checkpointEvery_ > 0 && !onPath_) writeCheckpoint();
-  const std::vector<double> uAll = assembler_->gatherDisplacement(committed_->u);
+  const std::vector<double> uAll = results_->gatherDisplacement(committed_->u);
   if (options_.finalDisplacement) *options_.finalDisplacement = uAll;
   nlohmann::json finals = nlohmann::json::object();
   for (const auto &[name, d] : recorder_->pointDisplacements(uAll)) finals[name] = {d.x(), d.y(), d.z()};
@@ -1110,8 +1114,8 @@ void Simulation::followArcLength() {
     a.uzawa.converged = true;
     a.uzawa.solves = 1;
     a.uzawa.newtonIterations = point.newtonIterations;
-    a.uzawa.dilatation = uzawa_->dilatationError(assembler_->elementDilatations(u, committed_->lambda));
-    const auto worst = assembler_->worstCorner(u);
+    a.uzawa.dilatation = uzawa_->dilatationError(results_->elementDilatations(u, committed_->lambda));
+    const auto worst = results_->worstCorner(u);
     a.minCornerJ = worst.J, a.cornerElement = worst.element;
     a.minRegularCornerJ = worst.regularJ, a.regularCornerElement = worst.regularElement;
     a.ok = true;
@@ -1130,7 +1134,7 @@ void Simulation::followArcLength() {
       doc_["load_maximum"] = {{"time", highest}, {"step", stepNumber_ - 1}};
       if (talk_) std::printf("  note: the path passed a load maximum near t = %.6g and follows the falling branch\n", highest);
     }
-    const double largest = largestMotion(*assembler_, u).norm;
+    const double largest = largestMotion(*results_, u).norm;
     if (stopRequested()) return false;
     return !(settings.stopAtDisplacement > 0.0 && largest >= settings.stopAtDisplacement);
   };

@@ -31,6 +31,7 @@
 namespace glossa::assembly {
 class Assembler;
 class ModelEvaluator;
+class ResultEvaluator;
 } // namespace glossa::assembly
 namespace glossa::io {
 class CheckpointStore;
@@ -203,6 +204,7 @@ private:
   // here, read by the assembler (declared first, so it outlives it).
   std::unique_ptr<model::MuscleHistory> muscleHistory_;
   Teuchos::RCP<assembly::Assembler> assembler_;
+  std::unique_ptr<const assembly::ResultEvaluator> results_; // of *assembler_ (declared after it)
   Teuchos::RCP<assembly::ModelEvaluator> model_;
   std::unique_ptr<NewtonSolver> newton_;
   std::unique_ptr<UzawaLoop> uzawa_;
