@@ -12,7 +12,8 @@
 // its tangent, the mixed method's pressure blocks, the loads alone and their scale. What a state
 // is reported as (fields, reactions, resultants, volumes, the corner check, whole-mesh gathers)
 // is the ResultEvaluator's, from the same element and load passes (MFEM's split between the form
-// that assembles and what is computed from a solution); MueLu's null space is in NullSpace.hpp.
+// that assembles and what is computed from a solution); the coordinates and rigid-body modes the
+// multilevel preconditioners need are in NullSpace.hpp.
 
 #include <array>
 #include <functional>
