@@ -20,6 +20,7 @@
 
 #include "app/DeckSchema.hpp"
 #include "assembly/Assembler.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "io/deck/Deck.hpp"
 #include "input/SceneFactory.hpp"
 
@@ -74,23 +75,24 @@ int main(int argc, char **argv) {
     assembly::DofLayout layout = assembly::distributeScene(scene, comm);
     const model::MuscleHistory history(scene.muscles, layout.localElements);
     const assembly::Assembler assembler(scene, std::move(layout), history, comm);
+    const assembly::ResultEvaluator results(assembler); // the element work alone
     auto K = assembler.createMatrix();
-    assembly::Vector u(assembler.ownedMap()), f(assembler.ownedMap());
+    assembly::Vector u(assembler.layout().ownedMap()), f(assembler.layout().ownedMap());
     {
       double xMin = 1e300;
       for (const auto &X : scene.mesh.nodes) xMin = std::min(xMin, X(0));
       std::vector<double> all(3 * scene.mesh.numNodes(), 0.0);
       for (std::size_t n = 0; n < scene.mesh.numNodes(); ++n)
         all[3 * n + 1] = 0.02 * (scene.mesh.nodes[n](0) - xMin);
-      assembler.scatterDisplacement(all, u);
+      results.scatterDisplacement(all, u);
     }
     const std::vector<double> lambda(assembler.layout().localElements.size(), 0.0);
     const double time = 0.5 * deck.root().sublist("Time").get<double>("end time");
     // One of each first: the scatter's offsets and the matrix's first fill are set-up, not assembly.
     assembler.assemble(u, time, lambda, nullptr, &f, K.get());
-    assembler.evaluateElementsOnly(u, lambda);
+    results.evaluateElementsOnly(u, lambda);
     const double assembly = median(timed(repeats, [&] { assembler.assemble(u, time, lambda, nullptr, &f, K.get()); }));
-    const double work = median(timed(repeats, [&] { assembler.evaluateElementsOnly(u, lambda); }));
+    const double work = median(timed(repeats, [&] { results.evaluateElementsOnly(u, lambda); }));
     const double elements = static_cast<double>(scene.mesh.numElements());
     const int ranks = comm->getSize();
     if (root) {

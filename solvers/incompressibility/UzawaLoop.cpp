@@ -26,20 +26,20 @@ double UzawaLoop::tangentKappa(const IncompressibilityParameters &s, double mate
   return materialKappa;
 }
 
-UzawaLoop::UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton,
+UzawaLoop::UzawaLoop(const assembly::ResultEvaluator &results, const NewtonSolver &newton,
                      const IncompressibilityParameters &s, const std::vector<materials::VolumetricEnergy> &physical)
-    : assembler_(assembler), newton_(newton), augmented_(s.method == IncompressibilityMethod::augmentedLagrangian),
+    : results_(results), newton_(newton), augmented_(s.method == IncompressibilityMethod::augmentedLagrangian),
       mixed_(s.method == IncompressibilityMethod::mixed), tolerance_(s.dilatationTolerance),
       maxIterations_(s.maximumUzawaIterations), inexact_(augmented_ && s.inexactUzawa),
       innerTolerance_(s.innerTolerance), innerLinearTolerance_(s.innerLinearTolerance) {
-  const model::Scene &scene = assembler.scene();
+  const model::Scene &scene = results.scene();
   physical_ = physical;
   for (std::size_t t = 0; t < scene.tissues.size(); ++t) {
     mu_.push_back(scene.tissues[t].matrix->shearModulus());
     ratio_.push_back(s.penaltyRatio);
     rules_.emplace_back(physical.at(t), ratio_.back() * mu_.back());
   }
-  for (const auto e : assembler.layout().localElements)
+  for (const auto e : results.assembler().layout().localElements)
     localTissue_.push_back(scene.elementTissue.empty() ? 0 : scene.elementTissue[static_cast<std::size_t>(e)]);
 }
 
@@ -49,22 +49,24 @@ std::vector<double> UzawaLoop::tissueErrors(const assembly::ElementFields &f) co
   std::vector<double> local(rules_.size(), 0.0), global(rules_.size(), 0.0);
   for (std::size_t i = 0; i < f.theta.size(); ++i)
     local[localTissue_[i]] = std::max(local[localTissue_[i]], ruleOf(i).dilatationError(f.theta[i], f.pressure[i]));
-  Teuchos::reduceAll(*assembler_.comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(), global.data());
+  Teuchos::reduceAll(*results_.assembler().layout().comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()),
+                     local.data(), global.data());
   return global;
 }
 
 std::vector<int> UzawaLoop::activeTissues() const {
-  const model::Scene &scene = assembler_.scene();
-  const model::MuscleHistory &history = assembler_.muscleHistory();
+  const model::Scene &scene = results_.scene();
+  const model::MuscleHistory &history = results_.muscleHistory();
   std::vector<int> local(rules_.size(), 0), global(rules_.size(), 0);
-  const auto &elements = assembler_.layout().localElements;
+  const assembly::DistributedLayout &layout = results_.assembler().layout();
+  const auto &elements = layout.localElements;
   for (std::size_t i = 0; i < elements.size() && scene.muscles.hasFibres(); ++i) {
     const int region = scene.muscles.elementRegion[static_cast<std::size_t>(elements[i])];
     if (region < 0) continue;
     for (int g : scene.muscles.regions[static_cast<std::size_t>(region)].familyGroup)
       if (history.groupActivation(g) > 0.0) local[localTissue_[i]] = 1;
   }
-  Teuchos::reduceAll(*assembler_.comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(), global.data());
+  Teuchos::reduceAll(*layout.comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(), global.data());
   return global;
 }
 
@@ -108,7 +110,7 @@ DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) con
   local[1] = volume;
   double sums[2];
   DilatationError err;
-  const auto &comm = *assembler_.comm();
+  const auto &comm = *results_.assembler().layout().comm();
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2, local, sums);
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, maxErr, Teuchos::outArg(err.max));
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, maxChange, Teuchos::outArg(err.maxVolumeChange));
@@ -155,7 +157,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     result.newton.push_back(std::move(n));
     if (!newtonConverged) return result;
 
-    const assembly::ElementFields fields = assembler_.elementDilatations(u, lambda);
+    const assembly::ElementFields fields = results_.elementDilatations(u, lambda);
     result.dilatation = dilatationError(fields);
     if (onUzawa) onUzawa(k, result.newton.back(), result.dilatation);
     if (!measuresPhysicalLaw() || result.dilatation.max < tolerance_) {

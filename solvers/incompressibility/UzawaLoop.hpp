@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-#include "assembly/Assembler.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "materials/VolumetricEnergy.hpp"
 #include "solvers/incompressibility/AugmentedLagrangianRule.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
@@ -20,10 +20,12 @@ namespace glossa::solvers {
 
 class UzawaLoop {
 public:
-  // `physical`: per tissue of the assembler's scene, its volumetric law (kappa = inf for nu = 0.5);
-  // each tissue's kappa_AL is the penalty ratio times its matrix's shear modulus.
-  UzawaLoop(const assembly::Assembler &assembler, const NewtonSolver &newton, const IncompressibilityParameters &parameters,
-            const std::vector<materials::VolumetricEnergy> &physical);
+  // `results`: of the assembler Newton's model evaluates, for the element dilatations after each
+  // solve (kept as a copy: it is a view). `physical`: per tissue of its scene, its volumetric law
+  // (kappa = inf for nu = 0.5); each tissue's kappa_AL is the penalty ratio times its matrix's
+  // shear modulus.
+  UzawaLoop(const assembly::ResultEvaluator &results, const NewtonSolver &newton,
+            const IncompressibilityParameters &parameters, const std::vector<materials::VolumetricEnergy> &physical);
 
   bool augmentedLagrangian() const { return augmented_; }
   bool mixedPressure() const { return mixed_; }
@@ -71,7 +73,7 @@ public:
   void restorePenaltyRatios(const std::vector<double> &ratios);
 
 private:
-  const assembly::Assembler &assembler_;
+  const assembly::ResultEvaluator results_;
   const NewtonSolver &newton_;
   bool augmented_;
   bool mixed_;                // element pressures are Newton unknowns (MixedPressureState)

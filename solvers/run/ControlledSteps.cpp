@@ -5,6 +5,7 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "io/output/KeyedCsvWriter.hpp"
 #include "model/Scene.hpp"
 #include "solvers/control/CommControlGroups.hpp"
@@ -48,7 +49,7 @@ std::vector<double> ControlledSteps::stepInputs(const std::vector<double> &input
 }
 
 Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const StepState &state) const {
-  const std::vector<double> all = parts_.assembler.gatherDisplacement(state.u);
+  const std::vector<double> all = assembly::ResultEvaluator(parts_.assembler).gatherDisplacement(state.u);
   Eigen::Matrix3Xd d(3, static_cast<Eigen::Index>(setup_.pointNodes.size()));
   for (std::size_t p = 0; p < setup_.pointNodes.size(); ++p) {
     const auto n = setup_.pointNodes[p];
@@ -80,16 +81,18 @@ InputSensitivity ControlledSteps::sensitivity(const std::vector<double> &inputs,
 }
 
 std::vector<double> ControlledSteps::packKept() const {
-  std::vector<double> state = parts_.assembler.gatherDisplacement(kept_.u);
-  const std::vector<double> lambdaAll = parts_.assembler.gatherElementField(kept_.lambda, 1);
+  const assembly::ResultEvaluator results(parts_.assembler);
+  std::vector<double> state = results.gatherDisplacement(kept_.u);
+  const std::vector<double> lambdaAll = results.gatherElementField(kept_.lambda, 1);
   state.insert(state.end(), lambdaAll.begin(), lambdaAll.end());
   return state;
 }
 
 void ControlledSteps::unpackKept(const std::vector<double> &state) {
   const auto split = state.begin() + static_cast<long>(3 * parts_.assembler.scene().mesh.numNodes());
-  parts_.assembler.scatterDisplacement(std::vector<double>(state.begin(), split), kept_.u);
-  kept_.lambda = parts_.assembler.localElementValues(std::vector<double>(split, state.end()));
+  const assembly::ResultEvaluator results(parts_.assembler);
+  results.scatterDisplacement(std::vector<double>(state.begin(), split), kept_.u);
+  kept_.lambda = results.localElementValues(std::vector<double>(split, state.end()));
 }
 
 void ControlledSteps::step(StepTrial &trial, int committedSteps) {
@@ -101,7 +104,7 @@ void ControlledSteps::step(StepTrial &trial, int committedSteps) {
   // The winner's trial muscle history (activation and lambda_c at its converged state, no
   // solve), then its state, become the trial's.
   parts_.model.beginStep(trial.time, trial.dt, stepInputs(trial.control.inputs, trial.time));
-  trial.attempt.muscle = assembly::updateMuscleHistory(parts_.assembler, kept_.u, parts_.history);
+  trial.attempt.muscle = assembly::updateMuscleHistory(assembly::ResultEvaluator(parts_.assembler), kept_.u, parts_.history);
   trial.state.assign(kept_);
   trial.attempt.uzawa = trial.control.solve;
   trial.attempt.ok = true;

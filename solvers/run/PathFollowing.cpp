@@ -4,6 +4,7 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 #include "solvers/run/RunSetup.hpp"
 
@@ -19,7 +20,8 @@ StepTrial &pointTrial(RunParts &run, const ArcLengthPoint &point, const assembly
   a.uzawa.solves = 1;
   a.uzawa.newtonIterations = point.newtonIterations;
   a.uzawa.dilatation =
-      run.uzawa->dilatationError(run.assembler->elementDilatations(u, run.stepper->committed().lambda));
+      run.uzawa->dilatationError(
+          assembly::ResultEvaluator(*run.assembler).elementDilatations(u, run.stepper->committed().lambda));
   run.solver->measureCorners(trial.state, a);
   a.ok = true;
   run.solver->refuseInsideOut(trial.state, a);
@@ -51,7 +53,7 @@ void followArcLength(RunParts &run, const std::function<void()> &commit) {
       doc["load_maximum"] = {{"time", highest}, {"step", run.stepper->stepNumber() - 1}};
       if (run.talk) std::printf("  note: the path passed a load maximum near t = %.6g and follows the falling branch\n", highest);
     }
-    const double largest = largestMotion(*run.assembler, u).norm;
+    const double largest = largestMotion(assembly::ResultEvaluator(*run.assembler), u).norm;
     if (run.report->stopRequested(run.stepper->stepNumber(), run.stepper->time())) return false;
     return !(settings.stopAtDisplacement > 0.0 && largest >= settings.stopAtDisplacement);
   };

@@ -5,14 +5,15 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
 #include "solvers/stepping/LimitPointMonitor.hpp"
 #include "solvers/stepping/PathStiffness.hpp"
 
 namespace glossa::solvers {
 
-LargestMotion largestMotion(const assembly::Assembler &assembler, const assembly::Vector &v) {
-  const std::vector<double> all = assembler.gatherDisplacement(v);
+LargestMotion largestMotion(const assembly::ResultEvaluator &results, const assembly::Vector &v) {
+  const std::vector<double> all = results.gatherDisplacement(v);
   LargestMotion best;
   double largest = -1.0;
   for (std::size_t n = 0; 3 * n + 2 < all.size(); ++n) {
@@ -63,7 +64,7 @@ PathWatch::Verdict PathWatch::refused(double t, const StepTrial &trial, const St
   assembly::Vector motion(trial.state.u, Teuchos::Copy);
   if (trial.attempt.unstable) motion.update(-1.0, committed.u, 1.0);
   else motion.assign(committed.u);
-  limit_->refused(t, trial.time, trial.attempt.unstable, largestMotion(assembler_, motion).node);
+  limit_->refused(t, trial.time, trial.attempt.unstable, largestMotion(assembly::ResultEvaluator(assembler_), motion).node);
   Verdict v;
   v.located = limit_->located(nextStep) || (!stepLeft && limit_->located(0.0));
   if (!v.located) return v;

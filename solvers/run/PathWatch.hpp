@@ -14,6 +14,7 @@
 namespace glossa::assembly {
 class Assembler;
 class ModelEvaluator;
+class ResultEvaluator;
 } // namespace glossa::assembly
 
 namespace glossa::solvers {
@@ -60,6 +61,6 @@ struct LargestMotion {
   std::size_t node = 0;
   double norm = 0.0;
 };
-LargestMotion largestMotion(const assembly::Assembler &assembler, const assembly::Vector &v);
+LargestMotion largestMotion(const assembly::ResultEvaluator &results, const assembly::Vector &v);
 
 } // namespace glossa::solvers

@@ -7,6 +7,8 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/NullSpace.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "input/SceneFactory.hpp"
 #include "io/deck/DeckError.hpp"
 #include "model/Scene.hpp"
@@ -60,7 +62,7 @@ void buildSolvers(RunParts &run) {
   assembly::DofLayout layout = assembly::distributeScene(scene, solverComm);
   run.history = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
   run.assembler = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *run.history, solverComm));
-  LinearSolverContext context{run.assembler->coordinates(), run.assembler->rigidBodyModes(), solverComm->getSize(),
+  LinearSolverContext context{assembly::coordinates(*run.assembler), assembly::rigidBodyModes(*run.assembler), solverComm->getSize(),
                               run.assembler->layout().numGlobalDofs(), scene.symmetricTangent};
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
   if (config.incompressibility.method == IncompressibilityMethod::mixed)
@@ -76,7 +78,7 @@ void buildSolvers(RunParts &run) {
   for (const auto &x : scene.mesh.nodes) lengthScale = std::max(lengthScale, x.norm());
   run.newton = std::make_unique<NewtonSolver>(run.model, config.newton, lengthScale, config.linear.tolerance,
                                               run.linearPlan.keptScope != ReuseScope::newtonSolve);
-  run.uzawa = std::make_unique<UzawaLoop>(*run.assembler, *run.newton, config.incompressibility, run.physicalVolumetric);
+  run.uzawa = std::make_unique<UzawaLoop>(assembly::ResultEvaluator(*run.assembler), *run.newton, config.incompressibility, run.physicalVolumetric);
   // A raised kappa_AL reaches the tangent through the tissue's volumetric law (the Assembler's).
   run.uzawa->onKappaRaised([&run](std::size_t tissue, double kappaT) {
     model::Tissue &t = run.scene->tissues[tissue];
@@ -114,7 +116,7 @@ void describeRun(RunParts &run) {
   doc["control_groups"] = run.options.controlGroups;
   // The partition's balance (per rank of a control group).
   std::vector<double> mine(solverComm->getSize(), 0.0), all(mine.size(), 0.0);
-  mine[solverComm->getRank()] = static_cast<double>(run.assembler->numLocalElements());
+  mine[solverComm->getRank()] = static_cast<double>(run.assembler->layout().numLocalElements());
   Teuchos::reduceAll(*solverComm, Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(), all.data());
   doc["elements_per_rank"] = all;
   doc["partitioner"] = scene.partitioner == model::Partitioner::coordinateBisection ? "coordinate bisection"
@@ -189,7 +191,7 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const Teuchos::RCP<cons
   const std::filesystem::path dir = outputDirectory(*run);
   run->report->setDirectory(dir);
   const OutputParameters &output = run->config.output;
-  run->recorder = std::make_unique<StepRecorder>(*run->assembler, dir, output.fields, run->root, output.resultantFaceSets,
+  run->recorder = std::make_unique<StepRecorder>(assembly::ResultEvaluator(*run->assembler), dir, output.fields, run->root, output.resultantFaceSets,
                                                  output.volumeFaceSets, run->restart ? &run->restart->outputs : nullptr);
   // None on an arc-length path (its direction and step are LOCA's own state).
   run->checkpoints = std::make_unique<RunCheckpoint>(dir, comm, output.checkpointEvery);
@@ -202,7 +204,7 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const Teuchos::RCP<cons
                            (predictor == Predictor::automatic &&
                             run->config.incompressibility.method != IncompressibilityMethod::penalty);
   run->stepper = std::make_unique<LoadStepper>(
-      run->config.time.steps, extrapolate, StepState(run->assembler->ownedMap(), run->assembler->numLocalElements()));
+      run->config.time.steps, extrapolate, StepState(run->assembler->layout().ownedMap(), run->assembler->layout().numLocalElements()));
   if (run->control.enabled) {
     std::optional<std::uintmax_t> resumeAt;
     if (run->restart && run->restart->outputs.csvBytes.count("controls.csv"))

@@ -4,6 +4,7 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "model/Scene.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 #include "solvers/run/PathFollowing.hpp"
@@ -17,7 +18,7 @@ Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::C
   RunParts &run = *run_;
   onPath_ = run.config.time.pathFollowing == PathFollowing::arcLength;
   const StepState &state = run.stepper->committed();
-  const assembly::MuscleFields initial = assembly::updateMuscleHistory(*run.assembler, state.u, *run.history);
+  const assembly::MuscleFields initial = assembly::updateMuscleHistory(assembly::ResultEvaluator(*run.assembler), state.u, *run.history);
   std::vector<double> inputs;
   for (std::size_t g = 0; g < run.scene->muscles.groups.size(); ++g)
     inputs.push_back(run.history->input(static_cast<int>(g), 0.0));
@@ -46,7 +47,8 @@ void Simulation::commit() {
   // A controlled step's winner may have been solved by another control group, whose statistics
   // carry no multipliers: every group takes them from the trial state alike.
   if (run.controlled && run.uzawa->augmentedLagrangian() && !run.uzawa->mixedPressure())
-    run.stepper->commit(run.uzawa->nextMultipliers(run.assembler->elementDilatations(trial.state.u, trial.state.lambda)));
+    run.stepper->commit(run.uzawa->nextMultipliers(
+        assembly::ResultEvaluator(*run.assembler).elementDilatations(trial.state.u, trial.state.lambda)));
   else run.stepper->commit(trial.attempt.uzawa.nextMultipliers);
   const double t = run.stepper->time();
   if (run.watch && !onPath_) run.watch->accepted(t, trial.attempt.pathStiffness);
@@ -128,7 +130,7 @@ void Simulation::finish() {
   RunParts &run = *run_;
   // Stopped by a signal: the committed state is sound, so it is kept for --restart.
   if (run.report->stoppedBy() != 0 && run.checkpoints->enabled() && !onPath_) writeCheckpoint(run);
-  const std::vector<double> uAll = run.assembler->gatherDisplacement(run.stepper->committed().u);
+  const std::vector<double> uAll = assembly::ResultEvaluator(*run.assembler).gatherDisplacement(run.stepper->committed().u);
   if (run.options.finalDisplacement) *run.options.finalDisplacement = uAll;
   nlohmann::json finals = nlohmann::json::object();
   for (const auto &[name, d] : run.recorder->pointDisplacements(uAll)) finals[name] = {d.x(), d.y(), d.z()};

@@ -5,10 +5,10 @@
 
 namespace glossa::solvers {
 
-StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields,
+StepRecorder::StepRecorder(const assembly::ResultEvaluator &results, const std::filesystem::path &dir, bool fields,
                            bool writer, std::vector<std::string> resultantSets, std::vector<std::string> volumeSets,
                            const OutputMark *resume)
-    : assembler_(assembler), root_(writer), fields_(fields), resultantSets_(std::move(resultantSets)),
+    : evaluator_(results), root_(writer), fields_(fields), resultantSets_(std::move(resultantSets)),
       volumeSets_(std::move(volumeSets)) {
   if (!root_) return;
   // A restart's files are kept and cut back to the checkpoint's lengths.
@@ -25,7 +25,7 @@ StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::file
   if (!volumeSets_.empty())
     volumes_ = std::make_unique<io::KeyedCsvWriter>(dir / "volumes.csv", "face_set",
                                                     std::vector<std::string>{"volume [m^3]"}, resumeAt("volumes.csv"));
-  const auto &mesh = assembler.scene().mesh;
+  const auto &mesh = results.scene().mesh;
   if (fields_ && resume)
     results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.numNodes(), mesh.numElements(), resume->fieldSteps);
   else if (fields_)
@@ -33,7 +33,7 @@ StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::file
   traces_ = std::make_unique<io::TraceWriter>(dir / "traces.csv", resumeAt("traces.csv"));
   // Reference fibre directions per family (zero where the family is absent), for ParaView's
   // glyphs; they do not change, and the mesh is replicated, so rank 0 builds them once.
-  const auto &muscles = assembler.scene().muscles;
+  const auto &muscles = results.scene().muscles;
   const std::size_t elements = mesh.numElements();
   for (const auto &region : muscles.regions)
     for (const auto &name : region.familyNames) fibreDirections_.try_emplace(name, 3 * elements, 0.0);
@@ -50,11 +50,11 @@ StepRecorder::StepRecorder(const assembly::Assembler &assembler, const std::file
         fibreDirections_[muscles.regions[r].familyNames[f]][3 * e + c] =
             muscles.directions[e](c, static_cast<Eigen::Index>(f));
   }
-  if (!assembler.scene().dirichlet.empty())
+  if (!results.scene().dirichlet.empty())
     reactions_ = std::make_unique<io::KeyedCsvWriter>(dir / "reactions.csv", "condition",
                                                       std::vector<std::string>{"fx [N]", "fy [N]", "fz [N]", "power [W]"},
                                                       resumeAt("reactions.csv"));
-  if (!assembler.scene().muscles.groups.empty())
+  if (!results.scene().muscles.groups.empty())
     activation_ = std::make_unique<io::KeyedCsvWriter>(
         dir / "activation.csv", "group",
         std::vector<std::string>{"u [-]", "alpha [-]", "ffmr [-]", "mean_fibre_stretch [-]", "mean_contractile_stretch [-]"},
@@ -73,8 +73,8 @@ OutputMark StepRecorder::mark() const {
 
 std::vector<std::pair<std::string, Eigen::Vector3d>> StepRecorder::pointDisplacements(const std::vector<double> &u) const {
   std::vector<std::pair<std::string, Eigen::Vector3d>> out;
-  const auto &mesh = assembler_.scene().mesh;
-  for (const auto &name : assembler_.scene().tracedPoints) {
+  const auto &mesh = evaluator_.scene().mesh;
+  for (const auto &name : evaluator_.scene().tracedPoints) {
     out.emplace_back(name, mesh.namedPoints.at(name).interpolate(u));
   }
   return out;
@@ -82,8 +82,8 @@ std::vector<std::pair<std::string, Eigen::Vector3d>> StepRecorder::pointDisplace
 
 std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::activationRows(const assembly::MuscleFields &muscle,
                                                                         const std::vector<double> &input) const {
-  const auto &groups = assembler_.scene().muscles.groups;
-  const auto &alpha = assembler_.muscleHistory().trialActivation();
+  const auto &groups = evaluator_.scene().muscles.groups;
+  const auto &alpha = evaluator_.muscleHistory().trialActivation();
   std::vector<std::pair<std::string, std::vector<double>>> rows;
   for (std::size_t g = 0; g < groups.size(); ++g)
     rows.push_back({groups[g].name,
@@ -94,11 +94,11 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::activatio
 
 std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::reactionRows(const assembly::Vector &u, double time,
                                                                       const std::vector<double> &lambda) const {
-  const auto reactions = assembler_.reactions(u, time, lambda);
+  const auto reactions = evaluator_.reactions(u, time, lambda);
   std::vector<std::pair<std::string, std::vector<double>>> rows;
   for (std::size_t b = 0; b < reactions.size(); ++b) {
     const Eigen::Vector3d &f = reactions[b].force;
-    rows.push_back({assembler_.scene().dirichlet[b].name, {f.x(), f.y(), f.z(), reactions[b].power}});
+    rows.push_back({evaluator_.scene().dirichlet[b].name, {f.x(), f.y(), f.z(), reactions[b].power}});
   }
   return rows;
 }
@@ -108,11 +108,11 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(do
                                                                 const assembly::MuscleFields &muscle,
                                                                 const std::vector<double> &input,
                                                                 std::optional<double> fieldsTime) {
-  const std::vector<double> uAll = assembler_.gatherDisplacement(u);
+  const std::vector<double> uAll = evaluator_.gatherDisplacement(u);
   const auto reactions = reactionRows(u, time, lambda);
   if (root_) {
     std::vector<io::TraceWriter::Point> points;
-    const auto &mesh = assembler_.scene().mesh;
+    const auto &mesh = evaluator_.scene().mesh;
     for (const auto &[name, d] : pointDisplacements(uAll)) {
       const mesh::NamedPoint &p = mesh.namedPoints.at(name);
       // d from the imaged position: of the node, or interpolated like the displacement.
@@ -128,46 +128,46 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(do
   if (root_ && reactions_) reactions_->append(time, reactions);
   // Collective, so every rank computes them; rank 0 writes.
   if (!resultantSets_.empty()) {
-    const auto forces = assembler_.faceSetResultants(u, time, lambda, resultantSets_);
+    const auto forces = evaluator_.faceSetResultants(u, time, lambda, resultantSets_);
     std::vector<std::pair<std::string, std::vector<double>>> rows;
     for (std::size_t s = 0; s < forces.size(); ++s) rows.push_back({resultantSets_[s], {forces[s].x(), forces[s].y(), forces[s].z()}});
     if (root_) resultants_->append(time, rows);
   }
   if (!volumeSets_.empty()) {
-    const auto volumes = assembler_.enclosedVolumes(u, volumeSets_);
+    const auto volumes = evaluator_.enclosedVolumes(u, volumeSets_);
     std::vector<std::pair<std::string, std::vector<double>>> rows;
     for (std::size_t s = 0; s < volumes.size(); ++s) rows.push_back({volumeSets_[s], {volumes[s]}});
     if (root_) volumes_->append(time, rows);
   }
   if (root_ && activation_) activation_->append(time, activationRows(muscle, input));
   if (!fields_ || !writeFields) return reactions;
-  const auto f = assembler_.elementFields(u, lambda);
+  const auto f = evaluator_.elementFields(u, lambda);
   std::vector<double> stress;
   for (const auto &s : f.cauchy)
     for (double v : {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2)}) stress.push_back(v);
-  auto pressure = assembler_.gatherElementField(f.pressure, 1);
-  auto theta = assembler_.gatherElementField(f.theta, 1);
-  auto minJ = assembler_.gatherElementField(f.minJ, 1);
-  auto cauchy = assembler_.gatherElementField(stress, 6);
+  auto pressure = evaluator_.gatherElementField(f.pressure, 1);
+  auto theta = evaluator_.gatherElementField(f.theta, 1);
+  auto minJ = evaluator_.gatherElementField(f.minJ, 1);
+  auto cauchy = evaluator_.gatherElementField(stress, 6);
   std::vector<io::Field> cells{
       {"pressure", 1, pressure}, {"dilatation", 1, theta}, {"J", 1, minJ}, {"cauchy_stress", 6, cauchy}};
-  if (assembler_.scene().muscles.hasFibres()) {
-    cells.push_back({"fibre_stress", 1, assembler_.gatherElementField(muscle.fibreStress, 1)});
+  if (evaluator_.scene().muscles.hasFibres()) {
+    cells.push_back({"fibre_stress", 1, evaluator_.gatherElementField(muscle.fibreStress, 1)});
     for (const auto &[name, values] : fibreDirections_) cells.push_back({"fibre_direction_" + name, 3, values});
-    const auto &alpha = assembler_.muscleHistory().trialActivation();
+    const auto &alpha = evaluator_.muscleHistory().trialActivation();
     for (std::size_t g = 0; g < groupMembership_.size() && root_; ++g) {
       const auto &[name, member] = groupMembership_[g];
-      const double ffmr = materials::fractionOfFullMuscleResponse(assembler_.scene().muscles.groups[g].T0s, alpha[g]);
+      const double ffmr = materials::fractionOfFullMuscleResponse(evaluator_.scene().muscles.groups[g].T0s, alpha[g]);
       std::vector<double> field(member.size());
       for (std::size_t e = 0; e < member.size(); ++e) field[e] = member[e] * ffmr;
       cells.push_back({"muscle_set_" + name, 1, member});
       cells.push_back({"ffmr_" + name, 1, field});
     }
     // One column per group, gathered together and split by group on rank 0.
-    const auto &groups = assembler_.scene().muscles.groups;
+    const auto &groups = evaluator_.scene().muscles.groups;
     const int G = muscle.groups;
-    const auto stretch = assembler_.gatherElementField(muscle.fibreStretch, G);
-    const auto contractile = assembler_.gatherElementField(muscle.contractileStretch, G);
+    const auto stretch = evaluator_.gatherElementField(muscle.fibreStretch, G);
+    const auto contractile = evaluator_.gatherElementField(muscle.contractileStretch, G);
     for (int g = 0; g < G && root_; ++g) {
       std::vector<double> a, b;
       for (std::size_t e = 0; e < stretch.size() / static_cast<std::size_t>(G); ++e) {

@@ -16,8 +16,8 @@
 
 #include <Eigen/Core>
 
-#include "assembly/Assembler.hpp"
 #include "assembly/MuscleResponse.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "io/output/TraceWriter.hpp"
@@ -33,11 +33,12 @@ struct OutputMark {
 
 class StepRecorder {
 public:
+  // `results`: what every step is recorded from (kept as a copy: it is a view of the assembler).
   // `writer`: this rank writes the files (rank 0 of the world; with control groups every group
   // records, collectively on its own communicator, but only one rank writes).
   // `resultantSets`, `volumeSets`: face sets (existing) whose resultant force and enclosed volume
   // are written every step to resultants.csv and volumes.csv.
-  StepRecorder(const assembly::Assembler &assembler, const std::filesystem::path &dir, bool fields, bool writer,
+  StepRecorder(const assembly::ResultEvaluator &results, const std::filesystem::path &dir, bool fields, bool writer,
                std::vector<std::string> resultantSets = {}, std::vector<std::string> volumeSets = {},
                const OutputMark *resume = nullptr);
 
@@ -67,7 +68,7 @@ public:
                                                                   std::optional<double> fieldsTime = std::nullopt);
 
 private:
-  const assembly::Assembler &assembler_;
+  const assembly::ResultEvaluator evaluator_;
   bool root_, fields_;
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;

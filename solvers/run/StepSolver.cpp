@@ -4,6 +4,7 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "model/Scene.hpp"
 #include "model/SymmetryPlanes.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
@@ -61,7 +62,7 @@ StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool qui
   };
   out.uzawa = parts_.uzawa.solve(state.u, state.lambda, tolerance, onNewton, onUzawa);
   // The history at the converged state: lambda_c of every point with this step's activation.
-  if (out.uzawa.converged) out.muscle = assembly::updateMuscleHistory(parts_.assembler, state.u, parts_.history);
+  if (out.uzawa.converged) out.muscle = assembly::updateMuscleHistory(assembly::ResultEvaluator(parts_.assembler), state.u, parts_.history);
   if (out.uzawa.converged) measureCorners(state, out);
   out.ok = out.uzawa.converged && out.muscle.valid;
   if (out.ok) refuseInsideOut(state, out);
@@ -76,7 +77,7 @@ StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool qui
 // 0.2 of their element's mean, to -1.1 (s8_5 passive supine) and -0.21 (s8_4_sg), so no corner
 // threshold tells those from an element inside out as a whole (doc/theory.md).
 void StepSolver::measureCorners(const StepState &state, StepAttempt &attempt) const {
-  const auto worst = parts_.assembler.worstCorner(state.u);
+  const auto worst = assembly::ResultEvaluator(parts_.assembler).worstCorner(state.u);
   attempt.minCornerJ = worst.J;
   attempt.cornerElement = worst.element;
   attempt.minRegularCornerJ = worst.regularJ;
@@ -86,7 +87,7 @@ void StepSolver::measureCorners(const StepState &state, StepAttempt &attempt) co
 void StepSolver::refuseInsideOut(const StepState &state, StepAttempt &attempt) const {
   if (planes_.empty()) return;
   const model::PlaneCrossing deepest =
-      model::deepestCrossing(planes_, scene_.mesh, parts_.assembler.gatherDisplacement(state.u));
+      model::deepestCrossing(planes_, scene_.mesh, assembly::ResultEvaluator(parts_.assembler).gatherDisplacement(state.u));
   // Material across a symmetry plane overlaps its mirror image. A node next to a plane but not
   // on it (on another plane's edge) may sit a little across in a sound state (2.6e-9 m, 1.3e-6 of
   // the thick sphere's size, at p = 0.72 mu): 1e-3 of the body's size is the threshold.

@@ -38,7 +38,7 @@ struct StepAttempt {
   std::string why;
   double minCornerJ = 1.0;          // the smallest corner det F of the converged state
   mesh::ElementId cornerElement = 0; // where
-  double minRegularCornerJ = 1.0;   // the same over regular corners (Assembler::WorstCorner)
+  double minRegularCornerJ = 1.0;   // the same over regular corners (ResultEvaluator::WorstCorner)
   mesh::ElementId regularCornerElement = 0;
   double pathStiffness = std::numeric_limits<double>::quiet_NaN(); // S (LimitPointMonitor); NaN: not measured
   bool unstable = false;            // converged, but past a limit point (S <= 0)

@@ -5,7 +5,7 @@
 namespace glossa::assembly {
 
 void MixedPressureState::initialise(const Assembler &assembler) {
-  const Vector zero(assembler.ownedMap());
+  const Vector zero(assembler.layout().ownedMap());
   const PressureCoupling reference = assembler.pressureCoupling(zero);
   pressureScale = Teuchos::rcp(new Vector(reference.pressureMap));
   auto scale = pressureScale->getDataNonConst(0);

@@ -23,15 +23,15 @@ using MEB = Thyra::ModelEvaluatorBase;
 ModelEvaluator::ModelEvaluator(Teuchos::RCP<const Assembler> assembler,
                                Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory,
                                model::MuscleHistory *history, std::vector<mesh::NodeId> responseNodes)
-    : assembler_(std::move(assembler)), solverFactory_(std::move(solverFactory)), history_(history),
-      responseNodes_(std::move(responseNodes)) {
-  uSpace_ = Thyra::createVectorSpace<double, LO, GO, Node>(assembler_->ownedMap());
+    : assembler_(std::move(assembler)), results_(*assembler_), solverFactory_(std::move(solverFactory)),
+      history_(history), responseNodes_(std::move(responseNodes)) {
+  uSpace_ = Thyra::createVectorSpace<double, LO, GO, Node>(assembler_->layout().ownedMap());
   space_ = uSpace_;
   matrix_ = assembler_->createMatrix();
-  lambda_.assign(assembler_->numLocalElements(), 0.0);
-  const auto comm = Thyra::convertTpetraToThyraComm(assembler_->ownedMap()->getComm());
+  lambda_.assign(assembler_->layout().numLocalElements(), 0.0);
+  const auto comm = Thyra::convertTpetraToThyraComm(assembler_->layout().ownedMap()->getComm());
   timeSpace_ = Thyra::locallyReplicatedDefaultSpmdVectorSpace<double>(comm, 1);
-  elementSpace_ = Thyra::createVectorSpace<double, LO, GO, Node>(assembler_->elementMap());
+  elementSpace_ = Thyra::createVectorSpace<double, LO, GO, Node>(assembler_->layout().elementMap());
   groups_ = history_ ? static_cast<int>(assembler_->scene().muscles.groups.size()) : 0;
   if (groups_ > 0) inputSpace_ = Thyra::locallyReplicatedDefaultSpmdVectorSpace<double>(comm, groups_);
   const int Ng = responseNodes_.empty() ? 0 : 1;
@@ -263,10 +263,10 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
     withTangent = false;
     ++residualOnlyPasses_;
   }
-  Vector fScratch(assembler_->ownedMap());
+  Vector fScratch(assembler_->layout().ownedMap());
   if (withTangent) {
     lastStatus_ = assembler_->assemble(*x, time, lambda, mixed_ ? &bases_ : nullptr, f.get(), matrix_.get(),
-                                       /*trialPoint=*/true);
+                                       Assembler::BasePoint::trial);
     tangentCached_ = lastStatus_.valid;
     if (tangentCached_) {
       if (tangentPoint_.is_null() || !tangentPoint_->getMap()->isSameAs(*x->getMap()))
@@ -298,7 +298,7 @@ void ModelEvaluator::evaluateMixed(const MEB::InArgs<double> &in, const MEB::Out
   Teuchos::RCP<Thyra::ProductVectorBase<double>> f =
       fThyra.is_null() ? Teuchos::null : Teuchos::rcp_dynamic_cast<Thyra::ProductVectorBase<double>>(fThyra, true);
   const auto W = out.get_W_op();
-  Vector fScratch(assembler_->ownedMap());
+  Vector fScratch(assembler_->layout().ownedMap());
   Teuchos::RCP<Vector> fu = f.is_null() ? Teuchos::null : Extract::getTpetraVector(f->getNonconstVectorBlock(0));
   // The displacement rows at the pressures p (the kernel's volumetric energy is zero: the element
   // pressure is p_e itself), with K at fixed pressure when W is asked.
@@ -322,7 +322,7 @@ void ModelEvaluator::evaluateMixed(const MEB::InArgs<double> &in, const MEB::Out
     const double nodalSum = 8.0 * std::abs(p[i]) * std::sqrt(row) / sigma[i];
     local += nodalSum * nodalSum;
   }
-  Teuchos::reduceAll(*assembler_->comm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  Teuchos::reduceAll(*assembler_->layout().comm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
   lastStatus_.forceScale = std::sqrt(lastStatus_.forceScale * lastStatus_.forceScale + global);
   if (!f.is_null()) {
     Extract::getTpetraVector(f->getNonconstVectorBlock(1))->assign(*pressure_->constraintResidual);
@@ -348,7 +348,7 @@ void ModelEvaluator::evaluateMixed(const MEB::InArgs<double> &in, const MEB::Out
 void ModelEvaluator::evaluateResponse(const Vector &x, const MEB::OutArgs<double> &out) const {
   TEUCHOS_TEST_FOR_EXCEPTION(responseSpace_.is_null(), std::logic_error, "the model has no response nodes");
   if (const auto g = out.get_g(0); !g.is_null()) {
-    const std::vector<double> all = assembler_->gatherDisplacement(x);
+    const std::vector<double> all = results_.gatherDisplacement(x);
     for (std::size_t n = 0; n < responseNodes_.size(); ++n)
       for (int c = 0; c < 3; ++c)
         Thyra::set_ele(static_cast<Thyra::Ordinal>(3 * n + c), all[3 * responseNodes_[n] + c], g.ptr());
@@ -357,7 +357,7 @@ void ModelEvaluator::evaluateResponse(const Vector &x, const MEB::OutArgs<double
     // Gradient form: column j is d g_j / dx, one at the dof of node j / 3, component j % 3.
     const auto D = Extract::getTpetraMultiVector(dgdx);
     D->putScalar(0.0);
-    const Map &owned = *assembler_->ownedMap();
+    const Map &owned = *assembler_->layout().ownedMap();
     for (std::size_t n = 0; n < responseNodes_.size(); ++n)
       for (int c = 0; c < 3; ++c) {
         const LO row = owned.getLocalElement(static_cast<GO>(assembler_->layout().dof(responseNodes_[n], c)));
@@ -378,7 +378,7 @@ void ModelEvaluator::evaluateInputDerivative(const Vector &x, double time, const
   const double weights[3] = {-1.5, 2.0, -0.5}; // d/da at a of f(a), f(a + s h), f(a + 2 s h)
   const auto D = Extract::getTpetraMultiVector(Teuchos::rcpFromRef(dfdp));
   D->putScalar(0.0);
-  Vector f(assembler_->ownedMap());
+  Vector f(assembler_->layout().ownedMap());
   for (int g = 0; g < groups_; ++g) {
     const double alpha = history_->groupActivation(g);
     // At the input that gave alpha: the given one (InputsForOneEvaluation) or the begun step's.

@@ -23,6 +23,7 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/MixedPressureState.hpp"
+#include "assembly/ResultEvaluator.hpp"
 
 namespace glossa::assembly {
 
@@ -103,6 +104,7 @@ private:
                      const Thyra::ModelEvaluatorBase::OutArgs<double> &out) const override;
 
   Teuchos::RCP<const Assembler> assembler_;
+  ResultEvaluator results_; // of assembler_: the response g0 gathers the displacements
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;         // x and f: u, or [u; p~]
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> uSpace_;        // the owned displacements

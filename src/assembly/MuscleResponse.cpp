@@ -10,9 +10,10 @@
 
 namespace glossa::assembly {
 
-MuscleFields updateMuscleHistory(const Assembler &assembler, const Vector &u, model::MuscleHistory &history) {
-  const model::Scene &scene = assembler.scene();
-  const auto &localElements = assembler.layout().localElements;
+MuscleFields updateMuscleHistory(const ResultEvaluator &results, const Vector &u, model::MuscleHistory &history) {
+  const model::Scene &scene = results.scene();
+  const DistributedLayout &layout = results.assembler().layout();
+  const auto &localElements = layout.localElements;
   const mesh::HexMesh &mesh = scene.mesh;
   const auto &muscles = scene.muscles;
   MuscleFields out;
@@ -28,8 +29,8 @@ MuscleFields updateMuscleHistory(const Assembler &assembler, const Vector &u, mo
   // of the element's reference volume.
   std::vector<double> weighted(3 * G, 0.0), weightedAll(3 * G, 0.0);
   int localValid = 1;
-  Vector uOverlap(assembler.overlapMap());
-  assembler.importToOverlap(u, uOverlap);
+  Vector uOverlap(results.overlapMap());
+  results.importToOverlap(u, uOverlap);
   auto uData = uOverlap.getData(0);
   if (muscles.hasFibres()) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -38,7 +39,7 @@ MuscleFields updateMuscleHistory(const Assembler &assembler, const Vector &u, mo
       if (region < 0) continue;
       const model::FibreRegion &r = muscles.regions[region];
       const fem::NodeMatrix X = mesh.elementCoordinates(localElements[i]);
-      const fem::NodeMatrix ue = assembler.elementDisplacement(i, uData);
+      const fem::NodeMatrix ue = results.elementDisplacement(i, uData);
       std::array<Eigen::Matrix3d, 8> F;
       std::array<double, 8> dV;
       std::array<const double *, 8> lambdaCOld;
@@ -89,14 +90,14 @@ MuscleFields updateMuscleHistory(const Assembler &assembler, const Vector &u, mo
   }
   // The external fibres' lambda_c at the converged u (their forces are not needed here).
   std::vector<double> external(2 * G, 0.0), externalAll(2 * G, 0.0);
-  if (const ExternalMuscleForces *externals = assembler.externalMuscles())
-    if (!externals->evaluate(assembler.loadTarget(uData, nullptr, nullptr, false), &history, &external)) localValid = 0;
+  if (const ExternalMuscleForces *externals = results.externalMuscles())
+    if (!externals->evaluate(results.loadTarget(uData, nullptr, nullptr, false), &history, &external)) localValid = 0;
   int globalValid = 0;
-  Teuchos::reduceAll(*assembler.comm(), Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
+  Teuchos::reduceAll(*layout.comm(), Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
   out.valid = globalValid == 1;
   if (G > 0) {
-    Teuchos::reduceAll(*assembler.comm(), Teuchos::REDUCE_SUM, static_cast<int>(3 * G), weighted.data(), weightedAll.data());
-    Teuchos::reduceAll(*assembler.comm(), Teuchos::REDUCE_SUM, static_cast<int>(2 * G), external.data(), externalAll.data());
+    Teuchos::reduceAll(*layout.comm(), Teuchos::REDUCE_SUM, static_cast<int>(3 * G), weighted.data(), weightedAll.data());
+    Teuchos::reduceAll(*layout.comm(), Teuchos::REDUCE_SUM, static_cast<int>(2 * G), external.data(), externalAll.data());
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t g = 0; g < G; ++g) {

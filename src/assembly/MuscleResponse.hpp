@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "assembly/Assembler.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "model/MuscleHistory.hpp"
 
 namespace glossa::assembly {
@@ -31,7 +31,7 @@ struct MuscleFields {
 
 // Evaluates the muscle point laws and the external fibres at the converged u, writes their
 // lambda_c into `history`'s trial values (commit separately) and returns the fields. `history`
-// is the one the assembler reads. Collective.
-MuscleFields updateMuscleHistory(const Assembler &assembler, const Vector &u, model::MuscleHistory &history);
+// is the one the assembler reads (results.muscleHistory(), here writable). Collective.
+MuscleFields updateMuscleHistory(const ResultEvaluator &results, const Vector &u, model::MuscleHistory &history);
 
 } // namespace glossa::assembly

@@ -18,6 +18,7 @@
 
 #include "RunDeck.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "input/SceneFactory.hpp"
 
 using namespace glossa;
@@ -101,11 +102,11 @@ TEST(ModelParameters, InputDerivativeResponseAndMultipliers) {
     const Eigen::Vector3d &X = scene.mesh.nodes[n];
     all[3 * n] = 0.02 * X(0) + 0.01 * X(1), all[3 * n + 1] = -0.01 * X(1), all[3 * n + 2] = -0.01 * X(2);
   }
-  assembly::Vector u(assembler->ownedMap());
-  assembler->scatterDisplacement(all, u);
+  assembly::Vector u(assembler->layout().ownedMap());
+  assembly::ResultEvaluator(*assembler).scatterDisplacement(all, u);
   const auto x = Thyra::createConstVector<double, assembly::LO, assembly::GO, assembly::Node>(Teuchos::rcpFromRef(u),
                                                                                            model.get_x_space());
-  std::vector<double> lambda(assembler->numLocalElements());
+  std::vector<double> lambda(assembler->layout().numLocalElements());
   for (std::size_t i = 0; i < lambda.size(); ++i) lambda[i] = 10.0 * static_cast<double>(i % 5);
   model.setMultipliers(lambda);
 
@@ -143,7 +144,7 @@ TEST(ModelParameters, InputDerivativeResponseAndMultipliers) {
       at.set_p(assembly::ModelEvaluator::kNeuralInputs, p);
       return residual(at);
     };
-    assembly::Vector difference(assembler->ownedMap());
+    assembly::Vector difference(assembler->layout().ownedMap());
     difference.update(0.5 / delta, *shifted(delta), -0.5 / delta, *shifted(-delta), 0.0);
     const auto column = Extract::getConstTpetraMultiVector(dfdp)->getVector(static_cast<std::size_t>(j));
     ASSERT_GT(difference.norm2(), 0.0) << "group " << j << " does not act on the residual";
@@ -154,7 +155,7 @@ TEST(ModelParameters, InputDerivativeResponseAndMultipliers) {
   // local contractile solves: they start from their last roots, which the shifted evaluations
   // moved, and stop within their x-resolution (1e-14) of the root; an activation left shifted by
   // delta would move the residual by about delta |DfDp| instead.
-  assembly::Vector back(assembler->ownedMap());
+  assembly::Vector back(assembler->layout().ownedMap());
   back.update(1.0, *residual(in), -1.0, *f0, 0.0);
   EXPECT_LT(back.norm2(), 1e-12 * f0->norm2());
 

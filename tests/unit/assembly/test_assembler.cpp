@@ -16,62 +16,18 @@
 #include <vector>
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Tpetra_Core.hpp>
 
-#include "assembly/Assembler.hpp"
+#include "BlockFixture.hpp"
 #include "assembly/ModelEvaluator.hpp"
-#include "materials/NeoHookean.hpp"
-#include "mesh/BoxGenerator.hpp"
+#include "assembly/NullSpace.hpp"
 #include "solvers/linear/LinearSolverFactory.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 
 using namespace glossa;
+using namespace glossa::assembly::testing;
 
 namespace {
-constexpr double kSide = 1e-2, kMu = 1e4, kDensity = 1000.0, kGravity = 9.81;
-
-// The block: 2 x 2 x 2 cells of a 1 cm cube, mu = 10 kPa, nu as given, clamped on x = 0 (all
-// three components, the values `clamp`), its weight along -z.
-model::Scene block(double nu, const Eigen::Vector3d &clamp = Eigen::Vector3d::Zero()) {
-  model::Scene scene;
-  scene.mesh = mesh::generateBox(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(kSide), {2, 2, 2});
-  model::Tissue tissue;
-  tissue.name = "block";
-  tissue.matrix = std::make_shared<materials::NeoHookean>(kMu);
-  tissue.volumetric = materials::VolumetricEnergy(materials::VolumetricEnergy::Form::SimoTaylor,
-                                                  materials::bulkModulus(kMu, nu));
-  tissue.density = kDensity;
-  scene.tissues.push_back(tissue);
-  model::DirichletCondition clamped;
-  clamped.name = "clamp";
-  clamped.nodes = scene.mesh.nodeSets.at("xmin");
-  clamped.fixed = {true, true, true};
-  clamped.value = clamp;
-  scene.dirichlet.push_back(clamped);
-  model::BodyForceLoad weight;
-  weight.name = "weight";
-  for (std::size_t e = 0; e < scene.mesh.numElements(); ++e) weight.elements.push_back(static_cast<mesh::ElementId>(e));
-  weight.acceleration = Eigen::Vector3d(0.0, 0.0, -kGravity);
-  scene.bodyForces.push_back(weight);
-  return scene;
-}
-
-Teuchos::RCP<const assembly::Comm> world() { return Tpetra::getDefaultComm(); }
-
-// A smooth displacement field (a bend and a stretch, 2 % of the side) on the free dofs.
-void deform(const assembly::Assembler &assembler, assembly::Vector &u) {
-  const auto &nodes = assembler.scene().mesh.nodes;
-  std::vector<double> all(3 * nodes.size());
-  for (std::size_t n = 0; n < nodes.size(); ++n) {
-    const Eigen::Vector3d X = nodes[n] / kSide;
-    all[3 * n] = 0.02 * kSide * X.x() * X.y();
-    all[3 * n + 1] = -0.01 * kSide * X.x() * X.x();
-    all[3 * n + 2] = 0.015 * kSide * X.x() * (1.0 + X.z());
-  }
-  assembler.scatterDisplacement(all, u);
-}
-
 double globalMaxAbs(const assembly::Vector &v) { return v.normInf(); }
 
 // The mesh node of every global node number (the layout renumbers nodes rank by rank).
@@ -80,15 +36,6 @@ std::vector<mesh::NodeId> meshNodeOfNumber(const assembly::DofLayout &layout) {
   for (std::size_t n = 0; n < node.size(); ++n) node[static_cast<std::size_t>(layout.nodeNumber[n])] = static_cast<mesh::NodeId>(n);
   return node;
 }
-// The assembler with the muscle history it reads, owned beside it as the simulation does.
-struct AssemblerWithHistory {
-  AssemblerWithHistory(const model::Scene &scene, const Teuchos::RCP<const assembly::Comm> &comm)
-      : layout(assembly::distributeScene(scene, comm)), history(scene.muscles, layout.localElements),
-        assembler(Teuchos::rcp(new assembly::Assembler(scene, layout, history, comm))) {}
-  assembly::DofLayout layout;
-  model::MuscleHistory history;
-  Teuchos::RCP<assembly::Assembler> assembler;
-};
 } // namespace
 
 TEST(Assembler, GraphCouplesEachNodeWithTheNodesOfItsElements) {
@@ -100,7 +47,7 @@ TEST(Assembler, GraphCouplesEachNodeWithTheNodesOfItsElements) {
   for (const auto &hex : scene.mesh.elements)
     for (auto a : hex)
       for (auto b : hex) neighbours[a].insert(b);
-  const auto map = assembler.ownedMap();
+  const auto map = assembler.layout().ownedMap();
   const auto nodeOf = meshNodeOfNumber(assembler.layout());
   ASSERT_EQ(map->getGlobalNumElements(), 3u * 27u);
   long long mine = 0, entries = 0;
@@ -124,14 +71,14 @@ TEST(Assembler, DirichletDofsHoldTheirValuesWithNoResidualAndADiagonalRow) {
   const model::Scene scene = block(0.3, g);
   const AssemblerWithHistory built(scene, world());
   const assembly::Assembler &assembler = *built.assembler;
-  assembly::Vector u(assembler.ownedMap()), f(assembler.ownedMap());
-  deform(assembler, u);
+  assembly::Vector u(assembler.layout().ownedMap()), f(assembler.layout().ownedMap());
+  deform(built.results, u);
   assembler.applyDirichlet(u, 1.0);
   const auto K = assembler.createMatrix();
-  const std::vector<double> lambda(assembler.numLocalElements(), 0.0);
+  const std::vector<double> lambda(assembler.layout().numLocalElements(), 0.0);
   ASSERT_TRUE(assembler.assemble(u, 1.0, lambda, nullptr, &f, K.get()).valid);
   const std::set<mesh::NodeId> clamped(scene.dirichlet[0].nodes.begin(), scene.dirichlet[0].nodes.end());
-  const auto map = assembler.ownedMap();
+  const auto map = assembler.layout().ownedMap();
   const auto nodeOf = meshNodeOfNumber(assembler.layout());
   const auto uData = u.getData(0), fData = f.getData(0);
   int constrainedRows = 0;
@@ -169,16 +116,16 @@ TEST(Assembler, TangentIsTheCentralDifferenceOfTheResidual) {
   const model::Scene scene = block(0.45);
   const AssemblerWithHistory built(scene, world());
   const assembly::Assembler &assembler = *built.assembler;
-  const auto map = assembler.ownedMap();
+  const auto map = assembler.layout().ownedMap();
   assembly::Vector u(map), v(map), Kv(map), fPlus(map), fMinus(map), f(map);
-  deform(assembler, u);
+  deform(built.results, u);
   assembler.applyDirichlet(u, 1.0);
   // A direction on the free dofs, of the size of the deformation.
   std::vector<double> all(3 * scene.mesh.nodes.size());
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = 1e-4 * kSide * std::sin(1.7 * static_cast<double>(k) + 0.3);
-  assembler.scatterDisplacement(all, v);
+  built.results.scatterDisplacement(all, v);
   assembler.zeroConstrainedDofs(v);
-  const std::vector<double> lambda(assembler.numLocalElements(), 0.0);
+  const std::vector<double> lambda(assembler.layout().numLocalElements(), 0.0);
   const auto K = assembler.createMatrix();
   ASSERT_TRUE(assembler.assemble(u, 1.0, lambda, nullptr, &f, K.get()).valid);
   K->apply(v, Kv);
@@ -202,8 +149,8 @@ TEST(NewtonSolver, ConvergesQuadraticallyAndTheReactionsBalanceTheWeight) {
   const model::Scene scene = block(0.3);
   const AssemblerWithHistory built(scene, world());
   const auto assembler = built.assembler;
-  solvers::LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), world()->getSize(),
-                                       assembler->layout().numGlobalDofs(), true};
+  solvers::LinearSolverContext context{assembly::coordinates(*assembler), assembly::rigidBodyModes(*assembler),
+                                       world()->getSize(), assembler->layout().numGlobalDofs(), true};
   const auto model = Teuchos::rcp(
       new assembly::ModelEvaluator(assembler, solvers::buildLinearSolver(solvers::LinearSolverParameters{}, context)));
   model->setTime(1.0);
@@ -211,7 +158,7 @@ TEST(NewtonSolver, ConvergesQuadraticallyAndTheReactionsBalanceTheWeight) {
   parameters.residualTolerance = 1e-12;
   parameters.updateTolerance = 1e-14;
   const solvers::NewtonSolver newton(model, parameters, kSide, 1e-12);
-  assembly::Vector u(assembler->ownedMap());
+  assembly::Vector u(assembler->layout().ownedMap());
   assembler->applyDirichlet(u, 1.0);
   const double load = assembler->externalForceNorm(1.0);
   const solvers::NewtonResult r = newton.solve(u, 1e-11 * load, nullptr);
@@ -225,8 +172,8 @@ TEST(NewtonSolver, ConvergesQuadraticallyAndTheReactionsBalanceTheWeight) {
       EXPECT_LT(norms[k + 1] / norms[0], 10.0 * std::pow(norms[k] / norms[0], 2)) << "iteration " << k + 1;
     }
   // The support carries the whole weight, rho g V, and nothing sideways.
-  const std::vector<double> lambda(assembler->numLocalElements(), 0.0);
-  const auto reactions = assembler->reactions(u, 1.0, lambda);
+  const std::vector<double> lambda(assembler->layout().numLocalElements(), 0.0);
+  const auto reactions = built.results.reactions(u, 1.0, lambda);
   ASSERT_EQ(reactions.size(), 1u);
   const double weight = kDensity * kGravity * kSide * kSide * kSide;
   EXPECT_NEAR(reactions[0].force.z() / weight, 1.0, 1e-9);
@@ -247,20 +194,20 @@ TEST(UzawaLoop, BringsANearlyIncompressibleBlockToItsDilatationTolerance) {
   EXPECT_NEAR(scene.tissues[0].volumetric.kappa(), 1.0 / (1.0 / kappa + 1.0 / kappaAL), 1e-9 * kappaAL);
   const AssemblerWithHistory built(scene, world());
   const auto assembler = built.assembler;
-  solvers::LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), world()->getSize(),
-                                       assembler->layout().numGlobalDofs(), true};
+  solvers::LinearSolverContext context{assembly::coordinates(*assembler), assembly::rigidBodyModes(*assembler),
+                                       world()->getSize(), assembler->layout().numGlobalDofs(), true};
   const auto model = Teuchos::rcp(new assembly::ModelEvaluator(
       assembler, solvers::buildLinearSolver(solvers::LinearSolverParameters{}, context)));
   model->setTime(1.0);
   const solvers::NewtonSolver newton(model, solvers::NewtonParameters{}, kSide, 1e-10);
-  const solvers::UzawaLoop uzawa(*assembler, newton, incompressibility, physical);
-  assembly::Vector u(assembler->ownedMap());
-  std::vector<double> lambda(assembler->numLocalElements(), 0.0);
+  const solvers::UzawaLoop uzawa(built.results, newton, incompressibility, physical);
+  assembly::Vector u(assembler->layout().ownedMap());
+  std::vector<double> lambda(assembler->layout().numLocalElements(), 0.0);
   model->setMultipliers(lambda);
   const solvers::UzawaResult r = uzawa.solve(u, lambda, 1e-10 * assembler->externalForceNorm(1.0), nullptr, nullptr);
   ASSERT_TRUE(r.converged);
   EXPECT_GE(r.solves, 2); // the multipliers had to move
   EXPECT_LT(r.dilatation.max, 1e-6);
-  const solvers::DilatationError e = uzawa.dilatationError(assembler->elementDilatations(u, lambda));
+  const solvers::DilatationError e = uzawa.dilatationError(built.results.elementDilatations(u, lambda));
   EXPECT_LT(e.max, 1e-6);
 }

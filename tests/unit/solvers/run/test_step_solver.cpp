@@ -9,6 +9,8 @@
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/NullSpace.hpp"
+#include "assembly/ResultEvaluator.hpp"
 #include "materials/NeoHookean.hpp"
 #include "mesh/BoxGenerator.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
@@ -60,11 +62,11 @@ struct Stack {
     assembly::DofLayout layout = assembly::distributeScene(scene, comm);
     history = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
     assembler = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *history, comm));
-    LinearSolverContext context{assembler->coordinates(), assembler->rigidBodyModes(), comm->getSize(),
+    LinearSolverContext context{assembly::coordinates(*assembler), assembly::rigidBodyModes(*assembler), comm->getSize(),
                                 assembler->layout().numGlobalDofs(), true};
     evaluator = Teuchos::rcp(new assembly::ModelEvaluator(assembler, buildLinearSolver(LinearSolverParameters{}, context)));
     newton = std::make_unique<NewtonSolver>(evaluator, NewtonParameters{}, kSide, 1e-10);
-    uzawa = std::make_unique<UzawaLoop>(*assembler, *newton, incompressibility, physical);
+    uzawa = std::make_unique<UzawaLoop>(assembly::ResultEvaluator(*assembler), *newton, incompressibility, physical);
     solver = std::make_unique<StepSolver>(StepSolverParts{*assembler, *evaluator, *newton, *uzawa, *history}, scene,
                                           ReuseScope::newtonSolve, false);
   }
@@ -82,7 +84,7 @@ struct Stack {
 
 TEST(StepSolver, AStepReachesTheDilatationToleranceAndTheSupportsCarryTheWeight) {
   Stack s;
-  StepState state(s.assembler->ownedMap(), s.assembler->numLocalElements());
+  StepState state(s.assembler->layout().ownedMap(), s.assembler->layout().numLocalElements());
   const StepAttempt a = s.solver->solve(1.0, 1.0, state, true);
   ASSERT_TRUE(a.ok) << a.why;
   EXPECT_LT(a.uzawa.dilatation.max, 1e-6);
@@ -92,21 +94,21 @@ TEST(StepSolver, AStepReachesTheDilatationToleranceAndTheSupportsCarryTheWeight)
   EXPECT_TRUE(a.insideOut.is_null());
   // The supports' vertical reactions balance the weight rho g V.
   double lift = 0.0;
-  for (const auto &r : s.assembler->reactions(state.u, 1.0, state.lambda)) lift += r.force.z();
+  for (const auto &r : assembly::ResultEvaluator(*s.assembler).reactions(state.u, 1.0, state.lambda)) lift += r.force.z();
   const double weight = kDensity * kGravity * kSide * kSide * kSide;
   EXPECT_NEAR(lift, weight, 1e-6 * weight);
 }
 
 TEST(StepSolver, AStateAcrossItsSymmetryPlaneIsRefused) {
   Stack s;
-  StepState state(s.assembler->ownedMap(), s.assembler->numLocalElements());
+  StepState state(s.assembler->layout().ownedMap(), s.assembler->layout().numLocalElements());
   // The node at (side, side, side) moved to y = -side / 2: across the plane y = 0.
   std::vector<double> all(3 * s.scene.mesh.numNodes(), 0.0);
   std::size_t corner = 0;
   for (std::size_t n = 0; n < s.scene.mesh.numNodes(); ++n)
     if (s.scene.mesh.nodes[n].isApprox(Eigen::Vector3d::Constant(kSide))) corner = n;
   all[3 * corner + 1] = -1.5 * kSide;
-  s.assembler->scatterDisplacement(all, state.u);
+  assembly::ResultEvaluator(*s.assembler).scatterDisplacement(all, state.u);
   StepAttempt a;
   a.ok = true;
   s.solver->refuseInsideOut(state, a);
@@ -118,7 +120,7 @@ TEST(StepSolver, AStateAcrossItsSymmetryPlaneIsRefused) {
 
 TEST(StepSolver, AStateOnItsSideOfThePlaneIsKept) {
   Stack s;
-  StepState state(s.assembler->ownedMap(), s.assembler->numLocalElements());
+  StepState state(s.assembler->layout().ownedMap(), s.assembler->layout().numLocalElements());
   StepAttempt a;
   a.ok = true;
   s.solver->refuseInsideOut(state, a);

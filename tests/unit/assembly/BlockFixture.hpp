@@ -1,0 +1,71 @@
+#pragma once
+// The block the distributed assembly tests share, built without a deck: 2 x 2 x 2 cells of a
+// 1 cm cube, neo-Hookean, clamped at x = 0, under its own weight; the assembler with the muscle
+// history it reads and its result evaluator, owned side by side as the simulation owns them.
+
+#include <memory>
+#include <vector>
+
+#include <Tpetra_Core.hpp>
+
+#include "assembly/Assembler.hpp"
+#include "assembly/ResultEvaluator.hpp"
+#include "materials/NeoHookean.hpp"
+#include "mesh/BoxGenerator.hpp"
+
+namespace glossa::assembly::testing {
+
+constexpr double kSide = 1e-2, kMu = 1e4, kDensity = 1000.0, kGravity = 9.81;
+
+// mu = 10 kPa, nu as given, clamped on x = 0 (all three components, the values `clamp`), its
+// weight along -z.
+inline model::Scene block(double nu, const Eigen::Vector3d &clamp = Eigen::Vector3d::Zero()) {
+  model::Scene scene;
+  scene.mesh = mesh::generateBox(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(kSide), {2, 2, 2});
+  model::Tissue tissue;
+  tissue.name = "block";
+  tissue.matrix = std::make_shared<materials::NeoHookean>(kMu);
+  tissue.volumetric = materials::VolumetricEnergy(materials::VolumetricEnergy::Form::SimoTaylor,
+                                                  materials::bulkModulus(kMu, nu));
+  tissue.density = kDensity;
+  scene.tissues.push_back(tissue);
+  model::DirichletCondition clamped;
+  clamped.name = "clamp";
+  clamped.nodes = scene.mesh.nodeSets.at("xmin");
+  clamped.fixed = {true, true, true};
+  clamped.value = clamp;
+  scene.dirichlet.push_back(clamped);
+  model::BodyForceLoad weight;
+  weight.name = "weight";
+  for (std::size_t e = 0; e < scene.mesh.numElements(); ++e) weight.elements.push_back(static_cast<mesh::ElementId>(e));
+  weight.acceleration = Eigen::Vector3d(0.0, 0.0, -kGravity);
+  scene.bodyForces.push_back(weight);
+  return scene;
+}
+
+inline Teuchos::RCP<const Comm> world() { return Tpetra::getDefaultComm(); }
+
+// A smooth displacement field (a bend and a stretch, 2 % of the side) on the free dofs.
+inline void deform(const ResultEvaluator &results, Vector &u) {
+  const auto &nodes = results.scene().mesh.nodes;
+  std::vector<double> all(3 * nodes.size());
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    const Eigen::Vector3d X = nodes[n] / kSide;
+    all[3 * n] = 0.02 * kSide * X.x() * X.y();
+    all[3 * n + 1] = -0.01 * kSide * X.x() * X.x();
+    all[3 * n + 2] = 0.015 * kSide * X.x() * (1.0 + X.z());
+  }
+  results.scatterDisplacement(all, u);
+}
+
+struct AssemblerWithHistory {
+  AssemblerWithHistory(const model::Scene &scene, const Teuchos::RCP<const Comm> &comm)
+      : layout(distributeScene(scene, comm)), history(scene.muscles, layout.localElements),
+        assembler(Teuchos::rcp(new Assembler(scene, layout, history, comm))), results(*assembler) {}
+  DofLayout layout;
+  model::MuscleHistory history;
+  Teuchos::RCP<Assembler> assembler;
+  ResultEvaluator results;
+};
+
+} // namespace glossa::assembly::testing
