@@ -5,48 +5,27 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include "io/deck/DeckError.hpp"
+#include <stdexcept>
+#include <string>
 
 namespace glossa::solvers {
 
-double UzawaLoop::augmentationKappa(const IncompressibilityParameters &p, double mu) {
-  return p.penaltyRatio * mu;
-}
-
-double UzawaLoop::tangentKappa(const IncompressibilityParameters &s, double materialKappa, double mu) {
-  // Mixed: the kernel carries no volumetric energy; the pressure unknowns carry the law.
-  if (s.method == IncompressibilityMethod::mixed) return 0.0;
-  if (s.method == IncompressibilityMethod::augmentedLagrangian)
-    return AugmentedLagrangianRule(materials::VolumetricEnergy(materials::VolumetricEnergy::Form::Quadratic, materialKappa),
-                                   augmentationKappa(s, mu))
-        .tangentKappa();
-  if (!std::isfinite(materialKappa))
-    throw io::DeckError("Material: an infinite bulk modulus (Poisson's ratio = 0.5, exact incompressibility) "
-                        "needs Incompressibility/method = augmented Lagrangian or mixed; a penalty needs nu < 0.5");
-  return materialKappa;
-}
-
 UzawaLoop::UzawaLoop(const assembly::ResultEvaluator &results, const NewtonSolver &newton,
-                     const IncompressibilityParameters &s, const std::vector<materials::VolumetricEnergy> &physical)
-    : results_(results), newton_(newton), augmented_(s.method == IncompressibilityMethod::augmentedLagrangian),
+                     const IncompressibilityParameters &s, Augmentation &augmentation)
+    : results_(results), newton_(newton), augmentation_(augmentation), augmented_(s.method == IncompressibilityMethod::augmentedLagrangian),
       mixed_(s.method == IncompressibilityMethod::mixed), tolerance_(s.dilatationTolerance),
       maxIterations_(s.maximumUzawaIterations), inexact_(augmented_ && s.inexactUzawa),
       innerTolerance_(s.innerTolerance), innerLinearTolerance_(s.innerLinearTolerance) {
   const model::Scene &scene = results.scene();
-  physical_ = physical;
-  for (std::size_t t = 0; t < scene.tissues.size(); ++t) {
-    mu_.push_back(scene.tissues[t].matrix->shearModulus());
-    ratio_.push_back(s.penaltyRatio);
-    rules_.emplace_back(physical.at(t), ratio_.back() * mu_.back());
-  }
+  if (augmentation.tissues() != scene.tissues.size())
+    throw std::invalid_argument("UzawaLoop: an augmentation of " + std::to_string(augmentation.tissues()) +
+                                " tissues for a scene of " + std::to_string(scene.tissues.size()));
   for (const auto e : results.assembler().layout().localElements)
     localTissue_.push_back(scene.elementTissue.empty() ? 0 : scene.elementTissue[static_cast<std::size_t>(e)]);
 }
 
-std::vector<double> UzawaLoop::penaltyRatios() const { return ratio_; }
-
 std::vector<double> UzawaLoop::tissueErrors(const assembly::ElementFields &f) const {
-  std::vector<double> local(rules_.size(), 0.0), global(rules_.size(), 0.0);
+  std::vector<double> local(augmentation_.tissues(), 0.0), global(augmentation_.tissues(), 0.0);
   for (std::size_t i = 0; i < f.theta.size(); ++i)
     local[localTissue_[i]] = std::max(local[localTissue_[i]], ruleOf(i).dilatationError(f.theta[i], f.pressure[i]));
   Teuchos::reduceAll(*results_.assembler().layout().comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()),
@@ -57,7 +36,7 @@ std::vector<double> UzawaLoop::tissueErrors(const assembly::ElementFields &f) co
 std::vector<int> UzawaLoop::activeTissues() const {
   const model::Scene &scene = results_.scene();
   const model::MuscleHistory &history = results_.muscleHistory();
-  std::vector<int> local(rules_.size(), 0), global(rules_.size(), 0);
+  std::vector<int> local(augmentation_.tissues(), 0), global(augmentation_.tissues(), 0);
   const assembly::DistributedLayout &layout = results_.assembler().layout();
   const auto &elements = layout.localElements;
   for (std::size_t i = 0; i < elements.size() && scene.muscles.hasFibres(); ++i) {
@@ -73,28 +52,23 @@ std::vector<int> UzawaLoop::activeTissues() const {
 bool UzawaLoop::raiseSlowTissues(const std::vector<double> &errors, const std::vector<double> &previous) const {
   bool raised = false;
   const std::vector<int> active = activeTissues();
-  for (std::size_t t = 0; t < rules_.size(); ++t) {
+  for (std::size_t t = 0; t < augmentation_.tissues(); ++t) {
     if (!active[t]) continue;
     if (!(errors[t] > tolerance_) || !(errors[t] > kSlowContraction * previous[t])) continue;
-    if (ratio_[t] * kAugmentationGrowth > kMaximumPenaltyRatio) continue;
-    ratio_[t] *= kAugmentationGrowth;
-    rules_[t] = AugmentedLagrangianRule(physical_[t], ratio_[t] * mu_[t]);
-    if (onRaise_) onRaise_(t, rules_[t].tangentKappa());
+    const double ratio = augmentation_.ratios()[t];
+    if (ratio * kAugmentationGrowth > kMaximumPenaltyRatio) continue;
+    augmentation_.setRatio(t, ratio * kAugmentationGrowth);
     raised = true;
   }
   return raised;
 }
 
 void UzawaLoop::restorePenaltyRatios(const std::vector<double> &ratios) {
-  if (ratios.size() != ratio_.size())
+  if (ratios.size() != augmentation_.tissues())
     throw std::invalid_argument("UzawaLoop::restorePenaltyRatios: " + std::to_string(ratios.size()) + " ratios for " +
-                                std::to_string(ratio_.size()) + " tissues");
-  for (std::size_t t = 0; t < ratio_.size(); ++t) {
-    if (ratios[t] == ratio_[t]) continue;
-    ratio_[t] = ratios[t];
-    rules_[t] = AugmentedLagrangianRule(physical_[t], ratio_[t] * mu_[t]);
-    if (onRaise_) onRaise_(t, rules_[t].tangentKappa());
-  }
+                                std::to_string(augmentation_.tissues()) + " tissues");
+  for (std::size_t t = 0; t < ratios.size(); ++t)
+    if (ratios[t] != augmentation_.ratios()[t]) augmentation_.setRatio(t, ratios[t]);
 }
 
 DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) const {

@@ -10,8 +10,7 @@
 #include <vector>
 
 #include "assembly/ResultEvaluator.hpp"
-#include "materials/VolumetricEnergy.hpp"
-#include "solvers/incompressibility/AugmentedLagrangianRule.hpp"
+#include "solvers/incompressibility/Augmentation.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
 #include "solvers/nonlinear/SolveStatistics.hpp"
 #include "solvers/parameters/IncompressibilityParameters.hpp"
@@ -21,19 +20,14 @@ namespace glossa::solvers {
 class UzawaLoop {
 public:
   // `results`: of the assembler Newton's model evaluates, for the element dilatations after each
-  // solve (kept as a copy: it is a view). `physical`: per tissue of its scene, its volumetric law
-  // (kappa = inf for nu = 0.5); each tissue's kappa_AL is the penalty ratio times its matrix's
-  // shear modulus.
+  // solve (kept as a copy: it is a view). `augmentation`: per tissue of its scene, the physical
+  // law, kappa_AL and rule, which this loop raises where it contracts slowly (below); it must
+  // outlive the loop, and the assembly reads its tangent laws.
   UzawaLoop(const assembly::ResultEvaluator &results, const NewtonSolver &newton,
-            const IncompressibilityParameters &parameters, const std::vector<materials::VolumetricEnergy> &physical);
+            const IncompressibilityParameters &parameters, Augmentation &augmentation);
 
   bool augmentedLagrangian() const { return augmented_; }
   bool mixedPressure() const { return mixed_; }
-  // kappa_AL = penalty ratio x mu (augmented Lagrangian only).
-  static double augmentationKappa(const IncompressibilityParameters &parameters, double mu);
-  // kappa in the tangent: kappa_t = kappa kappa_AL / (kappa + kappa_AL) in augmented-Lagrangian
-  // mode, the material's otherwise (io::DeckError if that is infinite).
-  static double tangentKappa(const IncompressibilityParameters &parameters, double materialKappa, double mu);
 
   // Solves at fixed time; u and lambda are updated in place (the caller keeps copies to roll
   // back). `residualTolerance` is absolute, or given by the norm of the first Newton solve's
@@ -57,19 +51,18 @@ public:
   // group at alpha > 0), once a step has taken kSlowSolves solves and the tissue's largest
   // dilatation error fell by less than kSlowContraction over the last tight one, its kappa_AL is
   // raised by kAugmentationGrowth (up to kMaximumPenaltyRatio mu) for the rest of the run, and
-  // its tangent's kappa_t with it through `onRaise(tissue, kappa_t)`. Loops of a few solves
+  // its tangent's kappa_t with it (Augmentation::setRatio). Loops of a few solves
   // (every stored scene) and tissues without active fibres (the thick sphere near its limit
   // point, where Uzawa slows for another reason) are never touched. Off under a controller (set
   // false by its owner): a raise inside one candidate's solve would change the others', and GA
   // control groups solving different candidates would no longer agree.
   static constexpr double kSlowContraction = 0.5, kAugmentationGrowth = 10.0, kMaximumPenaltyRatio = 1e5;
   static constexpr int kSlowSolves = 6;
-  void onKappaRaised(std::function<void(std::size_t, double)> onRaise) { onRaise_ = std::move(onRaise); }
   void allowKappaRaises(bool allow) { allowRaises_ = allow; }
   // kappa_AL / mu of each tissue now.
-  std::vector<double> penaltyRatios() const;
+  const std::vector<double> &penaltyRatios() const { return augmentation_.ratios(); }
   // A restart's: the ratios a checkpoint kept; a tissue whose kappa_AL had been raised gets it
-  // again, with its kappa_t through onKappaRaised. Throws std::invalid_argument for a wrong count.
+  // again, with its kappa_t. Throws std::invalid_argument for a wrong count.
   void restorePenaltyRatios(const std::vector<double> &ratios);
 
 private:
@@ -86,14 +79,12 @@ private:
   bool raiseSlowTissues(const std::vector<double> &errors, const std::vector<double> &previous) const;
   // Per tissue: whether a local element on any rank has a fibre family whose group is active now. Collective.
   std::vector<int> activeTissues() const;
-  mutable std::vector<AugmentedLagrangianRule> rules_; // per tissue (kappa_AL may be raised)
-  std::vector<materials::VolumetricEnergy> physical_;  // per tissue
-  std::vector<double> mu_;                              // per tissue: the matrix shear modulus
-  mutable std::vector<double> ratio_;                   // kappa_AL / mu per tissue
-  std::function<void(std::size_t, double)> onRaise_;
+  Augmentation &augmentation_; // per tissue: kappa_AL, its rule, the tangent's law (raised here)
   bool allowRaises_ = true;
   std::vector<int> localTissue_;               // per local element: its tissue
-  const AugmentedLagrangianRule &ruleOf(std::size_t localElement) const { return rules_[localTissue_[localElement]]; }
+  const AugmentedLagrangianRule &ruleOf(std::size_t localElement) const {
+    return augmentation_.rule(static_cast<std::size_t>(localTissue_[localElement]));
+  }
   double tolerance_;
   int maxIterations_;
   bool inexact_;              // Uzawa acceleration = inexact inner solves

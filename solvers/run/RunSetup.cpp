@@ -25,16 +25,19 @@ RunParts::~RunParts() = default;
 StepSolverParts RunParts::stepSolverParts() const { return {*assembler, *model, *newton, *uzawa, *history}; }
 
 namespace {
-// The scene, each tissue's volumetric law kept physical for the Uzawa loop while the tangent's
-// gets its kappa_t.
+// The scene (a command's adjustment applied), then each tissue's augmentation from its physical
+// law: the scene keeps the physical laws, the tangent gets its kappa_t from the augmentation.
 void buildScene(const io::Deck &deck, RunParts &run) {
-  run.scene = std::make_unique<model::Scene>(input::buildScene(deck, run.config.time.steps.endTime));
-  if (run.options.adjustScene) run.options.adjustScene(*run.scene);
-  for (auto &tissue : run.scene->tissues) {
-    run.physicalVolumetric.push_back(tissue.volumetric);
-    tissue.volumetric = tissue.volumetric.withKappa(UzawaLoop::tangentKappa(
-        run.config.incompressibility, tissue.volumetric.kappa(), tissue.matrix->shearModulus()));
+  auto scene = std::make_unique<model::Scene>(input::buildScene(deck, run.config.time.steps.endTime));
+  if (run.options.adjustScene) run.options.adjustScene(*scene);
+  std::vector<materials::VolumetricEnergy> physical;
+  std::vector<double> mu;
+  for (const auto &tissue : scene->tissues) {
+    physical.push_back(tissue.volumetric);
+    mu.push_back(tissue.matrix->shearModulus());
   }
+  run.scene = std::move(scene);
+  run.augmentation = std::make_unique<Augmentation>(run.config.incompressibility, std::move(physical), std::move(mu));
 }
 
 ArcLengthSettings arcLengthSettings(const RunConfiguration &config, const assembly::Assembler &assembler) {
@@ -57,17 +60,18 @@ ArcLengthSettings arcLengthSettings(const RunConfiguration &config, const assemb
 // sensitivities to the neural inputs).
 void buildSolvers(RunParts &run) {
   const RunConfiguration &config = run.config;
-  model::Scene &scene = *run.scene;
+  const model::Scene &scene = *run.scene;
   const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = run.groups->groupComm();
   assembly::DofLayout layout = assembly::distributeScene(scene, solverComm);
   run.history = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
-  run.assembler = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *run.history, solverComm));
+  run.assembler = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *run.history, solverComm,
+                                                        &run.augmentation->tangentLaws()));
   LinearSolverContext context{assembly::coordinates(*run.assembler), assembly::rigidBodyModes(*run.assembler), solverComm->getSize(),
                               run.assembler->layout().numGlobalDofs(), scene.symmetricTangent};
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
   if (config.incompressibility.method == IncompressibilityMethod::mixed)
     mixedPressure = Teuchos::rcp(
-        new assembly::MixedPressureState(run.physicalVolumetric[0], scene.tissues[0].matrix->shearModulus()));
+        new assembly::MixedPressureState(run.augmentation->physicalLaw(0), run.augmentation->mu(0)));
   run.linearPlan = planLinearSolver(config.linear, context, !mixedPressure.is_null());
   run.model = Teuchos::rcp(new assembly::ModelEvaluator(
       run.assembler, mixedPressure.is_null() ? buildLinearSolver(config.linear, context)
@@ -78,21 +82,14 @@ void buildSolvers(RunParts &run) {
   for (const auto &x : scene.mesh.nodes) lengthScale = std::max(lengthScale, x.norm());
   run.newton = std::make_unique<NewtonSolver>(run.model, config.newton, lengthScale, config.linear.tolerance,
                                               run.linearPlan.keptScope != ReuseScope::newtonSolve);
-  run.uzawa = std::make_unique<UzawaLoop>(assembly::ResultEvaluator(*run.assembler), *run.newton, config.incompressibility, run.physicalVolumetric);
-  // A raised kappa_AL reaches the tangent through the tissue's volumetric law (the Assembler's).
-  run.uzawa->onKappaRaised([&run](std::size_t tissue, double kappaT) {
-    model::Tissue &t = run.scene->tissues[tissue];
-    t.volumetric = t.volumetric.withKappa(kappaT);
-    if (run.talk)
-      std::printf("  note: the Uzawa loop contracts slowly in tissue '%s': kappa_AL raised to %.3g mu for the rest of "
-                  "the run\n", t.name.c_str(), run.uzawa->penaltyRatios()[tissue]);
-  });
+  run.uzawa = std::make_unique<UzawaLoop>(assembly::ResultEvaluator(*run.assembler), *run.newton,
+                                          config.incompressibility, *run.augmentation);
   // Every candidate of a controlled step must see the same kappa_AL.
   if (run.control.enabled) run.uzawa->allowKappaRaises(false);
   const bool onPath = config.time.pathFollowing == PathFollowing::arcLength;
   if (onPath || config.time.atLimitPoint == AtLimitPoint::follow)
     run.arcLength = std::make_unique<ArcLengthSettings>(arcLengthSettings(config, *run.assembler));
-  run.solver = std::make_unique<StepSolver>(run.stepSolverParts(), scene, run.linearPlan.keptScope, run.detail);
+  run.solver = std::make_unique<StepSolver>(run.stepSolverParts(), scene, run.linearPlan.keptScope, run.detail, run.talk);
   if (mixedPressure.is_null() && !onPath && config.time.atLimitPoint != AtLimitPoint::ignore)
     run.watch = std::make_unique<PathWatch>(*run.assembler, *run.model, *run.newton, config.time.steps.nominal,
                                             config.time.limitPointTolerance, run.talk);
@@ -103,7 +100,8 @@ void buildSolvers(RunParts &run) {
 void describeRun(RunParts &run) {
   const model::Scene &scene = *run.scene;
   nlohmann::json &doc = run.report->doc();
-  const double mu = scene.tissues[0].matrix->shearModulus();
+  const Augmentation &augmentation = *run.augmentation;
+  const double mu = augmentation.mu(0), kappaT = augmentation.tangentLaws()[0].kappa();
   const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = run.groups->groupComm();
   doc["linear_solver"] = run.linearPlan.description; // what Linear solver/type = auto chose
   for (const std::string &warning : ignoredIterativeSettings(run.config, run.linearPlan.direct,
@@ -125,9 +123,9 @@ void describeRun(RunParts &run) {
   doc["dofs"] = run.assembler->layout().numGlobalDofs();
   doc["elements"] = scene.mesh.numElements();
   doc["incompressibility"] = methodName(run.config.incompressibility.method);
-  doc["kappa_tangent"] = scene.tissues[0].volumetric.kappa();
-  doc["kappa_over_mu"] = scene.tissues[0].volumetric.kappa() / mu;
-  doc["kappa_physical_over_mu"] = run.physicalVolumetric[0].kappa() / mu; // inf is written as null
+  doc["kappa_tangent"] = kappaT;
+  doc["kappa_over_mu"] = kappaT / mu;
+  doc["kappa_physical_over_mu"] = augmentation.physicalLaw(0).kappa() / mu; // inf is written as null
   doc["tissues"] = nlohmann::json::array();
   for (std::size_t t = 0; t < scene.tissues.size(); ++t) {
     const auto &tissue = scene.tissues[t];
@@ -135,16 +133,16 @@ void describeRun(RunParts &run) {
                               ? scene.mesh.numElements()
                               : static_cast<std::size_t>(std::count(scene.elementTissue.begin(), scene.elementTissue.end(), static_cast<int>(t)));
     doc["tissues"].push_back({{"name", tissue.name}, {"elements", elements}, {"mu", tissue.matrix->shearModulus()},
-                              {"kappa_physical", run.physicalVolumetric[t].kappa()}, {"kappa_tangent", tissue.volumetric.kappa()},
+                              {"kappa_physical", augmentation.physicalLaw(t).kappa()}, {"kappa_tangent", augmentation.tangentLaws()[t].kappa()},
                               {"density", tissue.density}});
   }
   if (run.uzawa->augmentedLagrangian())
-    doc["kappa_AL_over_mu"] = UzawaLoop::augmentationKappa(run.config.incompressibility, mu) / mu;
+    doc["kappa_AL_over_mu"] = Augmentation::augmentationKappa(run.config.incompressibility, mu) / mu;
   doc["steps"] = nlohmann::json::array();
   if (run.talk)
     std::printf("glossa: %s  %zu elements  %lld dofs  %d rank(s)  %s (kappa/mu = %.3g)\n", run.config.deckFile.c_str(),
                 scene.mesh.numElements(), static_cast<long long>(run.assembler->layout().numGlobalDofs()),
-                run.comm->getSize(), methodName(run.config.incompressibility.method), scene.tissues[0].volumetric.kappa() / mu);
+                run.comm->getSize(), methodName(run.config.incompressibility.method), kappaT / mu);
   if (run.talk)
     for (const std::string &note : scene.meshNotes) std::printf("glossa: note: %s\n", note.c_str());
 }

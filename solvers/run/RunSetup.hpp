@@ -11,7 +11,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "io/deck/Deck.hpp"
-#include "materials/VolumetricEnergy.hpp"
+#include "solvers/incompressibility/Augmentation.hpp"
 #include "solvers/linear/LinearSolverFactory.hpp"
 #include "solvers/parameters/ControlSection.hpp"
 #include "solvers/parameters/RunConfiguration.hpp"
@@ -46,8 +46,9 @@ struct RunParts {
   RunOptions options;
   Teuchos::RCP<const Teuchos::Comm<int>> comm;
   bool root = false, talk = false, detail = false; // detail: --verbose's per-iteration lines
-  std::unique_ptr<model::Scene> scene;
-  std::vector<materials::VolumetricEnergy> physicalVolumetric; // each tissue's, for the Uzawa loop
+  std::unique_ptr<const model::Scene> scene; // as built from the deck, never changed after
+  // Each tissue's kappa_AL, rule and tangent law: raised by the Uzawa loop, read by the assembly.
+  std::unique_ptr<Augmentation> augmentation;
   std::unique_ptr<CommControlGroups> groups;
   ControlSetup control;
   std::unique_ptr<model::MuscleHistory> history;

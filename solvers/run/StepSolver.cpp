@@ -12,8 +12,9 @@
 
 namespace glossa::solvers {
 
-StepSolver::StepSolver(const StepSolverParts &parts, const model::Scene &scene, ReuseScope keptScope, bool progress)
-    : parts_(parts), scene_(scene), keptScope_(keptScope), progress_(progress),
+StepSolver::StepSolver(const StepSolverParts &parts, const model::Scene &scene, ReuseScope keptScope, bool progress,
+                       bool talk)
+    : parts_(parts), scene_(scene), keptScope_(keptScope), progress_(progress), talk_(talk),
       planes_(model::findSymmetryPlanes(scene.mesh, scene.dirichlet)) {
   for (const auto &x : scene.mesh.nodes) lengthScale_ = std::max(lengthScale_, x.norm());
 }
@@ -60,7 +61,12 @@ StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool qui
       std::printf("  uzawa %d: newton %d  krylov %d  dilatation error max %.2e  mean %.2e  max|theta-1| %.2e\n", k,
                   n.iterations, n.linearIterations, e.max, e.mean, e.maxVolumeChange);
   };
+  const std::vector<double> ratios = parts_.uzawa.penaltyRatios();
   out.uzawa = parts_.uzawa.solve(state.u, state.lambda, tolerance, onNewton, onUzawa);
+  for (std::size_t t = 0; talk_ && t < ratios.size(); ++t)
+    if (parts_.uzawa.penaltyRatios()[t] != ratios[t])
+      std::printf("  note: the Uzawa loop contracts slowly in tissue '%s': kappa_AL raised to %.3g mu for the rest of "
+                  "the run\n", scene_.tissues[t].name.c_str(), parts_.uzawa.penaltyRatios()[t]);
   // The history at the converged state: lambda_c of every point with this step's activation.
   if (out.uzawa.converged) out.muscle = assembly::updateMuscleHistory(assembly::ResultEvaluator(parts_.assembler), state.u, parts_.history);
   if (out.uzawa.converged) measureCorners(state, out);

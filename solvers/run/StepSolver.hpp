@@ -35,8 +35,10 @@ struct StepSolverParts {
 class StepSolver {
 public:
   // `keptScope`: how long Newton keeps its linear solver (a step's: forgotten before each
-  // solve). `progress`: a line per Newton and Uzawa iteration on the console.
-  StepSolver(const StepSolverParts &parts, const model::Scene &scene, ReuseScope keptScope, bool progress);
+  // solve). `progress`: a line per Newton and Uzawa iteration on the console; `talk`: the notes
+  // (a tissue's kappa_AL raised).
+  StepSolver(const StepSolverParts &parts, const model::Scene &scene, ReuseScope keptScope, bool progress,
+             bool talk = false);
   ~StepSolver();
 
   // Solves from `state` (the start on entry) to `time` into `state`; the muscle history's trial
@@ -54,7 +56,7 @@ private:
   StepSolverParts parts_;
   const model::Scene &scene_;
   ReuseScope keptScope_;
-  bool progress_;
+  bool progress_, talk_;
   std::vector<model::SymmetryPlane> planes_;
   double lengthScale_ = 0.0; // the largest |X| of the mesh
 };

@@ -13,9 +13,12 @@
 namespace glossa::assembly {
 
 Assembler::Assembler(const model::Scene &scene, DofLayout layout, const model::MuscleHistory &history,
-                     Teuchos::RCP<const Comm> comm)
-    : scene_(scene), layout_(std::move(layout), std::move(comm)), history_(history) {
+                     Teuchos::RCP<const Comm> comm, const std::vector<materials::VolumetricEnergy> *tangentLaws)
+    : scene_(scene), layout_(std::move(layout), std::move(comm)), history_(history), tangentLaws_(tangentLaws) {
   const mesh::HexMesh &mesh = scene_.mesh;
+  if (tangentLaws_ && tangentLaws_->size() != scene_.tissues.size())
+    throw std::invalid_argument("Assembler: " + std::to_string(tangentLaws_->size()) + " tangent laws for " +
+                                std::to_string(scene_.tissues.size()) + " tissues");
   if (history_.numElements() != layout_.localElements.size())
     throw std::invalid_argument("Assembler: the muscle history has " + std::to_string(history_.numElements()) +
                                 " elements, the layout " + std::to_string(layout_.localElements.size()) +
@@ -52,7 +55,9 @@ Assembler::Assembler(const model::Scene &scene, DofLayout layout, const model::M
   const double h = std::cbrt(volume / static_cast<double>(mesh.numElements()));
   // With several tissues: the stiffest one's (the same for every rank, whatever it owns).
   double stiffness = 0.0;
-  for (const auto &t : scene_.tissues) stiffness = std::max(stiffness, t.volumetric.kappa() + 4.0 / 3.0 * t.matrix->shearModulus());
+  for (std::size_t t = 0; t < scene_.tissues.size(); ++t)
+    stiffness = std::max(stiffness, (tangentLaws_ ? (*tangentLaws_)[t] : scene_.tissues[t].volumetric).kappa() +
+                                        4.0 / 3.0 * scene_.tissues[t].matrix->shearModulus());
   dirichletScale_ = stiffness * h;
 
   elementLids_.resize(layout_.localElements.size());
@@ -176,7 +181,7 @@ std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::ve
   for (std::size_t i = 0; i < bases.size(); ++i)
     bases[i] = fem::mixedBase(scene_.mesh.elementCoordinates(layout_.localElements[i]), elementDisplacement(i, uData),
                               previous ? &(*previous)[i] : nullptr,
-                              scene_.tissueOf(static_cast<std::size_t>(layout_.localElements[i])).volumetric, lambda[i]);
+                              volumetricLaw(static_cast<std::size_t>(layout_.localElements[i])), lambda[i]);
   return bases;
 }
 
@@ -276,17 +281,23 @@ bool Assembler::addLoads(const Teuchos::ArrayRCP<const double> &uData, double ti
   return valid;
 }
 
+const materials::VolumetricEnergy &Assembler::volumetricLaw(std::size_t element) const {
+  if (!tangentLaws_) return scene_.tissueOf(element).volumetric;
+  return (*tangentLaws_)[scene_.elementTissue.empty() ? 0 : static_cast<std::size_t>(scene_.elementTissue[element])];
+}
+
 fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue,
                                            double lambda, const fem::MixedBase *base, bool extrapolate,
                                            fem::Q1P0Output what) const {
   const auto e = static_cast<std::size_t>(layout_.localElements[i]);
   const int region = scene_.muscles.hasFibres() ? scene_.muscles.elementRegion[e] : -1;
   const model::Tissue &tissue = scene_.tissueOf(e);
+  const materials::VolumetricEnergy &volumetric = volumetricLaw(e);
   auto kernel = [&](const fem::QuadraturePointLaw &law) {
     if (scene_.formulation == model::ElementFormulation::PlainQ1)
-      return fem::evaluatePlainQ1(X, ue, law, tissue.volumetric, what);
-    if (base) return fem::evaluateQ1P0Mixed(X, ue, *base, law, tissue.volumetric, lambda, extrapolate, what);
-    return fem::evaluateQ1P0(X, ue, law, tissue.volumetric, lambda, what);
+      return fem::evaluatePlainQ1(X, ue, law, volumetric, what);
+    if (base) return fem::evaluateQ1P0Mixed(X, ue, *base, law, volumetric, lambda, extrapolate, what);
+    return fem::evaluateQ1P0(X, ue, law, volumetric, lambda, what);
   };
   if (region < 0) return kernel(fem::UniformPointLaw(*tissue.matrix));
   std::array<const double *, 8> lambdaCOld;

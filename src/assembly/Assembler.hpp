@@ -57,8 +57,11 @@ public:
   // `history`, the muscle state of the layout's local elements (owned by the caller, who begins
   // steps and commits them), is read by every assembly: the trial activation, the step and the
   // committed lambda_c.
+  // `tangentLaws`: each tissue's volumetric law in the tangent (kappa_t; the augmentation's,
+  // solvers/incompressibility/Augmentation, which may raise it during a run and which must
+  // outlive the assembler); null: the scene's own laws. The scene itself is never changed.
   Assembler(const model::Scene &scene, DofLayout layout, const model::MuscleHistory &history,
-            Teuchos::RCP<const Comm> comm);
+            Teuchos::RCP<const Comm> comm, const std::vector<materials::VolumetricEnergy> *tangentLaws = nullptr);
 
   const model::Scene &scene() const { return scene_; }
   // Who owns what, with the communicator, the maps and the number of local elements.
@@ -148,6 +151,9 @@ private:
   mutable std::shared_ptr<const ElementScatter> scatter_;
   mutable const void *scatterPattern_ = nullptr;
   const model::MuscleHistory &history_;
+  const std::vector<materials::VolumetricEnergy> *tangentLaws_; // per tissue; null: the scene's
+  // The volumetric law the tangent carries in mesh element e.
+  const materials::VolumetricEnergy &volumetricLaw(std::size_t element) const;
   std::vector<std::unique_ptr<LoadContribution>> loads_; // the scene's loads (LoadContribution.hpp)
   const ExternalMuscleForces *externalMuscles_ = nullptr; // among them, for the muscle history
 };

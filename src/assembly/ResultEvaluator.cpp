@@ -55,7 +55,7 @@ ElementFields ResultEvaluator::elementDilatations(const Vector &u, const std::ve
     fem::ElementVector g;
     if (!fem::elementVolumeGradient(scene_.mesh.elementCoordinates(e), elementDisplacement(i, uData), V, v, g)) continue;
     out.theta[i] = v / V;
-    out.pressure[i] = scene_.tissueOf(static_cast<std::size_t>(e)).volumetric.dU(out.theta[i]) + lambda[i];
+    out.pressure[i] = assembler_.volumetricLaw(static_cast<std::size_t>(e)).dU(out.theta[i]) + lambda[i];
     out.referenceVolume[i] = V;
   }
   return out;

@@ -189,7 +189,7 @@ TEST(UzawaLoop, BringsANearlyIncompressibleBlockToItsDilatationTolerance) {
   incompressibility.dilatationTolerance = 1e-6;
   const std::vector<materials::VolumetricEnergy> physical{scene.tissues[0].volumetric};
   scene.tissues[0].volumetric = scene.tissues[0].volumetric.withKappa(
-      solvers::UzawaLoop::tangentKappa(incompressibility, physical[0].kappa(), kMu));
+      solvers::Augmentation::tangentKappa(incompressibility, physical[0].kappa(), kMu));
   const double kappa = materials::bulkModulus(kMu, 0.4999), kappaAL = 30.0 * kMu;
   EXPECT_NEAR(scene.tissues[0].volumetric.kappa(), 1.0 / (1.0 / kappa + 1.0 / kappaAL), 1e-9 * kappaAL);
   const AssemblerWithHistory built(scene, world());
@@ -200,7 +200,8 @@ TEST(UzawaLoop, BringsANearlyIncompressibleBlockToItsDilatationTolerance) {
       assembler, solvers::buildLinearSolver(solvers::LinearSolverParameters{}, context)));
   model->setTime(1.0);
   const solvers::NewtonSolver newton(model, solvers::NewtonParameters{}, kSide, 1e-10);
-  const solvers::UzawaLoop uzawa(built.results, newton, incompressibility, physical);
+  solvers::Augmentation augmentation(incompressibility, physical, {kMu});
+  const solvers::UzawaLoop uzawa(built.results, newton, incompressibility, augmentation);
   assembly::Vector u(assembler->layout().ownedMap());
   std::vector<double> lambda(assembler->layout().numLocalElements(), 0.0);
   model->setMultipliers(lambda);

@@ -5,7 +5,7 @@
 
 #include <Tpetra_Core.hpp>
 
-#include "ScratchDirectory.hpp"
+#include "SharedScratch.hpp"
 #include "io/deck/DeckError.hpp"
 #include "solvers/run/CheckpointContents.hpp"
 #include "solvers/run/RunCheckpoint.hpp"
@@ -36,7 +36,7 @@ template <class F> std::string refusal(F &&f) {
 } // namespace
 
 TEST(RunCheckpoint, APartWrittenIsReadBackAsItWas) {
-  io::testing::ScratchDirectory dir;
+  glossa::testing::SharedScratch dir;
   const auto comm = Tpetra::getDefaultComm();
   RunCheckpoint checkpoints(dir.path(), comm, 5);
   EXPECT_TRUE(checkpoints.due(10));
@@ -49,20 +49,20 @@ TEST(RunCheckpoint, APartWrittenIsReadBackAsItWas) {
 }
 
 TEST(RunCheckpoint, NeverWhenEveryIsZero) {
-  io::testing::ScratchDirectory dir;
+  glossa::testing::SharedScratch dir;
   RunCheckpoint checkpoints(dir.path(), Tpetra::getDefaultComm(), 0);
   EXPECT_FALSE(checkpoints.enabled());
   EXPECT_FALSE(checkpoints.due(0));
 }
 
 TEST(RunCheckpoint, ARestartWithoutACheckpointIsRefused) {
-  io::testing::ScratchDirectory dir;
+  glossa::testing::SharedScratch dir;
   const std::string why = refusal([&] { RunCheckpoint::read(dir.path(), *Tpetra::getDefaultComm(), kListing, 1); });
   EXPECT_NE(why.find("no checkpoint there"), std::string::npos) << why;
 }
 
 TEST(RunCheckpoint, ARestartWithAnotherDeckNamesTheFirstDifference) {
-  io::testing::ScratchDirectory dir;
+  glossa::testing::SharedScratch dir;
   const auto comm = Tpetra::getDefaultComm();
   RunCheckpoint(dir.path(), comm, 1).write(1, part(comm->getSize()));
   const std::string why = refusal([&] {
@@ -72,12 +72,12 @@ TEST(RunCheckpoint, ARestartWithAnotherDeckNamesTheFirstDifference) {
 }
 
 TEST(RunCheckpoint, ARestartOnOtherRanksOrGroupsIsRefused) {
-  io::testing::ScratchDirectory dir;
+  glossa::testing::SharedScratch dir;
   const auto comm = Tpetra::getDefaultComm();
   RunCheckpoint(dir.path(), comm, 1).write(1, part(comm->getSize() + 1));
   EXPECT_NE(refusal([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1); }).find("restart it on as many"),
             std::string::npos);
-  io::testing::ScratchDirectory other;
+  glossa::testing::SharedScratch other;
   RunCheckpoint(other.path(), comm, 1).write(1, part(comm->getSize()));
   EXPECT_NE(refusal([&] { RunCheckpoint::read(other.path(), *comm, kListing, 2); }).find("control group(s)"),
             std::string::npos);

@@ -10,7 +10,7 @@
 
 #include <Tpetra_Core.hpp>
 
-#include "ScratchDirectory.hpp"
+#include "SharedScratch.hpp"
 #include "solvers/run/RunReport.hpp"
 
 using namespace glossa;
@@ -48,7 +48,7 @@ bool root() { return Tpetra::getDefaultComm()->getRank() == 0; }
 } // namespace
 
 TEST(RunReport, AStepsRecordCarriesItsSolveStatistics) {
-  io::testing::ScratchDirectory dir;
+  glossa::testing::SharedScratch dir;
   RunReport report(Tpetra::getDefaultComm(), root(), false);
   report.setDirectory(dir.path());
   report.addStep(trialTo(0.5, 0.25), 0.5, false, 2.0, {{"reactions", nlohmann::json::object()}});
@@ -73,7 +73,7 @@ TEST(RunReport, AStepsRecordCarriesItsSolveStatistics) {
 }
 
 TEST(RunReport, OnAnArcLengthPathTheKrylovCountIsNotClaimed) {
-  io::testing::ScratchDirectory dir;
+  glossa::testing::SharedScratch dir;
   RunReport report(Tpetra::getDefaultComm(), root(), false);
   report.setDirectory(dir.path());
   report.addStep(trialTo(0.5, 0.25), 0.5, true, 0.0, {});
@@ -93,7 +93,7 @@ TEST(RunReport, ARefusedInsideOutStepIsRecordedWithItsTime) {
 }
 
 TEST(RunReport, TheEndSaysWhetherTheRunConvergedAndWhy) {
-  io::testing::ScratchDirectory dir;
+  glossa::testing::SharedScratch dir;
   {
     RunReport report(Tpetra::getDefaultComm(), root(), false);
     report.setDirectory(dir.path());
@@ -120,7 +120,7 @@ TEST(RunReport, TheEndSaysWhetherTheRunConvergedAndWhy) {
 }
 
 TEST(RunReport, AStopSignalIsAgreedAndWrittenAtOnce) {
-  io::testing::ScratchDirectory dir;
+  glossa::testing::SharedScratch dir;
   RunReport report(Tpetra::getDefaultComm(), root(), false);
   report.setDirectory(dir.path());
   report.addStep(trialTo(0.25, 0.25), 0.25, false, 0.0, {});

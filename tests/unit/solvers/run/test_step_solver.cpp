@@ -52,27 +52,32 @@ model::Scene block() {
 }
 
 // The solver stack a run's set-up builds, here by hand: the augmented Lagrangian at its default
-// kappa_AL, the dilatation tolerance 1e-6.
+// kappa_AL, the dilatation tolerance 1e-6; the scene keeps its physical law, the assembly reads
+// the augmentation's tangent law.
+IncompressibilityParameters tight() {
+  IncompressibilityParameters p;
+  p.dilatationTolerance = 1e-6;
+  return p;
+}
+
 struct Stack {
-  Stack() : scene(block()), physical{scene.tissues[0].volumetric} {
-    incompressibility.dilatationTolerance = 1e-6;
-    scene.tissues[0].volumetric = scene.tissues[0].volumetric.withKappa(
-        UzawaLoop::tangentKappa(incompressibility, physical[0].kappa(), kMu));
+  Stack() : scene(block()), incompressibility(tight()), augmentation(incompressibility, {scene.tissues[0].volumetric}, {kMu}) {
     const auto comm = Tpetra::getDefaultComm();
     assembly::DofLayout layout = assembly::distributeScene(scene, comm);
     history = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
-    assembler = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *history, comm));
+    assembler = Teuchos::rcp(
+        new assembly::Assembler(scene, std::move(layout), *history, comm, &augmentation.tangentLaws()));
     LinearSolverContext context{assembly::coordinates(*assembler), assembly::rigidBodyModes(*assembler), comm->getSize(),
                                 assembler->layout().numGlobalDofs(), true};
     evaluator = Teuchos::rcp(new assembly::ModelEvaluator(assembler, buildLinearSolver(LinearSolverParameters{}, context)));
     newton = std::make_unique<NewtonSolver>(evaluator, NewtonParameters{}, kSide, 1e-10);
-    uzawa = std::make_unique<UzawaLoop>(assembly::ResultEvaluator(*assembler), *newton, incompressibility, physical);
+    uzawa = std::make_unique<UzawaLoop>(assembly::ResultEvaluator(*assembler), *newton, incompressibility, augmentation);
     solver = std::make_unique<StepSolver>(StepSolverParts{*assembler, *evaluator, *newton, *uzawa, *history}, scene,
                                           ReuseScope::newtonSolve, false);
   }
-  model::Scene scene;
-  std::vector<materials::VolumetricEnergy> physical;
+  const model::Scene scene;
   IncompressibilityParameters incompressibility;
+  Augmentation augmentation;
   std::unique_ptr<model::MuscleHistory> history;
   Teuchos::RCP<assembly::Assembler> assembler;
   Teuchos::RCP<assembly::ModelEvaluator> evaluator;
