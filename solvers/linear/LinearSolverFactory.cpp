@@ -155,6 +155,7 @@ ParameterList ifpack2Parameters(const LinearSolverParameters &s, const LinearSol
 } // namespace
 
 bool usesDirectSolve(const LinearSolverParameters &s, const LinearSolverContext &c) {
+  if (c.direct) return *c.direct; // the plan's
   // auto is direct on one rank only: MUMPS schedules its parallel factorisation dynamically, so on
   // several ranks the last bits of an answer may differ from run to run (restart would not end
   // bit for bit as an uninterrupted run), and small problems need no second rank.
@@ -162,19 +163,18 @@ bool usesDirectSolve(const LinearSolverParameters &s, const LinearSolverContext 
   return s.type == LinearSolverType::direct;
 }
 
-ReuseScope keptReuseScope(const LinearSolverParameters &s, const LinearSolverContext &c, bool mixedBlockSolve) {
-  if (usesDirectSolve(s, c) || s.preconditioner != Preconditioner::mueLu || mixedBlockSolve)
-    return ReuseScope::newtonSolve;
-  return s.reuseScope;
-}
-
 LinearSolverPlan planLinearSolver(const LinearSolverParameters &s, const LinearSolverContext &c, bool mixedBlockSolve) {
   LinearSolverPlan plan;
   plan.direct = usesDirectSolve(s, c);
-  plan.keptScope = keptReuseScope(s, c, mixedBlockSolve);
+  plan.keptScope = plan.direct || s.preconditioner != Preconditioner::mueLu || mixedBlockSolve ? ReuseScope::newtonSolve
+                                                                                               : s.reuseScope;
   // With the mixed method: the displacement block's preconditioner.
   plan.description = plan.direct ? "direct (" + s.directSolverName + ")" : "iterative (" + s.preconditionerName + ")";
   return plan;
+}
+
+ReuseScope keptReuseScope(const LinearSolverParameters &s, const LinearSolverContext &c, bool mixedBlockSolve) {
+  return planLinearSolver(s, c, mixedBlockSolve).keptScope;
 }
 
 Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &s, const LinearSolverContext &c) {

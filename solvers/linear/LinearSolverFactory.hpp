@@ -6,6 +6,7 @@
 // Amesos2 KLU2 for comparison. This unit holds the expensive template
 // instantiations (Stratimikos::enableMueLu and enableFROSch, Ifpack2 registration): edit it rarely.
 
+#include <optional>
 #include <string>
 #include <Teuchos_ParameterList.hpp>
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
@@ -21,6 +22,9 @@ struct LinearSolverContext {
   int ranks = 1;
   long long globalRows = 0;
   bool symmetric = true; // the tangent is symmetric (no follower loads yet)
+  // The run's decision (LinearSolverPlan::direct), which the factory follows; empty: decided here
+  // from the section (usesDirectSolve), as for a context built without a plan.
+  std::optional<bool> direct;
 };
 
 // The section chooses a direct solve: type = direct, or auto on one rank at no more than 'direct up

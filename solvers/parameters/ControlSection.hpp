@@ -1,5 +1,5 @@
 #pragma once
-// The deck's "Control" section (issue 5, paper §6.1): which points are held (eq. 25), which
+// The deck's "Control" section (paper §6.1, doc/control.md): which points are held (eq. 25), which
 // muscle groups the controller drives, and the elitist GA's parameters (control/). Teuchos only.
 
 #include <string>

@@ -22,7 +22,7 @@ Teuchos::ParameterList incompressibilityParameters() {
                     "modulus (30 keeps the Krylov total within about 2.4x of nu = 0.3 at every nu "
                     "and still needs about 2 Uzawa solves per step; 3 keeps the largest Krylov count "
                     "per solve within 2x across nu and mesh size, at about 3 Uzawa solves per step "
-                    "for each of 30's; 100 was the default before; see doc/incompressibility.md)", io::Range::closed(1.0, 1e9));
+                    "for each of 30's; see doc/incompressibility.md)", io::Range::closed(1.0, 1e9));
   io::declareDouble(p, "dilatation tolerance", 1e-3, "",
                     "augmented Lagrangian stops when max_e |theta_e - theta_phys(p_e)| is below "
                     "this (theta_phys: the dilatation the material law gives the element pressure; "

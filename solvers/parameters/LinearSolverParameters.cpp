@@ -12,7 +12,7 @@ Teuchos::ParameterList linearSolverParameters() {
                     {"auto", "iterative", "direct"});
   io::declareString(p, "direct solver", "MUMPS",
                     "MUMPS: multifrontal LU (LDL^T for a symmetric tangent), analysed once per run and "
-                    "refactored every Newton iteration, inside one Krylov iteration (MPI-parallel); KLU2: "
+                    "refactored as 'direct reuse iterations' says, inside the Krylov method (MPI-parallel); KLU2: "
                     "Amesos2 KLU2 (slow on 3D meshes, kept for comparison; one rank)",
                     {"MUMPS", "KLU2"});
   io::declareInt(p, "direct up to", 8000,

@@ -3,6 +3,7 @@
 #include "io/deck/Deck.hpp"
 #include "io/deck/DeckError.hpp"
 #include "model/Scene.hpp"
+#include "solvers/incompressibility/Augmentation.hpp"
 #include "solvers/parameters/ControlSection.hpp"
 
 namespace glossa::solvers {
@@ -61,6 +62,9 @@ void checkControlGroupCount(int controlGroups, int ranks) {
 void checkRunConfiguration(const io::Deck &deck, const RunConfiguration &config, const model::Scene &scene,
                            const ControlSetup &control, const RunCheckContext &context) {
   checkControlGroupCount(context.controlGroups, context.ranks);
+  // Each tissue's law against the method (a penalty cannot hold nu = 0.5).
+  for (const auto &tissue : scene.tissues)
+    Augmentation::tangentKappa(config.incompressibility, tissue.volumetric.kappa(), tissue.matrix->shearModulus());
   if (config.incompressibility.method == IncompressibilityMethod::mixed)
     requireMixedCompatible(config.linear, config.controlled, scene);
   const bool onPath = config.time.pathFollowing == PathFollowing::arcLength;

@@ -1,6 +1,7 @@
 #pragma once
-// The checks that need more than one deck section and the scene built from it: the mixed
-// method's and arc-length continuation's requirements, the output's face sets, the control
+// The checks that need more than one deck section and the scene built from it, the same for
+// glossa validate and glossa run: each tissue's law against the method, the mixed method's and
+// arc-length continuation's requirements, the output's face sets, the control
 // groups' count, and the iterative-solver settings a direct solve leaves unused. Run before the
 // output directory is touched, so a bad deck leaves an earlier run's files intact.
 

@@ -72,7 +72,9 @@ void buildSolvers(RunParts &run) {
   if (config.incompressibility.method == IncompressibilityMethod::mixed)
     mixedPressure = Teuchos::rcp(
         new assembly::MixedPressureState(run.augmentation->physicalLaw(0), run.augmentation->mu(0)));
+  // Resolved once: the factory, Newton (the kept scope) and the summary follow the plan.
   run.linearPlan = planLinearSolver(config.linear, context, !mixedPressure.is_null());
+  context.direct = run.linearPlan.direct;
   run.model = Teuchos::rcp(new assembly::ModelEvaluator(
       run.assembler, mixedPressure.is_null() ? buildLinearSolver(config.linear, context)
                                              : buildMixedBlockSolver(config.linear, context, mixedPressure),
@@ -165,10 +167,10 @@ std::filesystem::path outputDirectory(RunParts &run) {
 }
 } // namespace
 
-std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
-                                   const RunOptions &options) {
+std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration &config,
+                                   const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const RunOptions &options) {
   auto run = std::make_unique<RunParts>();
-  run->config = parseRunConfiguration(deck);
+  run->config = config;
   run->options = options;
   run->comm = comm;
   run->root = comm->getRank() == 0;

@@ -73,7 +73,8 @@ struct RunParts {
 
 // Builds every part; the output directory is prepared (or, on a restart, its checkpoint read)
 // once the deck's checks have passed. Collective. Throws io::DeckError for deck problems.
-std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
-                                   const RunOptions &options);
+// `config`: the deck's solver sections, parsed once (parseRunConfiguration).
+std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration &config,
+                                   const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const RunOptions &options);
 
 } // namespace glossa::solvers

@@ -12,9 +12,9 @@
 
 namespace glossa::solvers {
 
-Simulation::Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
-                       const RunOptions &options)
-    : run_(setUpRun(deck, comm, options)) {
+Simulation::Simulation(const io::Deck &deck, const RunConfiguration &config,
+                       const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const RunOptions &options)
+    : run_(setUpRun(deck, config, comm, options)) {
   RunParts &run = *run_;
   onPath_ = run.config.time.pathFollowing == PathFollowing::arcLength;
   const StepState &state = run.stepper->committed();
@@ -155,9 +155,9 @@ nlohmann::json Simulation::run() {
   return run.report->doc();
 }
 
-nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
-                             const RunOptions &options) {
-  Simulation simulation(deck, comm, options);
+nlohmann::json runSimulation(const io::Deck &deck, const RunConfiguration &config,
+                             const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const RunOptions &options) {
+  Simulation simulation(deck, config, comm, options);
   return simulation.run();
 }
 

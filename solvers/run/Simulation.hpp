@@ -24,9 +24,11 @@ struct RunParts;
 
 class Simulation final : private StepAttempter {
 public:
-  // Builds everything and records the initial state (t = 0) and the summary so far. Collective.
+  // Builds everything and records the initial state (t = 0) and the summary so far. `config`:
+  // the deck's solver sections, parsed once (parseRunConfiguration). Collective.
   // Throws io::DeckError for deck problems found while building the scene or the controller.
-  Simulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const RunOptions &options);
+  Simulation(const io::Deck &deck, const RunConfiguration &config, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
+             const RunOptions &options);
   ~Simulation() override;
   Simulation(const Simulation &) = delete;
   Simulation &operator=(const Simulation &) = delete;
@@ -53,9 +55,10 @@ private:
   int pathStartStep_ = 0;
 };
 
-// Runs the deck; returns the summary that was written to summary.json. Collective.
-// Throws io::DeckError for deck problems found while building the scene.
-nlohmann::json runSimulation(const io::Deck &deck, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
-                             const RunOptions &options);
+// Runs the deck with its solver sections `config` (parseRunConfiguration); returns the summary
+// that was written to summary.json. Collective. Throws io::DeckError for deck problems found
+// while building the scene.
+nlohmann::json runSimulation(const io::Deck &deck, const RunConfiguration &config,
+                             const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const RunOptions &options);
 
 } // namespace glossa::solvers

@@ -1,5 +1,5 @@
 #pragma once
-// `glossa mesh FILE [--format F] [--refine N] [--json] [--output DIR|OUT.msh|OUT.inp]` (issue 7): reads any
+// `glossa mesh FILE [--format F] [--refine N] [--json] [--output DIR|OUT.msh|OUT.inp]` (doc/meshes.md): reads any
 // supported mesh (doc/meshes.md), optionally refines it, and reports what a user checks before
 // building a deck on it: node and element counts, every set with its size (and an element set's
 // volume), the total volume and the range of the scaled Jacobian. --output DIR writes the mesh as

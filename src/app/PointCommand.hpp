@@ -1,6 +1,6 @@
 #pragma once
 // `glossa point DECK.xml`: one material point of the deck's Material driven along a prescribed
-// deformation path with the deck's muscle-group inputs (issue 3, item 6), for calibration and
+// deformation path with the deck's muscle-group inputs (doc/materials.md, "Material-point driver"), for calibration and
 // for checking a material before it goes into a scene. Paths (the deck's "Point" section):
 //   uniaxial      F = lambda e(x)e + lambda^{-1/2} (1 - e(x)e): incompressible stretch along e
 //   simple shear  F = 1 + gamma e(x)m, m the shear plane's normal (orthogonal to e)

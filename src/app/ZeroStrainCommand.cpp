@@ -82,7 +82,7 @@ void writeZeroStrain(const io::Deck &deck, const input::ZeroStrainParameters &z,
 }
 }  // namespace
 
-ZeroStrainResult computeZeroStrain(const io::Deck &deck, const solvers::TimeParameters &time,
+ZeroStrainResult computeZeroStrain(const io::Deck &deck, const solvers::RunConfiguration &config,
                                    const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
                                    const std::filesystem::path &output, bool quiet) {
   const auto start = Clock::now();
@@ -91,7 +91,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const solvers::TimePara
 
   ZeroStrainResult result;
   result.method = z.method == input::ZeroStrainMethod::approximate ? "approximate" : "inverse";
-  const model::Scene imaged = input::buildScene(deck, time.steps.endTime);
+  const model::Scene imaged = input::buildScene(deck, config.time.steps.endTime);
   input::requireImagedGeometryUnderGravity(deck, imaged);
   const std::vector<Eigen::Vector3d> &Ximg = imaged.mesh.nodes;
   result.meshSize = meanEdgeLength(imaged.mesh);
@@ -117,7 +117,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const solvers::TimePara
       model::useReferenceNodes(scene, X);
       for (auto &gravity : scene.bodyForces) gravity.acceleration *= gravityFactor;
     };
-    const auto summary = solvers::runSimulation(deck, comm, options);
+    const auto summary = solvers::runSimulation(deck, config, comm, options);
     if (!summary.value("converged", false))
       throw std::runtime_error("glossa zero-strain: the forward run " + label + " did not converge (" +
                                summary.value("failure", std::string("no reason given")) + "); results in " +

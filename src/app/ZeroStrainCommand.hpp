@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "io/deck/Deck.hpp"
-#include "solvers/parameters/TimeParameters.hpp"
+#include "solvers/parameters/RunConfiguration.hpp"
 
 namespace glossa::app {
 
@@ -35,13 +35,14 @@ struct ZeroStrainResult {
   std::vector<double> reference;  // the stored coordinates, 3 per node
 };
 
-// Computes the zero-strain configuration of a validated deck (`time`: its Time section; the
+// Computes the zero-strain configuration of a validated deck (`config`: its solver sections,
+// parsed once and handed to every forward run; the
 // method is its Zero strain section, input/ZeroStrainParameters.hpp) and writes it to `output` (the
 // coordinates file) and `output` with extension .json (the report); the forward runs' result
 // files go to `output` without extension + "_runs/". Collective. Throws io::DeckError for a
 // deck that does not fit (no gravity load, other loads, a reference coordinates file already
 // set) and std::runtime_error when a forward solve does not converge.
-ZeroStrainResult computeZeroStrain(const io::Deck &deck, const solvers::TimeParameters &time,
+ZeroStrainResult computeZeroStrain(const io::Deck &deck, const solvers::RunConfiguration &config,
                                    const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
                                    const std::filesystem::path &output, bool quiet);
 

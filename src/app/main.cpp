@@ -23,6 +23,8 @@
 #include "io/output/OutputError.hpp"
 #include "mesh/MeshError.hpp"
 #include "input/SceneFactory.hpp"
+#include "solvers/parameters/ControlSection.hpp"
+#include "solvers/parameters/RunChecks.hpp"
 #include "solvers/parameters/RunConfiguration.hpp"
 #include "solvers/run/Simulation.hpp"
 
@@ -224,8 +226,12 @@ int main(int argc, char **argv) {
     }
     if (a.command == "validate") {
       const auto deck = loadDeck(a, schema);
-      // Building the scene checks what needs the mesh too (set names, named points).
-      const auto scene = glossa::input::buildScene(deck, glossa::solvers::parseRunConfiguration(deck).time.steps.endTime);
+      // Building the scene checks what needs the mesh too (set names, named points), and the
+      // checks across sections are run's own (a deck validate passes, run does not refuse).
+      const auto config = glossa::solvers::parseRunConfiguration(deck);
+      const auto scene = glossa::input::buildScene(deck, config.time.steps.endTime);
+      glossa::solvers::checkRunConfiguration(deck, config, scene, glossa::solvers::buildControl(deck, scene),
+                                             {comm->getSize(), a.controlGroups, !a.restart.empty()});
       if (root)
         for (const std::string &note : scene.meshNotes) std::fprintf(stderr, "glossa: note: %s\n", note.c_str());
       if (root) std::cout << deck.toXml();
@@ -238,7 +244,7 @@ int main(int argc, char **argv) {
       const auto deck = loadDeck(a, schema);
       stage = Stage::Running;
       const auto result =
-          glossa::app::computeZeroStrain(deck, glossa::solvers::parseRunConfiguration(deck).time, comm, a.output, a.quiet);
+          glossa::app::computeZeroStrain(deck, glossa::solvers::parseRunConfiguration(deck), comm, a.output, a.quiet);
       if (!result.converged && root)
         std::fprintf(stderr, "glossa: zero-strain: max distance %.3e m after %d iterations is above the tolerance %.3e m\n",
                      result.maxDistance, result.iterations, result.tolerance);
@@ -249,7 +255,8 @@ int main(int argc, char **argv) {
       stage = Stage::Running;
       glossa::solvers::RunOptions options{a.output, a.quiet, a.verbose, a.controlGroups};
       options.restartDirectory = a.restart;
-      const auto summary = glossa::solvers::runSimulation(deck, comm, options);
+      const auto summary =
+          glossa::solvers::runSimulation(deck, glossa::solvers::parseRunConfiguration(deck), comm, options);
       if (a.timers) Teuchos::TimeMonitor::summarize(comm.ptr(), std::cout, false, true, false);
       if (summary.contains("interrupted")) return kInterrupted;
       return summary.value("converged", false) ? 0 : kNotConverged;

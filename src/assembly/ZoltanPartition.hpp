@@ -1,6 +1,6 @@
 #pragma once
 // Element ownership from Zoltan2 (Trilinos' partitioning package) for imported, unstructured
-// meshes (issue 7): the element centroids are partitioned geometrically by Zoltan2's
+// meshes (Mesh/partitioner, doc/meshes.md): the element centroids are partitioned geometrically by Zoltan2's
 // multi-jagged or recursive coordinate bisection algorithm. Every rank passes Zoltan2 a
 // contiguous block of the (replicated) mesh's elements; the parts come back for those and are
 // summed over the ranks, so every rank ends with the same owner of every element. Zoltan2 is

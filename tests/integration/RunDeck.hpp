@@ -33,7 +33,7 @@ inline nlohmann::json runDeck(const std::string &deckFile, const std::vector<std
   auto deck = io::Deck::fromFile(deckFile);
   for (const auto &o : overrides) deck.applyOverride(o, schema);
   deck.validate(schema);
-  return solvers::runSimulation(deck, comm, {output, true});
+  return solvers::runSimulation(deck, solvers::parseRunConfiguration(deck), comm, {output, true});
 }
 
 struct TraceRow {

@@ -5,87 +5,11 @@
 // is refused, naming the plane and the node; corners are measured.
 #include <gtest/gtest.h>
 
-#include <Tpetra_Core.hpp>
-
-#include "assembly/Assembler.hpp"
-#include "assembly/ModelEvaluator.hpp"
-#include "assembly/NullSpace.hpp"
-#include "assembly/ResultEvaluator.hpp"
-#include "materials/NeoHookean.hpp"
-#include "mesh/BoxGenerator.hpp"
-#include "solvers/incompressibility/UzawaLoop.hpp"
-#include "solvers/nonlinear/NewtonSolver.hpp"
-#include "solvers/run/StepSolver.hpp"
+#include "BlockStack.hpp"
 
 using namespace glossa;
 using namespace glossa::solvers;
-
-namespace {
-constexpr double kSide = 1e-2, kMu = 1e4, kNu = 0.4999, kDensity = 1000.0, kGravity = 9.81;
-
-model::Scene block() {
-  model::Scene scene;
-  scene.mesh = mesh::generateBox(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(kSide), {2, 2, 2});
-  model::Tissue tissue;
-  tissue.name = "block";
-  tissue.matrix = std::make_shared<materials::NeoHookean>(kMu);
-  tissue.volumetric = materials::VolumetricEnergy(materials::VolumetricEnergy::Form::SimoTaylor,
-                                                  materials::bulkModulus(kMu, kNu));
-  tissue.density = kDensity;
-  scene.tissues.push_back(tissue);
-  model::DirichletCondition clamp;
-  clamp.name = "clamp";
-  clamp.nodes = scene.mesh.nodeSets.at("xmin");
-  clamp.fixed = {true, true, true};
-  scene.dirichlet.push_back(clamp);
-  model::DirichletCondition symmetry;
-  symmetry.name = "symmetry";
-  symmetry.nodes = scene.mesh.nodeSets.at("ymin");
-  symmetry.fixed = {false, true, false};
-  scene.dirichlet.push_back(symmetry);
-  model::BodyForceLoad weight;
-  weight.name = "weight";
-  for (std::size_t e = 0; e < scene.mesh.numElements(); ++e) weight.elements.push_back(static_cast<mesh::ElementId>(e));
-  weight.acceleration = Eigen::Vector3d(0.0, 0.0, -kGravity);
-  scene.bodyForces.push_back(weight);
-  return scene;
-}
-
-// The solver stack a run's set-up builds, here by hand: the augmented Lagrangian at its default
-// kappa_AL, the dilatation tolerance 1e-6; the scene keeps its physical law, the assembly reads
-// the augmentation's tangent law.
-IncompressibilityParameters tight() {
-  IncompressibilityParameters p;
-  p.dilatationTolerance = 1e-6;
-  return p;
-}
-
-struct Stack {
-  Stack() : scene(block()), incompressibility(tight()), augmentation(incompressibility, {scene.tissues[0].volumetric}, {kMu}) {
-    const auto comm = Tpetra::getDefaultComm();
-    assembly::DofLayout layout = assembly::distributeScene(scene, comm);
-    history = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
-    assembler = Teuchos::rcp(
-        new assembly::Assembler(scene, std::move(layout), *history, comm, &augmentation.tangentLaws()));
-    LinearSolverContext context{assembly::coordinates(*assembler), assembly::rigidBodyModes(*assembler), comm->getSize(),
-                                assembler->layout().numGlobalDofs(), true};
-    evaluator = Teuchos::rcp(new assembly::ModelEvaluator(assembler, buildLinearSolver(LinearSolverParameters{}, context)));
-    newton = std::make_unique<NewtonSolver>(evaluator, NewtonParameters{}, kSide, 1e-10);
-    uzawa = std::make_unique<UzawaLoop>(assembly::ResultEvaluator(*assembler), *newton, incompressibility, augmentation);
-    solver = std::make_unique<StepSolver>(StepSolverParts{*assembler, *evaluator, *newton, *uzawa, *history}, scene,
-                                          ReuseScope::newtonSolve, false);
-  }
-  const model::Scene scene;
-  IncompressibilityParameters incompressibility;
-  Augmentation augmentation;
-  std::unique_ptr<model::MuscleHistory> history;
-  Teuchos::RCP<assembly::Assembler> assembler;
-  Teuchos::RCP<assembly::ModelEvaluator> evaluator;
-  std::unique_ptr<NewtonSolver> newton;
-  std::unique_ptr<UzawaLoop> uzawa;
-  std::unique_ptr<StepSolver> solver;
-};
-} // namespace
+using namespace glossa::solvers::testing;
 
 TEST(StepSolver, AStepReachesTheDilatationToleranceAndTheSupportsCarryTheWeight) {
   Stack s;
