@@ -5,8 +5,8 @@
 
 #include <Tpetra_Core.hpp>
 
+#include "DeckOnFile.hpp"
 #include "SharedScratch.hpp"
-#include "io/deck/DeckError.hpp"
 #include "solvers/run/CheckpointContents.hpp"
 #include "solvers/run/RunCheckpoint.hpp"
 
@@ -24,15 +24,6 @@ nlohmann::json part(int ranks) {
   return p;
 }
 
-// The message of the DeckError `f` throws ("" if none).
-template <class F> std::string refusal(F &&f) {
-  try {
-    f();
-  } catch (const io::DeckError &e) {
-    return e.what();
-  }
-  return "";
-}
 } // namespace
 
 TEST(RunCheckpoint, APartWrittenIsReadBackAsItWas) {
@@ -57,7 +48,7 @@ TEST(RunCheckpoint, NeverWhenEveryIsZero) {
 
 TEST(RunCheckpoint, ARestartWithoutACheckpointIsRefused) {
   glossa::testing::SharedScratch dir;
-  const std::string why = refusal([&] { RunCheckpoint::read(dir.path(), *Tpetra::getDefaultComm(), kListing, 1); });
+  const std::string why = test::deckErrorOf([&] { RunCheckpoint::read(dir.path(), *Tpetra::getDefaultComm(), kListing, 1); });
   EXPECT_NE(why.find("no checkpoint there"), std::string::npos) << why;
 }
 
@@ -65,7 +56,7 @@ TEST(RunCheckpoint, ARestartWithAnotherDeckNamesTheFirstDifference) {
   glossa::testing::SharedScratch dir;
   const auto comm = Tpetra::getDefaultComm();
   RunCheckpoint(dir.path(), comm, 1).write(1, part(comm->getSize()));
-  const std::string why = refusal([&] {
+  const std::string why = test::deckErrorOf([&] {
     RunCheckpoint::read(dir.path(), *comm, "Time/end time = 1\nTime/step size = 0.5\n", 1);
   });
   EXPECT_NE(why.find("the run's Time/step size = 0.25, now Time/step size = 0.5"), std::string::npos) << why;
@@ -75,10 +66,10 @@ TEST(RunCheckpoint, ARestartOnOtherRanksOrGroupsIsRefused) {
   glossa::testing::SharedScratch dir;
   const auto comm = Tpetra::getDefaultComm();
   RunCheckpoint(dir.path(), comm, 1).write(1, part(comm->getSize() + 1));
-  EXPECT_NE(refusal([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1); }).find("restart it on as many"),
+  EXPECT_NE(test::deckErrorOf([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1); }).find("restart it on as many"),
             std::string::npos);
   glossa::testing::SharedScratch other;
   RunCheckpoint(other.path(), comm, 1).write(1, part(comm->getSize()));
-  EXPECT_NE(refusal([&] { RunCheckpoint::read(other.path(), *comm, kListing, 2); }).find("control group(s)"),
+  EXPECT_NE(test::deckErrorOf([&] { RunCheckpoint::read(other.path(), *comm, kListing, 2); }).find("control group(s)"),
             std::string::npos);
 }
