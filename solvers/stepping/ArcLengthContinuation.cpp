@@ -78,8 +78,11 @@ public:
     if (!onPoint_(point, *u)) stop = true;
     // The path ends at the end time's load, or back at no load. LOCA caps its last step at the
     // bound but may not stop there (measured: it turned and went back down the branch it came up).
+    // Back at no load only on the way down: a first step as small as `near` is not the path's end.
     const double near = 1e-6 * std::max(settings_.endTime, settings_.stepSize);
-    if (!stop && (p >= settings_.endTime - near || p <= near)) stop = true;
+    const bool falling = p < previous_;
+    previous_ = p;
+    if (!stop && (p >= settings_.endTime - near || (falling && p <= near))) stop = true;
     if (!stop && steps_ >= settings_.maximumSteps) stop = exhausted = true;
   }
   void preProcessContinuationStep(LOCA::Abstract::Iterator::StepStatus status) override {
@@ -99,6 +102,7 @@ private:
   RCP<assembly::Vector> last_;
   int steps_ = -1;
   const ArcLengthSettings &settings_;
+  double previous_ = settings_.startTime; // the last point's load
 };
 
 // Ends the path when the caller said so (LOCA asks after every step).
@@ -189,7 +193,7 @@ ArcLengthOutcome followPath(const RCP<assembly::ModelEvaluator> &model, const as
     outcome.completed = (status == LOCA::Abstract::Iterator::Finished || handler->stop) && !handler->exhausted;
     if (handler->exhausted)
       outcome.failure = "the path took Time/arc length steps = " + std::to_string(settings.maximumSteps) +
-                        " steps without reaching its end";
+                        " steps without reaching its end; raise Time/arc length steps or Time/step size";
     else if (!outcome.completed)
       outcome.failure = "LOCA's corrector failed below the minimum step size";
   } catch (const std::exception &e) {
