@@ -2,29 +2,44 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdint>
 #include <csignal>
 #include <mutex>
 #include <thread>
 
 #include <fcntl.h>
+#include <time.h>
 #include <unistd.h>
 
 namespace glossa::solvers {
 
 namespace {
 std::atomic<int> received{0};
+std::atomic<std::int64_t> receivedAt{0}; // CLOCK_MONOTONIC nanoseconds of the first signal
+// `timeout`, a terminal's Ctrl-C and a batch system signal both the process and its group, so
+// one request may arrive twice at once: the same signal again within this window is that one.
+constexpr std::int64_t kRepeatWindowNs = 2'000'000'000;
+
+std::int64_t monotonicNs() {
+  timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now); // async-signal-safe
+  return std::int64_t(now.tv_sec) * 1'000'000'000 + now.tv_nsec;
+}
 int wakeFd[2] = {-1, -1};
 std::mutex callbackMutex;
 std::function<void(int)> callback;
 
 extern "C" void handleStop(int signal) {
+  const std::int64_t now = monotonicNs();
   int expected = 0;
   if (!received.compare_exchange_strong(expected, signal)) {
+    if (expected == signal && now - receivedAt.load() < kRepeatWindowNs) return;
     // A second signal: the user insists. Die as the default action would.
     std::signal(signal, SIG_DFL);
     std::raise(signal);
     return;
   }
+  receivedAt.store(now);
   const unsigned char byte = static_cast<unsigned char>(signal);
   [[maybe_unused]] const ssize_t n = ::write(wakeFd[1], &byte, 1); // async-signal-safe
 }
@@ -50,7 +65,10 @@ void installStopSignalHandlers() {
     std::thread(watch).detach();
     struct sigaction action {};
     action.sa_handler = handleStop;
+    // Neither handler interrupts the other: the first signal's time is stored before a second is seen.
     sigemptyset(&action.sa_mask);
+    sigaddset(&action.sa_mask, SIGTERM);
+    sigaddset(&action.sa_mask, SIGINT);
     action.sa_flags = SA_RESTART;
     sigaction(SIGTERM, &action, nullptr);
     sigaction(SIGINT, &action, nullptr);

@@ -4,8 +4,9 @@
 // watcher runs the callback the Simulation registered, which writes summary.json at once with
 // the reason. That matters under mpiexec: Open MPI forwards the signal to every rank and kills
 // them about a second later, long before a step could finish. Without mpiexec the run also stops
-// at the next step boundary (Simulation::run asks stopSignal() on every rank). A second signal
-// kills the process as before. Trilinos-free.
+// at the next step boundary (Simulation::run asks stopSignal() on every rank). The same signal
+// again within 2 s is the same request (`timeout` signals the process and its group); any later
+// or other second signal kills the process as before. Trilinos-free.
 
 #include <functional>
 
