@@ -11,6 +11,7 @@
 #include "assembly/ResultEvaluator.hpp"
 #include "input/SceneFactory.hpp"
 #include "io/deck/DeckError.hpp"
+#include "io/output/DirectoryLock.hpp"
 #include "model/Scene.hpp"
 #include "solvers/control/CommControlGroups.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
@@ -149,6 +150,24 @@ void describeRun(RunParts &run) {
     for (const std::string &note : scene.meshNotes) std::printf("glossa: note: %s\n", note.c_str());
 }
 
+// Rank 0 holds the directory for the run's life before anything in it is cleared or written;
+// every rank refuses alike when another run holds it.
+void lockOutputDirectory(RunParts &run, const std::filesystem::path &dir) {
+  int held = 1;
+  std::string holder;
+  if (run.root) {
+    run.outputLock = std::make_unique<io::DirectoryLock>(dir);
+    held = run.outputLock->held();
+    holder = run.outputLock->holder();
+  }
+  Teuchos::broadcast(*run.comm, 0, &held);
+  if (held) return;
+  throw io::DeckError("the output directory " + dir.string() + " is in use by another glossa run" +
+                      (holder.empty() ? std::string() : " (process " + holder + ")") +
+                      ", which holds its lock file " + io::DirectoryLock::kFileName +
+                      "; wait for that run to end, or give this one another directory (--output or Output/directory)");
+}
+
 // Where the results go: a new run's directory cleared of an earlier run's files, or a restart's
 // with its checkpoint read (a bad deck has been refused before either).
 std::filesystem::path outputDirectory(RunParts &run) {
@@ -161,6 +180,7 @@ std::filesystem::path outputDirectory(RunParts &run) {
     dir = options.restartDirectory;
     run.restart = RunCheckpoint::read(dir, *run.comm, run.config.listing, options.controlGroups);
   }
+  lockOutputDirectory(run, dir);
   if (run.root && !run.restart) prepareOutputDirectory(dir);
   run.comm->barrier();
   return dir;

@@ -11,6 +11,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "io/deck/Deck.hpp"
+#include "io/output/DirectoryLock.hpp"
 #include "solvers/incompressibility/Augmentation.hpp"
 #include "solvers/linear/LinearSolverFactory.hpp"
 #include "solvers/parameters/ControlSection.hpp"
@@ -46,6 +47,7 @@ struct RunParts {
   RunOptions options;
   Teuchos::RCP<const Teuchos::Comm<int>> comm;
   bool root = false, talk = false, detail = false; // detail: --verbose's per-iteration lines
+  std::unique_ptr<io::DirectoryLock> outputLock; // rank 0's, for the run's life (released last)
   std::unique_ptr<const model::Scene> scene; // as built from the deck, never changed after
   // Each tissue's kappa_AL, rule and tangent law: raised by the Uzawa loop, read by the assembly.
   std::unique_ptr<Augmentation> augmentation;
