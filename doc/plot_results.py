@@ -158,6 +158,21 @@ def plot_run(directory, prefix):
         plot_controls(directory, title, prefix + "_controls.png")
 
 
+def missing_input(a):
+    """What the command line names that is not there, said as a user would fix it; None if all is."""
+    if a.what == "point":
+        if not os.path.isfile(a.csv):
+            return f"no file {a.csv} (write it with `glossa point DECK --output {a.csv}`)"
+        if a.deck and not os.path.isfile(a.deck):
+            return f"--deck {a.deck}: no such file"
+        return None
+    if not os.path.isdir(a.directory):
+        return f"no output directory {a.directory} (a run writes it: `glossa run DECK --output {a.directory}`)"
+    if not os.path.isfile(os.path.join(a.directory, "traces.csv")):
+        return f"{a.directory} has no traces.csv: not the output directory of a glossa run"
+    return None
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="what", required=True, metavar="{point,run}")
@@ -169,11 +184,17 @@ def main(argv=None):
     run.add_argument("directory", help="the run's output directory (`glossa run DECK --output DIR`)")
     run.add_argument("prefix", help="path prefix of the pictures: PREFIX_displacement.png, ...")
     a = p.parse_args(argv)
+    missing = missing_input(a)
+    if missing:
+        # A clear line and argparse's status for a bad command line, not a traceback.
+        print(f"plot_results.py: error: {missing}", file=sys.stderr)
+        return 2
     if a.what == "point":
         plot_point(a.csv, a.png, a.deck)
     else:
         plot_run(a.directory, a.prefix)
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

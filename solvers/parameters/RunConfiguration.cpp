@@ -1,5 +1,9 @@
 #include "solvers/parameters/RunConfiguration.hpp"
 
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
+#include <regex>
 #include <sstream>
 
 #include "io/deck/Deck.hpp"
@@ -29,6 +33,24 @@ const char *const kIterativeOnly[] = {
     "preconditioner", "MueLu smoother", "smoother degree", "vertex-patch levels", "patch sweeps",
     "Chebyshev eigenvalue method", "Chebyshev eigenvalue iterations", "Chebyshev eigenvalue ratio", "MueLu reuse",
     "MueLu reuse scope", "coarse size", "FROSch coarse space", "FROSch overlap", "Ifpack2 type"};
+// The listing's 17 digits keep every value exact, so that a restart compares them exactly; a
+// person reads 0.6, not 0.59999999999999998: each number of 16 or more digits in its shortest
+// form that reads back as the same double.
+std::string readable(const std::string &line) {
+  static const std::regex number(R"([-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?)");
+  std::string out;
+  std::size_t done = 0;
+  for (auto it = std::sregex_iterator(line.begin(), line.end(), number); it != std::sregex_iterator(); ++it) {
+    const std::string token = it->str(), mantissa = (*it)[1].str();
+    const auto digits = std::count_if(mantissa.begin(), mantissa.end(), [](char c) { return c >= '0' && c <= '9'; });
+    out += line.substr(done, static_cast<std::size_t>(it->position()) - done);
+    done = static_cast<std::size_t>(it->position()) + token.size();
+    char buffer[32];
+    const auto shortest = std::to_chars(buffer, buffer + sizeof buffer, std::strtod(token.c_str(), nullptr));
+    out += digits >= 16 && shortest.ec == std::errc() ? std::string(buffer, shortest.ptr) : token;
+  }
+  return out + line.substr(done);
+}
 } // namespace
 
 void declareSolverParameters(Teuchos::ParameterList &schema) {
@@ -62,7 +84,8 @@ std::string firstListingDifference(const std::string &run, const std::string &no
   while (true) {
     const bool more1 = static_cast<bool>(std::getline(a, l1)), more2 = static_cast<bool>(std::getline(b, l2));
     if (!more1 && !more2) return "";
-    if (!more1 || !more2 || l1 != l2) return "the run's " + (more1 ? l1 : "end") + ", now " + (more2 ? l2 : "end");
+    if (!more1 || !more2 || l1 != l2)
+      return "the run's " + (more1 ? readable(l1) : "end") + ", now " + (more2 ? readable(l2) : "end");
   }
 }
 

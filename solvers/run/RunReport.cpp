@@ -164,20 +164,24 @@ void RunReport::addStep(const StepTrial &trial, double t, bool onPath, double as
 void RunReport::stepLine(int step, double t, double endTime, double dt, const UzawaResult &r, bool onPath,
                          const std::string &controlLine) const {
   if (!talk_) return;
+  char volume[64];
+  std::snprintf(volume, sizeof volume, "%s %.1e", penalty_ ? "volume change" : "dilatation error", r.dilatation.max);
   if (onPath) {
-    std::printf("step %d  t = %.6g (load %.4g of the end time's)  newton %d  dilatation error %.1e  [%s elapsed]\n",
-                step, t, t / endTime, r.newtonIterations, r.dilatation.max, readableDuration(since(stepsStart_)).c_str());
+    std::printf("step %d  t = %.6g (load %.4g of the end time's)  newton %d  %s  [%s elapsed]\n", step, t, t / endTime,
+                r.newtonIterations, volume, readableDuration(since(stepsStart_)).c_str());
     return;
   }
+  char linear[64];
+  if (directSolve_) std::snprintf(linear, sizeof linear, "direct solve, %d Krylov steps on the factors", r.linearIterations);
+  else std::snprintf(linear, sizeof linear, "krylov %d", r.linearIterations);
   // step k/N with N from the step size now (the controller may still cut back or grow it), and
   // the time left from the wall time per simulated second so far.
   const double elapsed = since(stepsStart_);
   const long left = t < endTime ? std::lround(std::ceil((endTime - t) / dt - 1e-9)) : 0;
   const double remaining = t > stepsStartTime_ ? elapsed * (endTime - t) / (t - stepsStartTime_) : 0.0;
-  std::printf("step %d/%ld  t = %.6g of %.6g s  newton %d  krylov %d  uzawa %d  dilatation error %.1e%s  "
-              "[%s elapsed, about %s left]\n",
-              step, step + left, t, endTime, r.newtonIterations, r.linearIterations, r.solves, r.dilatation.max,
-              controlLine.c_str(), readableDuration(elapsed).c_str(), readableDuration(remaining).c_str());
+  std::printf("step %d/%ld  t = %.6g of %.6g s  newton %d  %s  uzawa %d  %s%s  [%s elapsed, about %s left]\n", step,
+              step + left, t, endTime, r.newtonIterations, linear, r.solves, volume, controlLine.c_str(),
+              readableDuration(elapsed).c_str(), readableDuration(remaining).c_str());
 }
 
 void RunReport::stepRefused(const StepTrial &trial) {

@@ -68,6 +68,13 @@ public:
   bool converged() const { return failure_.empty(); }
   void fail(const std::string &why) { failure_ = why; }
 
+  // What the step lines call the linear solves and the volume measure: a direct solve's Krylov
+  // steps are iterations on its (possibly reused) factors, not an iterative solve's; the penalty
+  // method's "error" is the volume change max |theta - 1| (UzawaLoop::dilatationError).
+  void describeSolves(bool directSolve, bool penalty) {
+    directSolve_ = directSolve;
+    penalty_ = penalty;
+  }
   // The summary's record of a committed step (its reactions and activation given), and its line.
   void addStep(const StepTrial &trial, double t, bool onPath, double assemblySeconds, nlohmann::json step);
   void stepLine(int step, double t, double endTime, double dt, const UzawaResult &r, bool onPath,
@@ -85,6 +92,7 @@ private:
   using Clock = std::chrono::steady_clock;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   bool root_, talk_;
+  bool directSolve_ = false, penalty_ = false;
   Clock::time_point start_, stepsStart_;
   double stepsStartTime_ = 0.0;         // the simulated time when the steps began (a restart's)
   double setupAtStart_, solveAtStart_; // NOX's timers when the run began

@@ -17,6 +17,8 @@ Simulation::Simulation(const io::Deck &deck, const RunConfiguration &config,
     : run_(setUpRun(deck, config, comm, options)) {
   RunParts &run = *run_;
   onPath_ = run.config.time.pathFollowing == PathFollowing::arcLength;
+  run.report->describeSolves(run.linearPlan.direct,
+                             run.config.incompressibility.method == IncompressibilityMethod::penalty);
   const StepState &state = run.stepper->committed();
   const assembly::MuscleFields initial = assembly::updateMuscleHistory(assembly::ResultEvaluator(*run.assembler), state.u, *run.history);
   std::vector<double> inputs;

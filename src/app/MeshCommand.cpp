@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "io/deck/DeckError.hpp"
 #include "io/output/OutputError.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "mesh/MeshChecks.hpp"
@@ -13,7 +14,21 @@
 
 namespace glossa::app {
 
+namespace {
+// --output names a mesh file (.msh, .inp) or a directory for XDMF. Any other extension is far more
+// likely a format glossa does not write (out.vtk) than a directory's name: it is refused, before
+// the mesh is read, rather than made a directory; an existing directory or a trailing / is taken.
+void checkOutputName(const std::filesystem::path &output) {
+  const std::string extension = output.extension().string();
+  if (extension.empty() || extension == ".msh" || extension == ".inp" || std::filesystem::is_directory(output)) return;
+  throw io::DeckError("--output " + output.string() + ": glossa mesh writes OUT.msh (Gmsh), OUT.inp (Abaqus) or a " +
+                      "directory DIR (XDMF for ParaView), not " + extension + " files; for a directory of that " +
+                      "name, end it with /");
+}
+} // namespace
+
 nlohmann::json describeMesh(const std::string &file, const MeshCommandOptions &options) {
+  checkOutputName(options.output);
   mesh::ImportedMesh imported = mesh::readMeshFile(file, options.format);
   mesh::HexMesh m = std::move(imported.mesh);
   if (options.refine > 0) m = mesh::refineUniformly(m, options.refine);

@@ -16,11 +16,12 @@ namespace glossa::app {
 struct MeshCommandOptions {
   std::string format = "auto";
   int refine = 0;
-  std::filesystem::path output; // empty: no files; .msh/.inp: a mesh file; else an XDMF directory
+  std::filesystem::path output; // empty: no files; .msh/.inp: a mesh file; no extension: an XDMF directory
 };
 
 // The report as JSON (what --json prints). Throws std::runtime_error (file:line: reason) for a
-// file the readers refuse.
+// file the readers refuse, io::DeckError for an --output with another extension (out.vtk) that is
+// not an existing directory.
 nlohmann::json describeMesh(const std::string &file, const MeshCommandOptions &options);
 
 // Human-readable text of the report.

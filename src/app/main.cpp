@@ -30,10 +30,14 @@
 
 namespace {
 
-const char *kUsage = R"(glossa - finite elements for nearly incompressible, fibre-reinforced, active soft tissue
+const char *kHeader = "glossa - finite elements for nearly incompressible, fibre-reinforced, active soft tissue\n";
 
-usage:
-  glossa run DECK.xml [--output DIR] [--set path/to/parameter=value ...] [--quiet | --verbose]
+// One entry per command: `glossa --help` prints them all, `glossa CMD --help` only CMD's.
+struct CommandHelp {
+  const char *command, *text;
+};
+const CommandHelp kCommands[] = {
+    {"run", R"(  glossa run DECK.xml [--output DIR] [--set path/to/parameter=value ...] [--quiet | --verbose]
              [--timers] [--control-groups G] [--restart DIR]
       run a deck; results (results.xdmf/.h5, traces.csv, summary.json) go to DIR
       (default: the deck's Output/directory). Under mpiexec -np N it runs on N ranks.
@@ -46,32 +50,41 @@ usage:
       (written every Output/checkpoint every steps and when the run is stopped by a signal),
       with the same deck and --set values and on as many ranks; its files end as an
       uninterrupted run's would.
-  glossa validate DECK.xml [--set path=value ...]
-      check a deck (parameters, and the mesh sets and points it names) and print it with
-      every default filled in
-  glossa schema [--markdown]
+)"},
+    {"validate", R"(  glossa validate DECK.xml [--set path=value ...] [--print]
+      check a deck (parameters, and the mesh sets and points it names) and say that it is
+      valid; --print prints the deck with every default filled in (XML, on stdout)
+)"},
+    {"schema", R"(  glossa schema [--markdown]
       print every deck parameter (--markdown: the text of doc/deck-reference.md)
-  glossa point DECK.xml [--output FILE] [--set path=value ...]
+)"},
+    {"point", R"(  glossa point DECK.xml [--output FILE] [--set path=value ...]
       drive one material point of the deck's Material along the deck's Point path
       (uniaxial, simple shear or a table of F) with its muscle groups' inputs; writes
       stress, fibre and contractile stretches, tensions and activations to FILE
       (default: point.csv)
-  glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR|OUT.msh|OUT.inp]
+)"},
+    {"mesh", R"(  glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR|OUT.msh|OUT.inp]
       read a mesh (Gmsh .msh 2.2/4.1 ASCII or binary, Abaqus .inp, ANSYS .node/.elem),
       optionally refine it, and print its counts, sets, volume and element quality
-      (--output DIR: XDMF for ParaView; OUT.msh or OUT.inp: the mesh with all its sets)
-  glossa zero-strain DECK.xml --output FILE [--method approximate|inverse] [--tolerance T]
+      (--output DIR: XDMF for ParaView; OUT.msh or OUT.inp: the mesh with all its sets; any
+      other extension is refused: a directory named with a dot needs a trailing /)
+)"},
+    {"zero-strain", R"(  glossa zero-strain DECK.xml --output FILE [--method approximate|inverse] [--tolerance T]
          [--max-iterations N] [--set path=value ...] [--quiet]
       the zero-strain configuration (paper §8.1) of a deck loaded by gravity alone: approximate
       (the imaged mesh under the reversed gravity times 1.2) or inverse (reference coordinates
       updated until gravity maps them onto the imaged mesh, to T times the mean element edge);
       writes the coordinates to FILE (for Mesh/reference coordinates file) and a report to FILE
       with extension .json. The options stand for --set "Zero strain/method=..." etc.
-  glossa curves [--output DIR]
+)"},
+    {"curves", R"(  glossa curves [--output DIR]
       tabulate the muscle curves f_cL, f_cV (both parameter sets), f_p and f_s to
       DIR/force_length.csv, force_velocity.csv, passive_series.csv (default DIR: ./curves)
-  glossa --help | --version
+)"},
+};
 
+const char *kFooter = R"(
 --set overrides any deck parameter, e.g. --set Mesh/Box/cells=16,16,16 (for sweeps).
 Exit status: 0 success; 1 the run stopped without converging (a step failed below the minimum
 step size, or a check failed); 2 a bad deck, mesh file or command line; 3 the run was
@@ -79,10 +92,28 @@ interrupted (SIGTERM or SIGINT; summary.json says where); 4 an output file could
 written; 5 an internal error. Errors go to stderr, with --quiet too.
 )";
 
+// The help for `command` alone, or every command's when it names none of them.
+std::string usage(const char *command) {
+  std::string text = std::string(kHeader) + "\nusage:\n";
+  bool found = false;
+  for (const auto &c : kCommands)
+    if (command && !std::strcmp(command, c.command)) {
+      text += c.text;
+      found = true;
+    }
+  if (!found) {
+    for (const auto &c : kCommands) text += c.text;
+    text += "  glossa --help | --version\n  glossa COMMAND --help\n";
+  } else {
+    text += "\nglossa --help lists every command.\n";
+  }
+  return text + kFooter;
+}
+
 struct Arguments {
   std::string command, deck, output, restart;
   std::vector<std::string> overrides;
-  bool quiet = false, verbose = false, markdown = false, timers = false, json = false;
+  bool quiet = false, verbose = false, markdown = false, timers = false, json = false, print = false;
   std::string format = "auto";
   std::vector<std::string> zeroStrain; // --method, --tolerance, --max-iterations as deck overrides
   int refine = 0;
@@ -108,6 +139,7 @@ Arguments parse(int argc, char **argv) {
     else if (s == "--timers") a.timers = true;
     else if (s == "--markdown") a.markdown = true;
     else if (s == "--json") a.json = true;
+    else if (s == "--print") a.print = true;
     else if (s == "--format") a.format = value("--format");
     else if (s == "--method") a.zeroStrain.push_back("Zero strain/method=" + value("--method"));
     else if (s == "--tolerance") a.zeroStrain.push_back("Zero strain/tolerance=" + value("--tolerance"));
@@ -178,7 +210,7 @@ int main(int argc, char **argv) {
   // Kokkos answers --help itself, wherever it stands (glossa mesh --help): ours comes first.
   for (int i = 1; i < argc; ++i)
     if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h") || (i == 1 && !std::strcmp(argv[i], "help"))) {
-      std::fputs(kUsage, stdout);
+      std::fputs(usage(argv[1]).c_str(), stdout);
       return 0;
     }
   Tpetra::ScopeGuard mpi(&argc, &argv);
@@ -193,6 +225,8 @@ int main(int argc, char **argv) {
     const Arguments a = parse(argc, argv);
     if (!a.restart.empty() && a.command != "run")
       throw glossa::io::DeckError("--restart belongs to glossa run; see glossa --help");
+    if (a.print && a.command != "validate")
+      throw glossa::io::DeckError("--print belongs to glossa validate; see glossa --help");
     const Teuchos::ParameterList schema = glossa::app::deckSchema();
     if (a.command == "schema") {
       if (root) {
@@ -234,7 +268,9 @@ int main(int argc, char **argv) {
                                              {comm->getSize(), a.controlGroups, !a.restart.empty()});
       if (root)
         for (const std::string &note : scene.meshNotes) std::fprintf(stderr, "glossa: note: %s\n", note.c_str());
-      if (root) std::cout << deck.toXml();
+      // The verdict on stderr, where the notes are: stdout keeps only the deck (--print), for a file.
+      if (root) std::fprintf(stderr, "glossa: %s is valid\n", a.deck.c_str());
+      if (root && a.print) std::cout << deck.toXml();
       return 0;
     }
     if (!a.zeroStrain.empty() && a.command != "zero-strain")

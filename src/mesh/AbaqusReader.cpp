@@ -1,6 +1,7 @@
 #include "mesh/AbaqusReader.hpp"
 
 #include <map>
+#include <regex>
 #include <set>
 #include <stdexcept>
 
@@ -23,6 +24,36 @@ const std::set<std::string> kQuadTypes = {"CPS4", "CPS4R", "CPE4",  "CPE4R",  "S
 // 2-node lines: Gmsh exports a physical curve as T3D2 elements in an ELSET; like MSH's physical
 // curves they give node sets.
 const std::set<std::string> kLineTypes = {"T3D2", "T2D2", "B31", "B21"};
+
+const char *kSubdivide = "'Mesh.SubdivisionAlgorithm = 2;' in Gmsh (every element split into hexahedra)";
+
+// What to do about an element type Glossa does not read, as the MSH reader says it for Gmsh's
+// types: from the node count of the Abaqus name (C3D4, CPS3, C3D20R, S8R, ...); "" if unknown.
+std::string remedyFor(const std::string &type) {
+  static const std::regex solid(R"(C3D(\d{1,3})\D*)"), facet(R"((CPS|CPE|CAX|S|R3D|M3D|SFM3D)(\d{1,3})\D*)");
+  std::smatch m;
+  const bool isSolid = std::regex_match(type, m, solid);
+  if (!isSolid && !std::regex_match(type, m, facet)) return "";
+  const int nodes = std::stoi(m[isSolid ? 1 : 2].str());
+  if (isSolid && (nodes == 4 || nodes == 10))
+    return "tetrahedra: Glossa needs hexahedra; mesh the volume with hexahedra (in Gmsh a transfinite, recombined "
+           "volume, or an extrusion of recombined surfaces), or " + std::string(kSubdivide);
+  if (isSolid && (nodes == 6 || nodes == 15))
+    return "prisms: Glossa needs hexahedra; recombine the surface before extruding it, or " + std::string(kSubdivide);
+  if (isSolid && nodes == 5)
+    return "pyramids: Glossa needs hexahedra; make the whole volume transfinite and recombined, or " +
+           std::string(kSubdivide);
+  if (isSolid && (nodes == 20 || nodes == 27))
+    return "second-order hexahedra: Glossa reads 8-node ones; export first-order elements (Gmsh 'Mesh.ElementOrder = "
+           "1;', Abaqus/CAE geometric order Linear)";
+  if (nodes == 3 || nodes == 6)
+    return "triangles: a face set is made of hexahedron faces, 4-node quadrilaterals; 'Recombine Surface', or " +
+           std::string(kSubdivide);
+  if (nodes == 8 || nodes == 9)
+    return "second-order quadrilaterals: Glossa reads 4-node ones; export first-order elements (Gmsh "
+           "'Mesh.ElementOrder = 1;', Abaqus/CAE geometric order Linear)";
+  return "";
+}
 
 struct Keyword {
   std::string name;                           // upper case, without '*'
@@ -135,10 +166,11 @@ class AbaqusParser {
     } else if (k.name == "ELEMENT") {
       const std::string type = upper(param(k, "TYPE"));
       if (!kHexTypes.count(type) && !kQuadTypes.count(type) && !kLineTypes.count(type)) {
+        const std::string remedy = remedyFor(type);
         in_.fail("element type " + type +
                  " is not supported: Glossa reads C3D8, C3D8H, C3D8R and C3D8RH hexahedra, 4-node "
                  "quadrilaterals (CPS4, S4, R3D4, ...) as face sets and 2-node lines (T3D2, T2D2, B31, B21) "
-                 "as node sets");
+                 "as node sets" + (remedy.empty() ? "" : ". " + type + " are " + remedy));
       }
       if (k.params.count("ELSET")) set(elsets_, param(k, "ELSET"));
     } else if (k.name == "ELSET") {

@@ -7,7 +7,7 @@ changed, a Trilinos source path as the message, or a NaN in the output.
 
 Decks: inputs/verification/uniaxial_tension.xml with one mutation each (a value replaced by text a
 strtod-style reader would misread or by a plausible number, an element or line duplicated or
-dropped, the file cut short, tags broken, a deep nest), checked with `glossa validate`; when
+dropped, the file cut short, tags broken, a deep nest), checked with `glossa validate --print`; when
 accepted, the mutated parameter must read back as exactly its text. The first --runs accepted
 decks are also run (to t = 0.2) and their traces checked for NaN. Meshes: a two-cube Abaqus file
 with one mutation each, checked with `glossa mesh`. Prints the counts (ran, refused, crashed,
@@ -213,7 +213,7 @@ def main():
             f.write(mutate_mesh(CUBES, rng))
         meshes.append(mesh)
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
-        validated = list(pool.map(lambda d: invoke([a.glossa, "validate", d[0]], tally, d[0]), decks))
+        validated = list(pool.map(lambda d: invoke([a.glossa, "validate", d[0], "--print"], tally, d[0]), decks))
         described = list(pool.map(lambda m: invoke([a.glossa, "mesh", m], tally, m), meshes))
     accepted = []
     for (deck, change), p in zip(decks, validated):

@@ -1,11 +1,13 @@
 // glossa mesh on a box written as a Gmsh file: the report's counts, volume, quality, checks and
 // sets are the box's; --refine splits every hexahedron into eight; --output OUT.inp writes a mesh
-// that reads back the same; the text report says the same numbers.
+// that reads back the same, an --output of another format is refused; the text report says the
+// same numbers.
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
 #include "app/MeshCommand.hpp"
+#include "io/deck/DeckError.hpp"
 #include "mesh/BoxGenerator.hpp"
 #include "mesh/MeshWriter.hpp"
 
@@ -53,6 +55,21 @@ TEST(MeshCommand, AnAbaqusFileWrittenReadsBackTheSame) {
   EXPECT_EQ(back.at("elements"), written.at("elements"));
   EXPECT_NEAR(back.at("volume").get<double>(), 6.0, 1e-12);
   EXPECT_EQ(back.at("sets").at("face"), written.at("sets").at("face"));
+}
+
+TEST(MeshCommand, AnOutputOfAnotherFormatIsRefusedNotMadeADirectory) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "mesh_command_output";
+  std::filesystem::remove_all(dir);
+  try {
+    describeMesh(boxFile(), {"auto", 0, dir / "out.vtk"});
+    ADD_FAILURE() << "out.vtk accepted";
+  } catch (const io::DeckError &e) {
+    EXPECT_NE(std::string(e.what()).find("not .vtk files"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.vtk"));
+  // A directory of that name, said with a trailing / or existing already, takes the XDMF.
+  EXPECT_EQ(describeMesh(boxFile(), {"auto", 0, dir / "out.vtk/"}).at("written"), (dir / "out.vtk/mesh.xdmf").string());
+  EXPECT_EQ(describeMesh(boxFile(), {"auto", 0, dir / "out.vtk"}).at("written"), (dir / "out.vtk/mesh.xdmf").string());
 }
 
 TEST(MeshCommand, TheTextReportSaysTheSame) {

@@ -140,7 +140,19 @@ TEST(AbaqusReader, RefusesMalformedFiles) {
   expectError(read(twoCubes("1, 5, 6, 7, 8, 9, 10, 11, 12\n")), {f + ":20:", "duplicate element id 1"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 1x\n")), {f + ":20:", "bad node id '1x'"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELEMENT, TYPE=C3D4\n3, 1, 2, 3, 5\n")),
-              {f + ":38:", "element type C3D4 is not supported"});
+              {f + ":38:", "element type C3D4 is not supported", "C3D4 are tetrahedra: Glossa needs hexahedra",
+               "Mesh.SubdivisionAlgorithm = 2"});
+  // Each refused kind with its remedy, as the MSH reader gives one.
+  expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELEMENT, TYPE=CPS3\n3, 1, 2, 3\n")),
+              {f + ":38:", "CPS3 are triangles", "'Recombine Surface'"});
+  expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELEMENT, TYPE=C3D20R\n3, 1, 2, 3\n")),
+              {f + ":38:", "C3D20R are second-order hexahedra", "Mesh.ElementOrder = 1"});
+  expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELEMENT, TYPE=S8R\n3, 1, 2, 3\n")),
+              {f + ":38:", "S8R are second-order quadrilaterals"});
+  expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELEMENT, TYPE=C3D6\n3, 1, 2, 3\n")),
+              {f + ":38:", "C3D6 are prisms"});
+  expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELEMENT, TYPE=C3D99999999999\n3, 1\n")),
+              {f + ":38:", "element type C3D99999999999 is not supported: Glossa reads"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*SURFACE, NAME=s\nnosuchset, S1\n")),
               {f + ":39:", "unknown element set 'nosuchset'"});
   expectError(read(twoCubes("2, 5, 6, 7, 8, 9, 10, 11, 12\n", "*ELSET, ELSET=x\n1, missing\n")),

@@ -95,5 +95,20 @@ TEST(RunConfiguration, TheFirstDifferenceOfTwoListings) {
   EXPECT_EQ(firstListingDifference("a = 1\nb = 2\n", "a = 1\n"), "the run's b = 2, now end");
 }
 
+TEST(RunConfiguration, ListingDifferencesReadAsTheDeckWroteThem) {
+  // The listing keeps 17 digits (a restart compares exactly); its message, the shortest form.
+  const std::string run = configuration("run_longer.xml", {"Time/end time=0.6"}).listing;
+  EXPECT_EQ(firstListingDifference(run, configuration("run_longer.xml", {"Time/end time=0.7"}).listing),
+            "the run's Time/end time = 0.6, now Time/end time = 0.7");
+  EXPECT_EQ(firstListingDifference("g = {0.59999999999999998, -9.8100000000000005, 3}\n", "g = {0.6, -9.81, 4}\n"),
+            "the run's g = {0.6, -9.81, 3}, now g = {0.6, -9.81, 4}");
+  // Values that differ past the 16th digit still differ, and say so.
+  EXPECT_EQ(firstListingDifference("x = 0.10000000000000001\n", "x = 0.10000000000000002\n"),
+            "the run's x = 0.1, now x = 0.10000000000000002");
+  // Names and short numbers stay as written.
+  EXPECT_EQ(firstListingDifference("s8_1/cells = 1000000\n", "s8_1/cells = 2\n"),
+            "the run's s8_1/cells = 1000000, now s8_1/cells = 2");
+}
+
 } // namespace
 } // namespace glossa::solvers

@@ -1,4 +1,5 @@
-// The run's report without a run: a committed step's record in summary.json, a refused step's
+// The run's report without a run: a committed step's record in summary.json, its console line
+// (what it calls the linear solves and the volume measure), a refused step's
 // inside-out record, how the end is told (converged, or the failure and its reason), and a stop
 // signal agreed by every rank and written into the summary by the watcher at once.
 #include <gtest/gtest.h>
@@ -78,6 +79,30 @@ TEST(RunReport, OnAnArcLengthPathTheKrylovCountIsNotClaimed) {
   report.setDirectory(dir.path());
   report.addStep(trialTo(0.5, 0.25), 0.5, true, 0.0, {});
   EXPECT_FALSE(report.doc()["steps"][0].contains("linear_iterations"));
+}
+
+// The step line as printed by the rank that talks, under the solve it describes.
+std::string stepLineOf(bool directSolve, bool penalty, bool onPath) {
+  RunReport report(Tpetra::getDefaultComm(), root(), true);
+  report.describeSolves(directSolve, penalty);
+  report.beginSteps(0.0);
+  ::testing::internal::CaptureStdout();
+  report.stepLine(2, 0.5, 1.0, 0.25, trialTo(0.5, 0.25).attempt.uzawa, onPath, "");
+  return ::testing::internal::GetCapturedStdout();
+}
+
+TEST(RunReport, TheStepLineNamesWhatItCounts) {
+  const std::string iterative = stepLineOf(false, false, false);
+  EXPECT_NE(iterative.find("newton 5  krylov 40  uzawa 2  dilatation error 3.0e-04"), std::string::npos) << iterative;
+  const std::string direct = stepLineOf(true, false, false);
+  EXPECT_NE(direct.find("newton 5  direct solve, 40 Krylov steps on the factors  uzawa 2  dilatation error 3.0e-04"),
+            std::string::npos) << direct;
+  EXPECT_EQ(direct.find("krylov"), std::string::npos) << direct;
+  const std::string penalty = stepLineOf(false, true, false);
+  EXPECT_NE(penalty.find("uzawa 2  volume change 3.0e-04"), std::string::npos) << penalty;
+  const std::string onPath = stepLineOf(true, true, true);
+  EXPECT_NE(onPath.find("newton 5  volume change 3.0e-04"), std::string::npos) << onPath;
+  EXPECT_EQ(onPath.find("dilatation error"), std::string::npos) << onPath;
 }
 
 TEST(RunReport, ARefusedInsideOutStepIsRecordedWithItsTime) {
