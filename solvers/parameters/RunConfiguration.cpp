@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "io/deck/Deck.hpp"
+#include "io/deck/DeckError.hpp"
 #include "solvers/parameters/ControlSection.hpp"
 
 namespace glossa::solvers {
@@ -72,6 +73,14 @@ RunConfiguration parseRunConfiguration(const io::Deck &deck) {
   c.linear = parseLinearSolverParameters(D.sublist("Linear solver"));
   c.output = parseOutputParameters(D.sublist("Output"));
   c.controlled = controlRequested(D.sublist("Control"));
+  // A nominal step below the minimum could never be taken: the run would start below the
+  // step-size controller's floor (a step of 4.9e-324 s ran forever and counted its steps wrongly).
+  if (c.time.steps.nominal < c.time.steps.minimum) {
+    std::ostringstream why;
+    why << deck.where({"Time", "step size"}) << " = " << c.time.steps.nominal << " s is below Time/minimum step size ("
+        << c.time.steps.minimum << " s): no step could be taken; raise the step size or lower the minimum";
+    throw io::DeckError(why.str());
+  }
   c.listing = parameterListing(D);
   for (const char *name : kIterativeOnly)
     if (deck.given({"Linear solver", name})) c.givenIterativeOnly.push_back(deck.where({"Linear solver", name}));
