@@ -47,9 +47,7 @@ public:
   ~RunReport();
 
   nlohmann::json &doc() { return doc_; }
-  bool talk() const { return talk_; }
   void setDirectory(const std::filesystem::path &dir) { dir_ = dir; }
-  const std::filesystem::path &directory() const { return dir_; }
   // A warning: in summary.json's warnings and on stderr (also with --quiet).
   void warn(const std::string &text);
 

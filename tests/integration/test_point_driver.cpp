@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "CsvRows.hpp"
 #include "RunDeck.hpp"
 #include "app/PointCommand.hpp"
 #include "io/deck/DeckError.hpp"
@@ -29,24 +30,7 @@ Table runPoint(const std::vector<std::string> &overrides, const std::string &tag
   deck.validate(schema);
   const auto file = test::scratchDirectory("point") / (tag + ".csv");
   const int rows = app::runPointDriver(deck, solvers::parseRunConfiguration(deck).time, file);
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream header(line);
-  // Columns are "name [unit]"; the table is keyed by the name.
-  for (std::string c; std::getline(header, c, ',');) names.push_back(c.substr(0, c.find(" [")));
-  Table table;
-  while (std::getline(in, line)) {
-    std::stringstream s(line);
-    std::map<std::string, double> row;
-    std::string c;
-    for (const auto &n : names) {
-      std::getline(s, c, ',');
-      row[n] = std::stod(c);
-    }
-    table.push_back(row);
-  }
+  const Table table = test::readCsvRows(file);
   EXPECT_EQ(static_cast<int>(table.size()), rows);
   return table;
 }

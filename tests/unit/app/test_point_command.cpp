@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "CsvRows.hpp"
 #include "DeckOnFile.hpp"
 #include "app/DeckSchema.hpp"
 #include "app/PointCommand.hpp"
@@ -35,33 +36,12 @@ io::Deck neoHookeanDeck(const std::string &name, const std::vector<std::string> 
                           deckSchema(), overrides);
 }
 
-// The CSV's rows, each by column name (without its unit).
-std::vector<std::map<std::string, double>> readRows(const std::filesystem::path &csv) {
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream header(line);
-  for (std::string c; std::getline(header, c, ',');) names.push_back(c.substr(0, c.find(" [")));
-  std::vector<std::map<std::string, double>> rows;
-  while (std::getline(in, line)) {
-    std::stringstream s(line);
-    std::map<std::string, double> row;
-    std::string c;
-    for (const auto &n : names) {
-      std::getline(s, c, ',');
-      row[n] = std::stod(c);
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 TEST(PointCommand, NeoHookeanUniaxialStretchAtEveryStep) {
   const io::Deck deck = neoHookeanDeck("point_neo_hookean.xml");
   const auto csv = std::filesystem::path(::testing::TempDir()) / "point_neo_hookean.csv";
   const int written = runPointDriver(deck, solvers::parseRunConfiguration(deck).time, csv);
-  const auto rows = readRows(csv);
+  const auto rows = test::readCsvRows(csv);
   ASSERT_EQ(written, 5); // t = 0, 0.25, 0.5, 0.75, 1
   ASSERT_EQ(rows.size(), 5u);
   for (std::size_t k = 0; k < rows.size(); ++k) {
