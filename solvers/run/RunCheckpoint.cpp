@@ -99,10 +99,12 @@ std::unique_ptr<Restart> readChecked(const std::filesystem::path &dir, const Teu
   const std::string difference = firstListingDifference(deck, listing);
   if (!difference.empty())
     throw io::CheckpointError("--restart " + dir.string() + ": the deck is not the one the run was started with (" +
-                              difference + "); a restart continues the same run, with the same deck and --set values");
+                              difference + "); a restart continues the same run, with the same deck and --set values (" +
+                              runFile.string() + " records the run's)");
   if (ranks != comm.getSize() || groups != controlGroups)
     throw io::CheckpointError("--restart " + dir.string() + ": the run was made on " + std::to_string(ranks) + " rank(s) in " +
-                              std::to_string(groups) + " control group(s); restart it on as many (its checkpoint is split by rank)");
+                              std::to_string(groups) + " control group(s); restart it on as many (its checkpoint is split by rank: " +
+                              runFile.string() + ")");
   fromFile(runFile, [&] {
     checkRunValues(restart->run, shape);
     restart->outputs = outputMarkFromJson(restart->run.at("outputs"));
