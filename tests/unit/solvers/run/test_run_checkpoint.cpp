@@ -1,7 +1,7 @@
 // Checkpoints without a run: a part written is read back as it was, once published; a restart
 // is refused, naming why, when there is no checkpoint, when the deck differs (the first
 // parameter that does), or when the ranks or control groups do; a damaged part or an edited
-// value is refused on every rank alike (a CheckpointError, exit 2), naming the file.
+// value is refused on every rank alike (an io::CheckpointError, so exit 2), naming the file.
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -12,7 +12,6 @@
 
 #include "DeckOnFile.hpp"
 #include "SharedScratch.hpp"
-#include "io/output/CheckpointError.hpp"
 #include "solvers/run/CheckpointContents.hpp"
 #include "solvers/run/RunCheckpoint.hpp"
 
@@ -47,16 +46,6 @@ CheckpointShape shape() {
   s.elements = 1;
   s.tissues = 1;
   return s;
-}
-
-// The message of the CheckpointError `f` throws (on every rank alike), "" if none.
-template <class F> std::string checkpointErrorOf(F &&f) {
-  try {
-    f();
-  } catch (const io::CheckpointError &e) {
-    return e.what();
-  }
-  return "";
 }
 
 } // namespace
@@ -123,7 +112,7 @@ TEST(RunCheckpoint, ADamagedPartIsRefusedOnEveryRankNamingIt) {
     f.put(byte);
   }
   comm->barrier();
-  const std::string why = checkpointErrorOf([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1, shape()); });
+  const std::string why = test::deckErrorOf([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1, shape()); });
   EXPECT_NE(why.find("checkpoint/step_000001/" + last + ": the file is damaged: its CRC-32 is"), std::string::npos) << why;
   EXPECT_NE(why.find("it cannot be trusted"), std::string::npos) << why;
 }
@@ -133,7 +122,7 @@ TEST(RunCheckpoint, AnEditedTimeIsRefusedNamingTheFileAndTheValue) {
   for (const double t : {std::numeric_limits<double>::quiet_NaN(), 1e300}) {
     glossa::testing::SharedScratch dir;
     RunCheckpoint(dir.path(), comm, 1).write(1, part(comm->getSize(), 1, t));
-    const std::string why = checkpointErrorOf([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1, shape()); });
+    const std::string why = test::deckErrorOf([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1, shape()); });
     EXPECT_NE(why.find("checkpoint/step_000001/rank_0000.cbor: time = " + std::string(std::isnan(t) ? "nan" : "1e+300") +
                        "; it must be finite and in [0, 1] (Time/end time)"),
               std::string::npos)
@@ -147,6 +136,6 @@ TEST(RunCheckpoint, APartOfAnotherMeshIsRefusedOnEveryRank) {
   RunCheckpoint(dir.path(), comm, 1).write(1, part(comm->getSize()));
   CheckpointShape bigger = shape();
   bigger.displacements = 6;
-  const std::string why = checkpointErrorOf([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1, bigger); });
+  const std::string why = test::deckErrorOf([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1, bigger); });
   EXPECT_NE(why.find("rank_0000.cbor: u (displacement) has 3 values, this run has 6 here"), std::string::npos) << why;
 }
