@@ -1,6 +1,6 @@
 #include "solvers/run/CheckpointContents.hpp"
 
-#include "io/output/OutputError.hpp"
+#include "io/output/CheckpointError.hpp"
 
 namespace glossa::solvers {
 
@@ -54,7 +54,7 @@ void assignOwnedValues(assembly::Vector &v, const nlohmann::json &values, const 
   const auto x = values.get<std::vector<double>>();
   auto data = v.getDataNonConst();
   if (x.size() != static_cast<std::size_t>(data.size()))
-    throw io::OutputError(std::string("the checkpoint's ") + what + " has " + std::to_string(x.size()) + " values here, " +
+    throw io::CheckpointError(std::string("the checkpoint's ") + what + " has " + std::to_string(x.size()) + " values here, " +
                           std::to_string(data.size()) + " expected (another mesh or partition)");
   std::copy(x.begin(), x.end(), data.begin());
 }
@@ -62,7 +62,7 @@ void assignOwnedValues(assembly::Vector &v, const nlohmann::json &values, const 
 std::vector<double> elementValues(const nlohmann::json &values, std::size_t expected, const char *what) {
   auto x = values.get<std::vector<double>>();
   if (x.size() != expected)
-    throw io::OutputError(std::string("the checkpoint's ") + what + " has " + std::to_string(x.size()) +
+    throw io::CheckpointError(std::string("the checkpoint's ") + what + " has " + std::to_string(x.size()) +
                           " element values here, " + std::to_string(expected) + " expected (another mesh or partition)");
   return x;
 }

@@ -18,8 +18,8 @@ OutputMark outputMarkFromJson(const nlohmann::json &j);
 nlohmann::json toJson(const model::MuscleHistory::Snapshot &history);
 model::MuscleHistory::Snapshot muscleSnapshotFromJson(const nlohmann::json &j);
 
-// A distributed vector's owned values, and back: io::OutputError if the count differs (another
-// mesh or partition). `what` names it in the message.
+// A distributed vector's owned values, and back: io::CheckpointError if the count differs
+// (another mesh or partition). `what` names it in the message.
 std::vector<double> ownedValues(const assembly::Vector &v);
 void assignOwnedValues(assembly::Vector &v, const nlohmann::json &values, const char *what);
 // Per-local-element values, checked against the count expected.

@@ -1,8 +1,10 @@
 #pragma once
 // The run's checkpoints (glossa run --restart): each rank's part of the committed state written
 // to <output>/checkpoint and published once every part is on disk (io::CheckpointStore), and a
-// restart's read with its checks that the deck, the ranks and the control groups are the run's.
-// What goes into a part is each run component's own (LoadStepper::save, ...).
+// restart's read with its checks that the deck, the ranks and the control groups are the run's,
+// that every part is as written (its CRC) and that its values are ones this run could have
+// written (CheckpointSanity). What goes into a part is each run component's own
+// (LoadStepper::save, ...).
 
 #include <filesystem>
 #include <memory>
@@ -11,6 +13,7 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_RCP.hpp>
 
+#include "solvers/run/CheckpointSanity.hpp"
 #include "solvers/run/StepRecorder.hpp"
 
 namespace glossa::io {
@@ -25,6 +28,7 @@ struct Restart {
   nlohmann::json run;  // rank 0's part: the scalars, the monitors' and controller's state, the summary, the files' lengths
   nlohmann::json part; // this rank's: displacement, multipliers, muscle history
   OutputMark outputs;
+  std::filesystem::path partFile; // this rank's part, named when it cannot be restored
 };
 
 class RunCheckpoint {
@@ -43,10 +47,13 @@ public:
   void restored(int step) { written_ = step; }
   const std::filesystem::path &directory() const;
 
-  // The latest checkpoint in `dir`: io::DeckError if there is none, if `listing` is not the
-  // run's deck, or if the ranks or control groups differ. Collective.
+  // The latest checkpoint in `dir`, on every rank or on none: io::CheckpointError (an
+  // io::DeckError: exit 2) naming the file and what is wrong if there is none, if `listing` is
+  // not the run's deck, if the ranks or control groups differ, if a part is damaged, cut short
+  // or missing, or if a value does not fit `shape` (its step and directory are filled in here).
+  // Collective: every rank refuses alike, with the message of the first rank that found a fault.
   static std::unique_ptr<Restart> read(const std::filesystem::path &dir, const Teuchos::Comm<int> &comm,
-                                       const std::string &listing, int controlGroups);
+                                       const std::string &listing, int controlGroups, CheckpointShape shape);
 
 private:
   std::unique_ptr<io::CheckpointStore> store_;
@@ -61,7 +68,10 @@ struct RunParts;
 // monitors', the Uzawa loop's and the controller's state, where the files had got, the summary)
 // checkpointed as this rank's part, unless this step has one. Collective.
 void writeCheckpoint(RunParts &run);
-// A restart: every part back to the checkpoint's state, the summary told of the restart.
+// What this run's state holds on this rank, for RunCheckpoint::read's checks.
+CheckpointShape checkpointShape(const RunParts &run);
+// A restart: every part back to the checkpoint's state, the summary told of the restart. A part
+// that still refuses its state is an io::CheckpointError on every rank. Collective.
 void restoreRun(RunParts &run, const Restart &restart);
 
 } // namespace glossa::solvers

@@ -178,7 +178,7 @@ std::filesystem::path outputDirectory(RunParts &run) {
     if (!options.outputDirectory.empty())
       throw io::DeckError("--restart continues in the directory it names; leave out --output");
     dir = options.restartDirectory;
-    run.restart = RunCheckpoint::read(dir, *run.comm, run.config.listing, options.controlGroups);
+    run.restart = RunCheckpoint::read(dir, *run.comm, run.config.listing, options.controlGroups, checkpointShape(run));
   }
   lockOutputDirectory(run, dir);
   if (run.root && !run.restart) prepareOutputDirectory(dir);

@@ -1,6 +1,8 @@
 // Checkpoints (glossa run --restart): every double comes back bit-identical, `latest` names only
 // a checkpoint whose parts were all written, an unpublished (killed) checkpoint is never read,
-// and publishing removes the older ones. A CSV resumed at a checkpoint's length loses the rows
+// and publishing removes the older ones. A part proves itself: every single-bit flip and every
+// truncation of a part is refused, as are another rank's or step's part, a file that is not a
+// checkpoint and a `latest` that does not name one, each a CheckpointError naming the file. A CSV resumed at a checkpoint's length loses the rows
 // written after it, a row cut short by a kill too.
 
 #include <cmath>
@@ -13,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ScratchDirectory.hpp"
+#include "io/output/CheckpointError.hpp"
 #include "io/output/CheckpointStore.hpp"
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/OutputError.hpp"
@@ -64,19 +67,82 @@ TEST(CheckpointStore, AnUnpublishedCheckpointIsNeverReadAndPublishingRemovesTheO
   EXPECT_TRUE(std::filesystem::exists(dir / "checkpoint/step_000010/rank_0000.cbor"));
 }
 
-TEST(CheckpointStore, AMissingOrDamagedPartIsAnOutputErrorNamingTheFile) {
+// The message of the CheckpointError `f` throws, "" if none.
+template <class F> std::string refusal(F &&f) {
+  try {
+    f();
+  } catch (const CheckpointError &e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CheckpointStore, AMissingOrDamagedPartIsACheckpointErrorNamingTheFile) {
   ScratchDirectory dir;
   const CheckpointStore store(dir.path());
   store.writePart(3, 0, {{"u", {1.0, 2.0}}});
   store.publish(3);
-  EXPECT_THROW(store.readPart(3, 1), OutputError);
+  EXPECT_NE(refusal([&] { store.readPart(3, 1); }).find("rank_0001.cbor is missing"), std::string::npos);
   std::ofstream(dir / "checkpoint/step_000003/rank_0000.cbor", std::ios::binary | std::ios::trunc) << "\xff\x01";
-  try {
-    store.readPart(3, 0);
-    FAIL() << "a damaged part was read";
-  } catch (const OutputError &e) {
-    EXPECT_NE(std::string(e.what()).find("rank_0000.cbor"), std::string::npos) << e.what();
+  const std::string why = refusal([&] { store.readPart(3, 0); });
+  EXPECT_NE(why.find("rank_0000.cbor: not a Glossa checkpoint part (2 bytes"), std::string::npos) << why;
+}
+
+TEST(CheckpointStore, EveryBitFlipAndEveryTruncationOfAPartIsRefused) {
+  ScratchDirectory dir;
+  const CheckpointStore store(dir.path());
+  store.writePart(4, 0, {{"u", {0.1, 1.0 / 3.0}}, {"time", 0.5}, {"deck", "Time/end time = 1"}});
+  const std::filesystem::path file = store.partPath(4, 0);
+  const std::string bytes = readText(file);
+  ASSERT_EQ(bytes.size(), CheckpointStore::kHeaderBytes + nlohmann::json::to_cbor(store.readPart(4, 0)).size() +
+                              CheckpointStore::kTrailerBytes);
+  auto refused = [&](const std::string &damaged) {
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << damaged;
+    return refusal([&] { store.readPart(4, 0); });
+  };
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+    for (int bit = 0; bit < 8; ++bit) {
+      std::string flipped = bytes;
+      flipped[i] = static_cast<char>(flipped[i] ^ (1 << bit));
+      const std::string why = refused(flipped);
+      ASSERT_NE(why.find(file.string()), std::string::npos) << "byte " << i << " bit " << bit << ": '" << why << "'";
+    }
+  for (std::size_t length = 0; length < bytes.size(); ++length)
+    ASSERT_NE(refused(bytes.substr(0, length)).find(file.string()), std::string::npos) << length;
+  EXPECT_NE(refused(bytes + "x").find("the header announces"), std::string::npos);
+  EXPECT_NE(refused(bytes.substr(0, bytes.size() - 1)).find("(cut short or run on)"), std::string::npos);
+  std::string payload = bytes;
+  payload[40] = static_cast<char>(payload[40] ^ 1);
+  EXPECT_NE(refused(payload).find("the file is damaged: its CRC-32 is"), std::string::npos);
+  EXPECT_EQ(refused(bytes), "");
+}
+
+TEST(CheckpointStore, AnotherRanksOrStepsPartIsRefused) {
+  ScratchDirectory dir;
+  const CheckpointStore store(dir.path());
+  store.writePart(6, 1, {{"u", {1.0}}});
+  std::filesystem::create_directories(dir / "checkpoint/step_000007");
+  std::filesystem::copy_file(store.partPath(6, 1), store.partPath(6, 0));
+  std::filesystem::copy_file(store.partPath(6, 1), store.partPath(7, 1));
+  EXPECT_NE(refusal([&] { store.readPart(6, 0); }).find("it is rank 1's part of step 6, not rank 0's of step 6"),
+            std::string::npos);
+  EXPECT_NE(refusal([&] { store.readPart(7, 1); }).find("it is rank 1's part of step 6, not rank 1's of step 7"),
+            std::string::npos);
+}
+
+TEST(CheckpointStore, ALatestThatDoesNotNameACheckpointIsRefused) {
+  ScratchDirectory dir;
+  const CheckpointStore store(dir.path());
+  store.writePart(4, 0, {{"u", {1.0}}});
+  store.publish(4);
+  EXPECT_EQ(readText(dir / "checkpoint/latest"), "step_000004\n");
+  for (const std::string text : {"step_00000t\n", "step_000004", "step_000004\x0b", "", "step_-00004\n", "latest\n"}) {
+    std::ofstream(dir / "checkpoint/latest", std::ios::binary | std::ios::trunc) << text;
+    const std::string why = refusal([&] { store.latestStep(); });
+    EXPECT_NE(why.find("checkpoint/latest holds"), std::string::npos) << "'" << text << "': " << why;
   }
+  std::filesystem::remove(dir / "checkpoint/latest");
+  EXPECT_FALSE(store.latestStep().has_value());
 }
 
 TEST(KeyedCsvWriter, ResumedAtACheckpointsLengthLosesTheLaterRowsAndCarriesOn) {
