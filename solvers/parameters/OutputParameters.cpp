@@ -7,7 +7,10 @@ namespace glossa::solvers {
 
 Teuchos::ParameterList outputParameters() {
   Teuchos::ParameterList p;
-  io::declareString(p, "directory", "results", "where results go (glossa run --output overrides)");
+  io::declareString(p, "directory", "",
+                    "where results go, relative to the working directory (the deck's other paths are relative "
+                    "to the deck); empty: results/<the deck file's name without .xml>; glossa run --output "
+                    "overrides");
   io::declareInt(p, "every", 1, "write fields every this many converged steps (the last always)",
                  io::Range::atLeast(1));
   io::declareBool(p, "fields", true, "write HDF5/XDMF fields (traces and summary are always written)");

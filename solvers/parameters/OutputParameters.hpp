@@ -10,7 +10,7 @@
 namespace glossa::solvers {
 
 struct OutputParameters {
-  std::string directory = "results";
+  std::string directory; // relative to the working directory; parseRunConfiguration: results/<deck stem> if empty
   int every = 1;
   bool fields = true;
   std::vector<std::string> resultantFaceSets, volumeFaceSets;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
+#include <filesystem>
 #include <regex>
 #include <sstream>
 
@@ -68,10 +69,14 @@ RunConfiguration parseRunConfiguration(const io::Deck &deck) {
   RunConfiguration c;
   c.deckFile = deck.file();
   c.time = parseTimeParameters(D.sublist("Time"));
+  c.time.rampEndTime = deckEndTime(deck);
   c.incompressibility = parseIncompressibilityParameters(D.sublist("Incompressibility"));
   c.newton = parseNewtonParameters(D.sublist("Nonlinear solver"));
   c.linear = parseLinearSolverParameters(D.sublist("Linear solver"));
   c.output = parseOutputParameters(D.sublist("Output"));
+  // Named after the deck, so that runs of different decks from one directory do not share one.
+  if (c.output.directory.empty())
+    c.output.directory = (std::filesystem::path("results") / std::filesystem::path(deck.file()).stem()).string();
   c.controlled = controlRequested(D.sublist("Control"));
   // A nominal step below the minimum could never be taken: the run would start below the
   // step-size controller's floor (a step of 4.9e-324 s ran forever and counted its steps wrongly).

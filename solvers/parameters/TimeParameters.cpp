@@ -1,12 +1,15 @@
 #include "solvers/parameters/TimeParameters.hpp"
 
+#include <cmath>
+
 #include "io/deck/ParameterSpec.hpp"
 
 namespace glossa::solvers {
 
 Teuchos::ParameterList timeParameters() {
   Teuchos::ParameterList p;
-  io::declareDouble(p, "end time", 1.0, "s", "time of the last step", io::Range::positive());
+  io::declareDouble(p, "end time", 1.0, "s", "time of the last step; a ramp of duration 0 spans the deck file's end time even when "
+                    "--set changes this one (doc/loads.md)", io::Range::positive());
   io::declareDouble(p, "step size", 0.1, "s", "nominal step", io::Range::positive());
   io::declareDouble(p, "minimum step size", 1e-6, "s",
                     "the run stops (and says why) when a failing step would be cut below this",
@@ -57,6 +60,7 @@ Teuchos::ParameterList timeParameters() {
 TimeParameters parseTimeParameters(const Teuchos::ParameterList &s) {
   TimeParameters t;
   t.steps = {s.get<double>("end time"), s.get<double>("step size"), s.get<double>("minimum step size")};
+  t.rampEndTime = t.steps.endTime;
   const std::string predictor = s.get<std::string>("predictor");
   t.predictor = predictor == "linear extrapolation" ? Predictor::linearExtrapolation
                 : predictor == "none"                 ? Predictor::none
@@ -68,6 +72,17 @@ TimeParameters parseTimeParameters(const Teuchos::ParameterList &s) {
   t.arcLengthSteps = s.get<int>("arc length steps");
   t.stopAtDisplacement = s.get<double>("stop at displacement");
   return t;
+}
+
+double deckEndTime(const io::Deck &deck) {
+  const double run = deck.root().sublist("Time").get<double>("end time");
+  if (!deck.setOnCommandLine({"Time", "end time"})) return run;
+  const Teuchos::ParameterEntry *file = deck.fileValue({"Time", "end time"});
+  if (file == nullptr) return timeParameters().get<double>("end time");
+  const Teuchos::any &value = file->getAny(false);
+  if (value.type() != typeid(double)) return run;
+  const double t = Teuchos::any_cast<double>(value);
+  return std::isfinite(t) && t > 0.0 ? t : run;
 }
 
 } // namespace glossa::solvers

@@ -6,6 +6,8 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "io/deck/Deck.hpp"
+
 #include "solvers/stepping/StepSizeController.hpp"
 
 namespace glossa::solvers {
@@ -16,6 +18,10 @@ enum class PathFollowing { loadControl, arcLength };
 
 struct TimeParameters {
   StepSizeRule steps; // end time, nominal and minimum step
+  // The deck's own end time, which a ramp of duration 0 spans: the file's Time/end time (or the
+  // default) even when --set changes the run's, so a shortened run shows the first part of the
+  // load history the deck describes (deckEndTime).
+  double rampEndTime = 1.0; // parseTimeParameters: the section's end time
   Predictor predictor = Predictor::automatic;
   AtLimitPoint atLimitPoint = AtLimitPoint::stop;
   double limitPointTolerance = 0.01;
@@ -27,5 +33,9 @@ struct TimeParameters {
 Teuchos::ParameterList timeParameters();
 // `section`: validated against timeParameters() (every default filled in).
 TimeParameters parseTimeParameters(const Teuchos::ParameterList &section);
+// Time/end time as the deck file gives it (its default if it gives none), whatever --set made of
+// it; a file value that is not a positive number (never validated, --set replaced it): the
+// run's own end time.
+double deckEndTime(const io::Deck &deck);
 
 } // namespace glossa::solvers

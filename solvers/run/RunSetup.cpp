@@ -29,7 +29,7 @@ namespace {
 // The scene (a command's adjustment applied), then each tissue's augmentation from its physical
 // law: the scene keeps the physical laws, the tangent gets its kappa_t from the augmentation.
 void buildScene(const io::Deck &deck, RunParts &run) {
-  auto scene = std::make_unique<model::Scene>(input::buildScene(deck, run.config.time.steps.endTime));
+  auto scene = std::make_unique<model::Scene>(input::buildScene(deck, run.config.time.rampEndTime));
   if (run.options.adjustScene) run.options.adjustScene(*scene);
   std::vector<materials::VolumetricEnergy> physical;
   std::vector<double> mu;

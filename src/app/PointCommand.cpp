@@ -16,10 +16,10 @@ namespace glossa::app {
 
 int runPointDriver(const io::Deck &deck, const solvers::TimeParameters &time, const std::filesystem::path &csv) {
   const double endTime = time.steps.endTime, nominal = std::min(time.steps.nominal, endTime);
-  const input::PointParameters point = input::parsePointParameters(deck, endTime);
+  const input::PointParameters point = input::parsePointParameters(deck, time.rampEndTime);
   auto path = [&point](double t) { return deformationGradient(point, t); };
   // The Material section at the point (its fibre direction fields evaluated at the position).
-  const input::BuiltMaterial material = input::buildPointMaterial(deck, point.position, endTime);
+  const input::BuiltMaterial material = input::buildPointMaterial(deck, point.position, time.rampEndTime);
   const model::MuscleArchitecture &muscles = material.muscles;
 
   model::MuscleHistory history(muscles, {0});

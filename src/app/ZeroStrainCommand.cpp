@@ -91,7 +91,7 @@ ZeroStrainResult computeZeroStrain(const io::Deck &deck, const solvers::RunConfi
 
   ZeroStrainResult result;
   result.method = z.method == input::ZeroStrainMethod::approximate ? "approximate" : "inverse";
-  const model::Scene imaged = input::buildScene(deck, config.time.steps.endTime);
+  const model::Scene imaged = input::buildScene(deck, config.time.rampEndTime);
   input::requireImagedGeometryUnderGravity(deck, imaged);
   const std::vector<Eigen::Vector3d> &Ximg = imaged.mesh.nodes;
   result.meshSize = meanEdgeLength(imaged.mesh);

@@ -263,7 +263,7 @@ int main(int argc, char **argv) {
       // Building the scene checks what needs the mesh too (set names, named points), and the
       // checks across sections are run's own (a deck validate passes, run does not refuse).
       const auto config = glossa::solvers::parseRunConfiguration(deck);
-      const auto scene = glossa::input::buildScene(deck, config.time.steps.endTime);
+      const auto scene = glossa::input::buildScene(deck, config.time.rampEndTime);
       glossa::solvers::checkRunConfiguration(deck, config, scene, glossa::solvers::buildControl(deck, scene),
                                              {comm->getSize(), a.controlGroups, !a.restart.empty()});
       if (root)

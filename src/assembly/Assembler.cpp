@@ -135,6 +135,14 @@ void Assembler::zeroConstrainedDofs(Vector &v) const {
       if (constrained_[3 * layout_.ownedNodes[k] + c]) data[3 * k + c] = 0.0;
 }
 
+void Assembler::assignFreeDofs(const Vector &solution, Vector &u) const {
+  const auto from = solution.getData(0);
+  auto to = u.getDataNonConst(0);
+  for (std::size_t k = 0; k < layout_.ownedNodes.size(); ++k)
+    for (int c = 0; c < 3; ++c)
+      if (!constrained_[3 * layout_.ownedNodes[k] + c]) to[3 * k + c] = from[3 * k + c];
+}
+
 void Assembler::importToOverlap(const Vector &u, Vector &overlap) const {
   overlap.doImport(u, *importer_, Tpetra::INSERT);
 }

@@ -74,6 +74,10 @@ public:
   void applyDirichlet(Vector &u, double time) const;
   // Zeroes the owned entries of v at the dofs a (non-elastic) Dirichlet condition fixes.
   void zeroConstrainedDofs(Vector &v) const;
+  // Copies `solution` into `u` except at those dofs, where `u` keeps what it holds (the prescribed
+  // values, applyDirichlet). Their Newton updates solve diagonal rows with a zero right-hand side,
+  // which an iterative solve meets only to its tolerance: copied, they would drift by ~1e-11 m.
+  void assignFreeDofs(const Vector &solution, Vector &u) const;
 
   // With `bases` (assemble): where the three-field pressure and dilatation are taken.
   enum class BasePoint {

@@ -165,8 +165,9 @@ bool ExternalMuscleForces::evaluate(const LoadTarget &target, model::MuscleHisto
       if (trial) trial->trialExternalLambdaC(m, k) = r.hill.lambdaC;
       if (stretch && muscle.group >= 0) {
         const double L0 = (muscle.fibres[k].origin - muscle.fibres[k].insertion).norm();
-        (*stretch)[2 * muscle.group] += r.lambdaF * L0;
-        (*stretch)[2 * muscle.group + 1] += L0;
+        (*stretch)[3 * muscle.group] += r.lambdaF * L0;
+        (*stretch)[3 * muscle.group + 1] += r.hill.lambdaC * L0;
+        (*stretch)[3 * muscle.group + 2] += L0;
       }
       if (target.residual) target.subtract(&node, 1, r.force.data(), r.dForceDu.data());
     }

@@ -63,8 +63,8 @@ public:
   bool onSurface() const override { return true; }
   bool addTo(const LoadTarget &target, double time) const override;
   // The fibres at the target's displacement: their forces subtracted if the target has a
-  // residual; with `trial`, their new lambda_c written to its trial values; with `stretch` (2 per
-  // group), lambda_f L_0 and L_0 added. False if a local solve failed on this rank.
+  // residual; with `trial`, their new lambda_c written to its trial values; with `stretch` (3 per
+  // group), lambda_f L_0, lambda_c L_0 and L_0 added. False if a local solve failed on this rank.
   bool evaluate(const LoadTarget &target, model::MuscleHistory *trial, std::vector<double> *stretch) const;
 
 private:

@@ -102,7 +102,8 @@ Teuchos::RCP<const Vector> ModelEvaluator::displacementOf(const Thyra::VectorBas
 }
 
 void ModelEvaluator::acceptSolution(const Thyra::VectorBase<double> &x, Vector &u) {
-  u.assign(*displacementOf(x));
+  // u entered the solve with the prescribed values at the constrained dofs: they stay exact.
+  assembler_->assignFreeDofs(*displacementOf(x), u);
   if (pressure_.is_null()) return;
   const auto p = dynamic_cast<const Thyra::ProductVectorBase<double> &>(x).getVectorBlock(1);
   const auto data = Extract::getConstTpetraVector(p)->getData(0);

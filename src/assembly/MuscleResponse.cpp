@@ -89,7 +89,7 @@ MuscleFields updateMuscleHistory(const ResultEvaluator &results, const Vector &u
     }
   }
   // The external fibres' lambda_c at the converged u (their forces are not needed here).
-  std::vector<double> external(2 * G, 0.0), externalAll(2 * G, 0.0);
+  std::vector<double> external(3 * G, 0.0), externalAll(3 * G, 0.0);
   if (const ExternalMuscleForces *externals = results.externalMuscles())
     if (!externals->evaluate(results.loadTarget(uData, nullptr, nullptr, false), &history, &external)) localValid = 0;
   int globalValid = 0;
@@ -97,15 +97,17 @@ MuscleFields updateMuscleHistory(const ResultEvaluator &results, const Vector &u
   out.valid = globalValid == 1;
   if (G > 0) {
     Teuchos::reduceAll(*layout.comm(), Teuchos::REDUCE_SUM, static_cast<int>(3 * G), weighted.data(), weightedAll.data());
-    Teuchos::reduceAll(*layout.comm(), Teuchos::REDUCE_SUM, static_cast<int>(2 * G), external.data(), externalAll.data());
+    Teuchos::reduceAll(*layout.comm(), Teuchos::REDUCE_SUM, static_cast<int>(3 * G), external.data(), externalAll.data());
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t g = 0; g < G; ++g) {
-    const double length = weightedAll[3 * g + 2];
-    out.groupMeanStretch.push_back(length > 0.0                   ? weightedAll[3 * g] / length
-                                   : externalAll[2 * g + 1] > 0.0 ? externalAll[2 * g] / externalAll[2 * g + 1]
-                                                                   : nan);
-    out.groupMeanContractileStretch.push_back(length > 0.0 ? weightedAll[3 * g + 1] / length : nan);
+    // Internal families first; a group with external fibres only has theirs; one with neither
+    // has no stretch to report (NaN, doc/output.md).
+    const double length = weightedAll[3 * g + 2], externalLength = externalAll[3 * g + 2];
+    const double *sums = length > 0.0 ? &weightedAll[3 * g] : &externalAll[3 * g];
+    const double L = length > 0.0 ? length : externalLength;
+    out.groupMeanStretch.push_back(L > 0.0 ? sums[0] / L : nan);
+    out.groupMeanContractileStretch.push_back(L > 0.0 ? sums[1] / L : nan);
   }
   return out;
 }

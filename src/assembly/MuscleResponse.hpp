@@ -25,7 +25,7 @@ struct MuscleFields {
   // holds along the family's reference direction, control::fibreLengthMeasure, times its share
   // of the element's volume); for a group with external fibres only, their reference-length-
   // weighted mean stretch; NaN for a group with no fibres. The same mean of the contractile
-  // stretch lambda_c of the internal families (NaN without them), for f_cL at the group's mean.
+  // stretch lambda_c (of the external fibres for a group with only those; NaN without fibres).
   std::vector<double> groupMeanStretch, groupMeanContractileStretch;
 };
 

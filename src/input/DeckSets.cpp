@@ -31,6 +31,9 @@ std::vector<mesh::ElementId> elementSetOrAll(const io::Deck &deck, const mesh::H
   }
   if (!m.elementSets.count(set))
     throw io::DeckError(deck.where(path) + ": no element set '" + set + "'; the mesh has: " + namesOf(m.elementSets));
+  // A tissue or fibre family of no element would be dropped without a word.
+  if (m.elementSets.at(set).empty())
+    throw io::DeckError(deck.where(path) + ": element set '" + set + "' has no elements");
   return m.elementSets.at(set);
 }
 

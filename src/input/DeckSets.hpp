@@ -15,7 +15,8 @@ namespace glossa::input {
 // The string parameter at `path` (sublists, then the parameter's name).
 const std::string &deckString(const io::Deck &deck, const std::vector<std::string> &path);
 
-// The element set named at `path`; an empty name means every element.
+// The element set named at `path` (refused if it has no elements); an empty name means every
+// element.
 std::vector<mesh::ElementId> elementSetOrAll(const io::Deck &deck, const mesh::HexMesh &m,
                                              const std::vector<std::string> &path);
 

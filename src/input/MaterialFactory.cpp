@@ -19,6 +19,7 @@
 #include "loads/ExternalMuscle.hpp"
 #include "input/TimeFunctionParameters.hpp"
 #include "input/DeckSets.hpp"
+#include "input/MaterialParameterChecks.hpp"
 #include "model/FibreDirectionField.hpp"
 
 namespace glossa::input {
@@ -103,6 +104,7 @@ FamilySpec readFamily(const io::Deck &deck, const mesh::HexMesh &m, const std::s
   spec.name = name;
   spec.elements = elementSetOrAll(deck, m, {"Material", "Fibre families", name, "element set"});
   spec.group = muscleGroupAt(deck, muscles, {"Material", "Fibre families", name, "muscle group"}, false);
+  refuseOtherFieldsParameters(deck, {"Material", "Fibre families", name});
   const auto field = f.get<std::string>("direction field");
   try {
     if (field == "constant") {
@@ -172,6 +174,7 @@ FamilySpec readPointFamily(const io::Deck &deck, const std::string &name, const 
   } catch (const std::invalid_argument &e) {
     throw io::DeckError(deck.where(at("direction field")) + ": " + e.what());
   }
+  refuseOtherFieldsParameters(deck, here); // after the field itself, which glossa point may refuse
   return spec;
 }
 
@@ -195,6 +198,7 @@ MuscleGroup readGroup(const io::Deck &deck, const std::string &name, double endT
     if (v < 0.0 || v > 1.0)
       throw io::DeckError(deck.where({"Material", "Muscle groups", name, "neural input", "values"}) +
                           ": a neural input must lie in [0, 1], got " + std::to_string(v));
+  refuseUnreadTimeFunctionParameters(deck, {"Material", "Muscle groups", name, "neural input"});
   TimeFunction shape = TimeFunction::constant();
   try {
     shape = parseTimeFunction(input, endTime);
@@ -354,6 +358,7 @@ Tissue buildTissue(const io::Deck &deck, const std::vector<std::string> &path, c
   Tissue tissue;
   tissue.name = name;
   const auto type = t.get<std::string>("type");
+  refuseOtherLawsParameters(deck, path);
   try {
     if (type == "Fung") {
       tissue.matrix = std::make_shared<materials::FungIsotropic>(t.get<double>("Fung A"), t.get<double>("Fung B"));
@@ -375,11 +380,10 @@ Tissue buildTissue(const io::Deck &deck, const std::vector<std::string> &path, c
   }
   tissue.density = t.get<double>("density");
   const double mu = tissue.matrix->shearModulus();
-  const double kappaGiven = t.get<double>("bulk modulus");
   const double nu = t.get<double>("Poisson's ratio");
   // nu = 0.5 is exact incompressibility: an infinite bulk modulus, which the augmented Lagrangian
   // enforces as theta = 1 (solvers/incompressibility/AugmentedLagrangianRule).
-  const double kappa = kappaGiven > 0.0 ? kappaGiven
+  const double kappa = bulkModulusGiven(deck, path) ? t.get<double>("bulk modulus")
                        : nu == 0.5      ? std::numeric_limits<double>::infinity()
                                         : materials::bulkModulus(mu, nu);
   tissue.volumetric = materials::VolumetricEnergy(

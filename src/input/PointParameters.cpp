@@ -63,6 +63,7 @@ PointParameters parsePointParameters(const io::Deck &deck, double endTime) {
   point.direction = vec3(p.get<Array<double>>("direction"));
   point.shearPlaneNormal = vec3(p.get<Array<double>>("shear plane normal"));
   point.amplitude = p.get<double>("amplitude");
+  refuseUnreadTimeFunctionParameters(deck, {"Point", "time function"});
   point.scale = parseTimeFunction(p.sublist("time function"), endTime);
   point.position = vec3(p.get<Array<double>>("position"));
   if (!(point.direction.norm() > 0.0)) throw io::DeckError(deck.where({"Point", "direction"}) + " is zero");

@@ -306,6 +306,7 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
 TimeFunction timeFunction(const io::Deck &deck, const std::vector<std::string> &path, double endTime) {
   const ParameterList *list = &deck.root();
   for (const auto &p : path) list = &list->sublist(p);
+  refuseUnreadTimeFunctionParameters(deck, path);
   try {
     return parseTimeFunction(*list, endTime);
   } catch (const std::invalid_argument &e) {

@@ -1,5 +1,6 @@
 #include "input/TimeFunctionParameters.hpp"
 
+#include "input/UnreadParameters.hpp"
 #include "io/deck/ParameterSpec.hpp"
 
 namespace glossa::input {
@@ -13,7 +14,8 @@ Teuchos::ParameterList timeFunctionParameters(const std::string &defaultType) {
                     "sin(2 pi (t - start) / period)^exponent, rectified (doc/loads.md)",
                     {"constant", "ramp", "table", "steps", "breathing"});
   io::declareDouble(p, "ramp duration", 0.0, "s",
-                    "time over which a ramp rises from 0 to 1; 0 means the run's end time",
+                    "time over which a ramp rises from 0 to 1; 0 means the deck's own end time (Time/end time "
+                    "as the file gives it: --set \"Time/end time=...\" shortens or lengthens the run, not the ramp)",
                     io::Range::nonNegative());
   io::declareDoubleArray(p, "times", Teuchos::Array<double>(), "s", "table abscissae (increasing)", 0);
   io::declareDoubleArray(p, "values", Teuchos::Array<double>(), "", "table values", 0);
@@ -48,6 +50,18 @@ model::TimeFunction parseTimeFunction(const Teuchos::ParameterList &list, double
   const auto &v = list.get<Teuchos::Array<double>>("values");
   std::vector<double> times(t.begin(), t.end()), values(v.begin(), v.end());
   return type == "steps" ? TimeFunction::steps(std::move(times), std::move(values)) : TimeFunction::table(std::move(times), std::move(values));
+}
+
+void refuseUnreadTimeFunctionParameters(const io::Deck &deck, const std::vector<std::string> &path) {
+  // What parseTimeFunction reads for each type.
+  static const std::vector<ReadUnder> readers{{"ramp duration", {"ramp"}},
+                                              {"times", {"table", "steps"}},
+                                              {"values", {"table", "steps"}},
+                                              {"breathing period", {"breathing"}},
+                                              {"breathing exponent", {"breathing"}},
+                                              {"breathing start", {"breathing"}},
+                                              {"rectification", {"breathing"}}};
+  refuseUnreadParameters(deck, path, "type", readers);
 }
 
 } // namespace glossa::input

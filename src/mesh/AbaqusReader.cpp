@@ -253,6 +253,9 @@ class AbaqusParser {
         const auto other = sets.find(upper(x));
         if (other == sets.end())
           in_.fail("unknown " + std::string(elset ? "element" : "node") + " set '" + x + "'");
+        // A set can only hold sets defined above it; naming itself would add nothing (or its
+        // own entries again) and is a mistake in the file.
+        if (&other->second == &s) in_.fail(std::string(elset ? "element" : "node") + " set '" + s.name + "' names itself");
         s.ids.insert(s.ids.end(), other->second.ids.begin(), other->second.ids.end());
       }
     } else if (k.name == "SURFACE") {
@@ -312,6 +315,9 @@ class AbaqusParser {
 
     const importing::FaceLocator locator(mesh);
     for (const auto &[key, s] : elsets_) {
+      // An empty set would become a tissue, fibre family or face set of nothing.
+      if (s.ids.empty())
+        importing::fail(result_.source, s.line, "element set '" + s.name + "' is empty; give it elements or remove it");
       std::vector<ElementId> hexes;
       std::vector<ElementFace> faces;
       std::vector<NodeId> lineNodes;

@@ -200,3 +200,25 @@ TEST(ActiveMuscle, FullActivationFromTheStartRunsWithEveryMethod) {
               pull[1] / (phi * T0max), pull[2] / (phi * T0max));
   EXPECT_NEAR(pull[0] / pull[2], 1.0, 1e-4); // both to the dilatation tolerance
 }
+
+// A group that drives external fibres only (§7.1 case (b)) reports their length-weighted mean
+// stretches; its mean contractile stretch was nan. At rest both are 1 (no displacement, no
+// tension: lambda_f = lambda_c lambda_s = 1); contracting, the series element carries the tension
+// and stretches (lambda_s > 1), so lambda_c = lambda_f / lambda_s < lambda_f.
+TEST(ActiveMuscle, AGroupOfExternalFibresOnlyReportsTheirStretches) {
+  const auto dir = test::scratchDirectory("external_only_stretch");
+  const auto s = test::runDeck(test::inputPath("paper/s7_1_b_external_cs1.xml"),
+                               {"Mesh/Box/cells=2,2,2", "Time/end time=0.05", "Output/fields=false"}, dir);
+  ASSERT_TRUE(s.at("converged").get<bool>());
+  const auto rows = test::readKeyedCsv(dir / "activation.csv");
+  const auto &external = rows.at("external");
+  ASSERT_GE(external.size(), 2u);
+  ASSERT_EQ(external.front().time, 0.0);
+  EXPECT_NEAR(external.front().values[3], 1.0, 1e-12); // mean_fibre_stretch
+  EXPECT_NEAR(external.front().values[4], 1.0, 1e-12); // mean_contractile_stretch
+  const auto &last = external.back().values;
+  EXPECT_GT(last[1], 0.1) << "the external muscle is not active";
+  ASSERT_TRUE(std::isfinite(last[3]) && std::isfinite(last[4]));
+  EXPECT_LT(last[4], last[3]);
+  EXPECT_GT(last[4], 0.5);
+}

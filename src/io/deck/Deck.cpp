@@ -102,6 +102,7 @@ void Deck::read(const DeckXmlElement &element, Teuchos::ParameterList &list, std
       if (std::find(types.begin(), types.end(), *type) == types.end())
         throw DeckError(at(child) + "parameter '" + joined + "' has type \"" + *type +
                         "\"; a deck's types are double, int, bool, string, Array(double) and Array(int)");
+      if (*type == "double") doubleTexts_[joined] = *value;
       try {
         list.setEntry(*name, entryOf(*type, *value));
       } catch (const std::invalid_argument &e) {
@@ -147,6 +148,15 @@ bool Deck::given(const std::vector<std::string> &path) const {
   return lineOf(path) > 0 || std::find(overridden_.begin(), overridden_.end(), joined) != overridden_.end();
 }
 
+bool Deck::setOnCommandLine(const std::vector<std::string> &path) const {
+  return std::find(overridden_.begin(), overridden_.end(), joinPath(path)) != overridden_.end();
+}
+
+const Teuchos::ParameterEntry *Deck::fileValue(const std::vector<std::string> &path) const {
+  const auto it = fileValues_.find(joinPath(path));
+  return it == fileValues_.end() ? nullptr : &it->second;
+}
+
 std::string Deck::where(const std::vector<std::string> &path) const {
   const std::string joined = joinPath(path);
   std::string location = "deck " + file_;
@@ -186,8 +196,13 @@ void Deck::applyOverride(const std::string &assignment, const Teuchos::Parameter
   const SpecValidator *spec = specOf(*declared);
   try {
     Teuchos::ParameterEntry entry = spec ? spec->parse(valueText) : Teuchos::ParameterEntry(valueText);
+    const std::string joined = joinPath(path);
+    if (user->isParameter(name) && !user->getEntry(name).isList() && lineOf(path) > 0 && !fileValues_.count(joined))
+      fileValues_[joined] = user->getEntry(name);
     user->setEntry(name, entry);
     invalid_.erase(joinPath(path));
+    if (entry.getAny(false).type() == typeid(double)) doubleTexts_[joinPath(path)] = valueText;
+    else doubleTexts_.erase(joinPath(path));
   } catch (const std::exception &e) {
     throw DeckError("--set " + assignment + ": " + e.what() + "; allowed: " +
                     (spec ? spec->allowed() : std::string("text")));
@@ -216,7 +231,10 @@ void Deck::check(Teuchos::ParameterList &user, const Teuchos::ParameterList &val
       const SpecValidator *spec = specOf(*declared);
       throw DeckError(where(path) + ": " + bad->second + (spec ? "; allowed: " + spec->allowed() : std::string()));
     } else if (const SpecValidator *spec = specOf(*declared)) {
-      const std::string why = spec->check(entry);
+      std::string why = spec->check(entry);
+      const auto text = doubleTexts_.find(joinPath(path));
+      if (why.empty() && text != doubleTexts_.end() && entry.getAny(false).type() == typeid(double))
+        why = spec->checkText(Teuchos::any_cast<double>(entry.getAny(false)), text->second);
       if (!why.empty())
         throw DeckError(where(path) + " " + why + "; allowed: " + spec->allowed());
       // Keep the declared documentation with the user's value (for `glossa validate`).

@@ -40,6 +40,11 @@ public:
   std::string where(const std::vector<std::string> &path) const;
   // Whether the user gave the parameter (in the file or by --set), not its default.
   bool given(const std::vector<std::string> &path) const;
+  // Whether --set gave the parameter (over the file's value, if it had one).
+  bool setOnCommandLine(const std::vector<std::string> &path) const;
+  // The value the file gave for a parameter that --set then replaced; null if the file gave none
+  // or --set did not replace it. Not validated: what it holds is as the file wrote it.
+  const Teuchos::ParameterEntry *fileValue(const std::vector<std::string> &path) const;
 
   // The deck (after validation: fully defaulted) as Teuchos XML.
   std::string toXml() const;
@@ -56,7 +61,9 @@ private:
   std::string file_;
   std::map<std::string, int> lines_;          // joined path -> line of its element in the file
   std::map<std::string, std::string> invalid_; // joined path -> why its text is not a value
+  std::map<std::string, std::string> doubleTexts_; // joined path -> a double's text, as written
   std::vector<std::string> overridden_; // paths set on the command line
+  std::map<std::string, Teuchos::ParameterEntry> fileValues_; // joined path -> the file's value --set replaced
   Teuchos::ParameterList list_;
 };
 

@@ -48,6 +48,15 @@ std::string SpecValidator::allowed() const {
   return "";
 }
 
+std::string SpecValidator::checkText(double v, const std::string &text) const {
+  const bool atLo = std::isfinite(range_.lo) && v == range_.lo, atHi = std::isfinite(range_.hi) && v == range_.hi;
+  if (kind_ != Kind::Double || !(atLo || atHi) || sameDecimalValue(text, exact(v))) return "";
+  const double inside = std::nextafter(v, atLo ? range_.hi : range_.lo);
+  return "= '" + text + "' is read as " + exact(v) +
+         " (the nearest double), the bound of its range, which the text is not; write " + exact(v) +
+         " if that is meant, or a value a double tells apart from it (the nearest inside: " + exact(inside) + ")";
+}
+
 std::string SpecValidator::check(const Teuchos::ParameterEntry &entry) const {
   const Teuchos::any &value = entry.getAny(false);
   auto typeError = [&](const std::string &expected) {

@@ -22,6 +22,11 @@ public:
   const std::string &unit() const { return unit_; }
   // "" if the entry is acceptable, otherwise why not.
   std::string check(const Teuchos::ParameterEntry &entry) const;
+  // "" unless `v`, read from the deck's `text`, is a finite bound of the range that the text is
+  // not: "0.49999999999999999999" becomes the double 0.5 and so passes a range that allows 0.5
+  // (and means something particular there, exact incompressibility for Poisson's ratio), though
+  // the author meant a number below it. Otherwise why it is refused.
+  std::string checkText(double v, const std::string &text) const;
   // What is allowed, in words: "real number, 0 < value [Pa]", "one of: cg, gmres".
   std::string allowed() const;
   // Parses a command-line string into a value of this kind (for --set), as strictly as the XML

@@ -1,5 +1,6 @@
 #include "io/deck/StrictNumber.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -105,6 +106,48 @@ double parseStrictDouble(const std::string &text) {
     throw std::invalid_argument(quoted(text) + " is beyond the range of a double (about 1.8e308)");
   return value; // an underflow to 0 or a denormal is the nearest double, as the text means
 }
+
+namespace {
+// A decimal text as sign, significant digits and the exponent of the first of them (so that
+// equal numbers give equal triples); zero is {false, "", 0}.
+struct DecimalForm {
+  bool negative = false;
+  std::string digits;
+  long long exponent = 0;
+  bool operator==(const DecimalForm &o) const {
+    return negative == o.negative && digits == o.digits && exponent == o.exponent;
+  }
+};
+
+DecimalForm decimalForm(const std::string &text) {
+  const std::string s = trimmed(text);
+  DecimalForm f;
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) f.negative = s[i++] == '-';
+  long long pointAt = -1;
+  for (; i < s.size() && s[i] != 'e' && s[i] != 'E'; ++i) {
+    if (s[i] == '.') pointAt = static_cast<long long>(f.digits.size());
+    else f.digits += s[i];
+  }
+  if (pointAt < 0) pointAt = static_cast<long long>(f.digits.size());
+  long long exponent = 0;
+  if (i < s.size()) {
+    ++i;
+    bool negativeExponent = false;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) negativeExponent = s[i++] == '-';
+    // Beyond 10^9 the text is far outside a double's range whatever its digits.
+    for (; i < s.size(); ++i) exponent = std::min(exponent * 10 + (s[i] - '0'), 1000000000LL);
+    if (negativeExponent) exponent = -exponent;
+  }
+  const auto first = f.digits.find_first_not_of('0');
+  if (first == std::string::npos) return {};
+  f.digits = f.digits.substr(first, f.digits.find_last_not_of('0') - first + 1);
+  f.exponent = pointAt - static_cast<long long>(first) + exponent;
+  return f;
+}
+} // namespace
+
+bool sameDecimalValue(const std::string &a, const std::string &b) { return decimalForm(a) == decimalForm(b); }
 
 int parseStrictInt(const std::string &text) {
   const std::string s = trimmed(text);

@@ -15,6 +15,10 @@ namespace glossa::io {
 // optional exponent ("1e-3", "-.5", "2.", "+7E+02"). Surrounding blanks are allowed; inf, nan,
 // hexadecimal and values beyond the range of a double are not.
 double parseStrictDouble(const std::string &text);
+// Whether two decimal texts (as parseStrictDouble accepts them) denote exactly the same number:
+// "0.5", "+.50" and "5e-1" do, "0.49999999999999999999" and "0.5" do not (though both read as
+// the double 0.5).
+bool sameDecimalValue(const std::string &a, const std::string &b);
 // Decimal digits with an optional sign, within the range of int.
 int parseStrictInt(const std::string &text);
 // true or false (also 1 or 0, as Teuchos writes them in some versions).

@@ -62,6 +62,15 @@ TEST(DeckSets, ElementSetsByNameOrEveryElement) {
   for (std::size_t e = 0; e < all.size(); ++e) EXPECT_EQ(all[e], static_cast<mesh::ElementId>(e));
 }
 
+// A set of no element (an empty Abaqus ELSET, a Gmsh group of other elements) would make a
+// tissue or fibre family of nothing: refused, whatever uses it.
+TEST(DeckSets, AnEmptyElementSetIsRefused) {
+  mesh::HexMesh m = kBox;
+  m.elementSets["tongue"] = {};
+  EXPECT_EQ(test::deckErrorOf([&] { elementSetOrAll(deck(), m, {"Loads", "unknown", "element set"}); }),
+            at(10) + "parameter 'Loads/unknown/element set': element set 'tongue' has no elements");
+}
+
 TEST(DeckSets, FaceAndNodeSetsByName) {
   const io::Deck d = deck();
   EXPECT_EQ(faceSetAt(d, kBox, {"Loads", "known", "face set"}).size(), 12u); // 3 x 4 faces at x = 1

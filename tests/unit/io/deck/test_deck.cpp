@@ -249,6 +249,66 @@ TEST(Deck, CommandLineValuesAreAsStrictAsTheFile) {
   EXPECT_EQ(fixed.root().sublist("Material").get<double>("Poisson's ratio"), 0.45);
 }
 
+// A number whose text is not the bound of its range but whose double is: 0.49999999999999999999
+// becomes 0.5, which Poisson's ratio allows as exact incompressibility, though the author wrote a
+// number below it. Refused, in the file as with --set; the bound written as itself is not.
+TEST(Deck, ATextReadAsTheBoundItIsNotIsRefused) {
+  Teuchos::ParameterList closed("Glossa");
+  glossa::io::declareDouble(closed.sublist("Material"), "Poisson's ratio", 0.3, "", "nu", {-1.0, 0.5, true, false});
+  auto withNu = [&](const std::string &name, const std::string &text) {
+    auto deck = Deck::fromFile(writeDeck(name, "  <ParameterList name=\"Material\">\n    <Parameter name=\"Poisson's "
+                                                 "ratio\" type=\"double\" value=\"" + text + "\"/>\n  </ParameterList>\n"));
+    deck.validate(closed);
+    return deck.root().sublist("Material").get<double>("Poisson's ratio");
+  };
+  try {
+    withNu("bound1.xml", "0.49999999999999999999");
+    ADD_FAILURE() << "accepted";
+  } catch (const DeckError &e) {
+    EXPECT_NE(std::string(e.what()).find("bound1.xml:3: parameter 'Material/Poisson's ratio' = '0.49999999999999999999' is "
+                                         "read as 0.5 (the nearest double), the bound of its range, which the text is "
+                                         "not; write 0.5 if that is meant, or a value a double tells apart from it (the "
+                                         "nearest inside: 0.49999999999999994)"),
+              std::string::npos)
+        << e.what();
+  }
+  for (const char *half : {"0.5", "0.50", "+.5", "5e-1", " 0.5 "}) EXPECT_EQ(withNu("bound2.xml", half), 0.5) << half;
+  EXPECT_LT(withNu("bound3.xml", "0.4999999999999999"), 0.5);
+  auto deck = Deck::fromFile(writeDeck("bound4.xml", ""));
+  deck.applyOverride("Material/Poisson's ratio=0.500000000000000000001", closed);
+  try {
+    deck.validate(closed);
+    ADD_FAILURE() << "accepted";
+  } catch (const DeckError &e) {
+    EXPECT_NE(std::string(e.what()).find("(--set on the command line): parameter 'Material/Poisson's ratio' = "
+                                         "'0.500000000000000000001' is read as 0.5"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// --set keeps what the file gave (Time/end time for the ramps, Material's nu beside a bulk
+// modulus); nothing for a parameter the file did not give or --set did not touch.
+TEST(Deck, TheFilesValueReplacedByTheCommandLineIsKept) {
+  auto deck = Deck::fromFile(writeDeck("file_value.xml", R"X(  <ParameterList name="Material">
+    <Parameter name="shear modulus" type="double" value="2000"/>
+    <Parameter name="Poisson's ratio" type="double" value="0.25"/>
+  </ParameterList>
+)X"));
+  deck.applyOverride("Material/shear modulus=3000", schema());
+  deck.applyOverride("Material/shear modulus=4000", schema());
+  deck.applyOverride("Material/element=Q1", schema());
+  deck.validate(schema());
+  EXPECT_EQ(deck.root().sublist("Material").get<double>("shear modulus"), 4000.0);
+  ASSERT_NE(deck.fileValue({"Material", "shear modulus"}), nullptr);
+  EXPECT_EQ(Teuchos::getValue<double>(*deck.fileValue({"Material", "shear modulus"})), 2000.0);
+  EXPECT_TRUE(deck.setOnCommandLine({"Material", "shear modulus"}));
+  EXPECT_EQ(deck.fileValue({"Material", "Poisson's ratio"}), nullptr);
+  EXPECT_FALSE(deck.setOnCommandLine({"Material", "Poisson's ratio"}));
+  EXPECT_EQ(deck.fileValue({"Material", "element"}), nullptr); // --set, but not in the file
+  EXPECT_TRUE(deck.setOnCommandLine({"Material", "element"}));
+}
+
 TEST(DeckReference, ListsEveryDeclaredParameterWithItsRange) {
   std::ostringstream out;
   glossa::io::writeDeckReference(schema(), out);

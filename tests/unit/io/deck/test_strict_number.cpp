@@ -35,6 +35,22 @@ TEST(StrictNumber, PlainDecimalsReadAsTheirLiterals) {
   EXPECT_EQ(parseStrictInt("2147483647"), 2147483647);
 }
 
+// Equal as decimals, not merely as doubles: what tells a bound written out from a longer text
+// that rounds to it (Deck, "ATextReadAsTheBoundItIsNotIsRefused").
+TEST(StrictNumber, SameDecimalValueComparesTheTextsNotTheirDoubles) {
+  for (const char *half : {"0.5", "+0.5", ".5", "0.50", "5e-1", "0.005E+2", "50.0e-2", " 0.5 "})
+    EXPECT_TRUE(sameDecimalValue(half, "0.5")) << half;
+  for (const char *zero : {"0", "-0", "0.000", "0e7", ".0"}) EXPECT_TRUE(sameDecimalValue(zero, "0")) << zero;
+  EXPECT_TRUE(sameDecimalValue("1e-06", "0.000001"));
+  EXPECT_TRUE(sameDecimalValue("120", "1.2e2"));
+  EXPECT_EQ(parseStrictDouble("0.49999999999999999999"), 0.5); // the same double ...
+  EXPECT_FALSE(sameDecimalValue("0.49999999999999999999", "0.5")); // ... but not the same number
+  EXPECT_FALSE(sameDecimalValue("-0.5", "0.5"));
+  EXPECT_FALSE(sameDecimalValue("0.5", "5"));
+  EXPECT_FALSE(sameDecimalValue("1e-400", "0"));
+  EXPECT_FALSE(sameDecimalValue("0.51", "0.5"));
+}
+
 TEST(StrictNumber, RefusesWhatStrtodWouldSilentlyChange) {
   for (const char *text : {"0,4999", "3.5abc", "2 3", "0x10", "eighty", "{}", "inf", "-inf", "nan", "1e", "e5", ".",
                            "+", "1.2.3", "1e5.5", "--1", "0.3 Pa"})

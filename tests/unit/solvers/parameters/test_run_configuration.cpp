@@ -60,7 +60,7 @@ TEST(RunConfiguration, EachSectionGivenOrDefaulted) {
   EXPECT_EQ(c.output.volumeFaceSets, (std::vector<std::string>{"inner", "outer"}));
   EXPECT_TRUE(c.output.resultantFaceSets.empty());
   EXPECT_EQ(c.output.checkpointEvery, 0);
-  EXPECT_EQ(c.output.directory, "results");
+  EXPECT_EQ(c.output.directory, "results/run_configuration"); // named after the deck
   EXPECT_TRUE(c.controlled);
   EXPECT_FALSE(parseRunConfiguration(test::deckOnFile("run_uncontrolled.xml", "", schema())).controlled);
 }

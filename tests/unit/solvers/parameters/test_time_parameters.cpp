@@ -50,5 +50,21 @@ TEST(TimeParameters, EachWordOfPredictorAndLimitPoint) {
   EXPECT_EQ(parsed({"Time/at a limit point=stop"}).atLimitPoint, AtLimitPoint::stop);
 }
 
+// A ramp of duration 0 spans the deck's own end time: the file's, or the default where the file
+// gives none, whatever --set makes of the run's (a run shortened to 0.3 s shows the first 0.3 s
+// of the deck's load history, not all of it).
+TEST(TimeParameters, RampsSpanTheDecksOwnEndTime) {
+  Teuchos::ParameterList schema("Glossa");
+  schema.set("Time", timeParameters());
+  const std::string withEnd = "  <ParameterList name=\"Time\">\n    <Parameter name=\"end time\" type=\"double\" "
+                              "value=\"2\"/>\n  </ParameterList>\n";
+  const io::Deck given = test::deckOnFile("ramp_end.xml", withEnd, schema, {"Time/end time=0.3"});
+  EXPECT_EQ(given.root().sublist("Time").get<double>("end time"), 0.3);
+  EXPECT_EQ(deckEndTime(given), 2.0);
+  EXPECT_EQ(deckEndTime(test::deckOnFile("ramp_end2.xml", withEnd, schema)), 2.0);
+  EXPECT_EQ(deckEndTime(test::deckOnFile("ramp_end3.xml", "", schema, {"Time/end time=0.3"})), 1.0);
+  EXPECT_EQ(parsed({"Time/end time=3"}).rampEndTime, 3.0); // the section alone knows no file
+}
+
 } // namespace
 } // namespace glossa::solvers
