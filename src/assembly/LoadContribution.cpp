@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "contact/FaceContact.hpp"
 #include "loads/BodyForce.hpp"
 #include "loads/DeadTraction.hpp"
 #include "loads/ExternalMuscle.hpp"
@@ -38,6 +39,20 @@ std::array<mesh::NodeId, 4> faceNodes(const mesh::HexMesh &mesh, const mesh::Ele
   std::array<mesh::NodeId, 4> nodes{};
   for (int k = 0; k < 4; ++k) nodes[k] = mesh.elements[face.element][mesh::kHexFaceNodes[face.localFace][k]];
   return nodes;
+}
+
+// A face's nodes, their reference positions and their displacements at the target.
+struct FaceAtTarget {
+  std::array<mesh::NodeId, 4> nodes;
+  loads::FaceNodes X, u;
+};
+FaceAtTarget faceAt(const LoadTarget &target, const mesh::ElementFace &face) {
+  FaceAtTarget f{faceNodes(target.scene.mesh, face), {}, {}};
+  for (int k = 0; k < 4; ++k) {
+    f.X.row(k) = target.scene.mesh.nodes[f.nodes[k]].transpose();
+    f.u.row(k) = target.displacement(f.nodes[k]).transpose();
+  }
+  return f;
 }
 
 // A traction per reference area on a face set, scaled in time (loads/DeadTraction).
@@ -94,19 +109,13 @@ public:
   Kind kind() const override { return Kind::follower; }
   bool onSurface() const override { return true; }
   bool addTo(const LoadTarget &target, double time) const override {
-    const mesh::HexMesh &mesh = target.scene.mesh;
     for (const auto &face : load_.faces) {
       if (target.layout.elementOwner[face.element] != target.layout.rank) continue;
-      const auto nodes = faceNodes(mesh, face);
-      loads::FaceNodes Xf, uf;
-      for (int k = 0; k < 4; ++k) {
-        Xf.row(k) = mesh.nodes[nodes[k]].transpose();
-        uf.row(k) = target.displacement(nodes[k]).transpose();
-      }
+      const FaceAtTarget f = faceAt(target, face);
       loads::FaceTangent Kf; // filled, and read, only with a tangent
       const loads::FaceForces ff =
-          loads::followerPressureForces(Xf, uf, load_.pressure.atGaussPoints(Xf, time), target.K ? &Kf : nullptr);
-      target.subtract(nodes.data(), 4, ff.data(), target.K ? Kf.data() : nullptr);
+          loads::followerPressureForces(f.X, f.u, load_.pressure.atGaussPoints(f.X, time), target.K ? &Kf : nullptr);
+      target.subtract(f.nodes.data(), 4, ff.data(), target.K ? Kf.data() : nullptr);
     }
     return true;
   }
@@ -141,6 +150,30 @@ public:
 
 private:
   const model::DirichletCondition &support_;
+};
+
+// Frictionless contact of a face set with a rigid obstacle by the penalty method
+// (contact/FaceContact): a follower load, the obstacle's push on the faces that touch it.
+class RigidContactContribution final : public LoadContribution {
+public:
+  explicit RigidContactContribution(const model::RigidContact &contact) : contact_(contact) {}
+  Kind kind() const override { return Kind::follower; }
+  bool onSurface() const override { return true; }
+  bool addTo(const LoadTarget &target, double) const override {
+    const contact::FaceMultipliers none{0.0, 0.0, 0.0, 0.0}; // the penalty method: no multipliers
+    for (const auto &face : contact_.faces) {
+      if (target.layout.elementOwner[face.element] != target.layout.rank) continue;
+      const FaceAtTarget f = faceAt(target, face);
+      loads::FaceTangent Kf; // filled, and read, only with a tangent
+      const loads::FaceForces ff = contact::faceContactForces(*contact_.obstacle, f.X, f.u, none, contact_.settings,
+                                                              nullptr, target.K ? &Kf : nullptr);
+      target.subtract(f.nodes.data(), 4, ff.data(), target.K ? Kf.data() : nullptr);
+    }
+    return true;
+  }
+
+private:
+  const model::RigidContact &contact_;
 };
 
 } // namespace
@@ -182,6 +215,7 @@ std::vector<std::unique_ptr<LoadContribution>> loadContributions(const model::Sc
   for (const auto &load : scene.tractions) loads.push_back(std::make_unique<DeadTractionContribution>(load));
   for (const auto &load : scene.bodyForces) loads.push_back(std::make_unique<BodyForceContribution>(load));
   for (const auto &load : scene.pressures) loads.push_back(std::make_unique<FollowerPressureContribution>(load));
+  for (const auto &contact : scene.contacts) loads.push_back(std::make_unique<RigidContactContribution>(contact));
   auto muscles = std::make_unique<ExternalMuscleForces>(scene, history);
   *externalMuscles = muscles.get();
   loads.push_back(std::move(muscles));

@@ -40,7 +40,7 @@ class LoadContribution {
 public:
   enum class Kind {
     dead,     // independent of u (tractions, body forces): also the scale of the Newton tolerance
-    follower, // depends on u (follower pressures, external muscles)
+    follower, // depends on u (follower pressures, rigid contacts, external muscles)
     support   // elastic supports: springs whose force is their condition's reaction, not a load
   };
   virtual ~LoadContribution() = default;
@@ -72,8 +72,8 @@ private:
   const model::MuscleHistory &history_; // activation, step and committed lambda_c
 };
 
-// The scene's loads in assembly order: dead tractions, body forces, follower pressures, external
-// muscles (if any), elastic supports. `externalMuscles` receives the external muscles' entry (or
+// The scene's loads in assembly order: dead tractions, body forces, follower pressures, rigid
+// contacts, external muscles (if any), elastic supports. `externalMuscles` receives the external muscles' entry (or
 // null) for the muscle history's update.
 std::vector<std::unique_ptr<LoadContribution>> loadContributions(const model::Scene &scene,
                                                                  const model::MuscleHistory &history,

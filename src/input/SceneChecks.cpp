@@ -163,6 +163,15 @@ void checkScene(const io::Deck &deck, Scene &scene) {
       const Eigen::Vector3d line = muscle.fibres[i].origin - m.nodes[static_cast<std::size_t>(muscle.nodes[i])];
       if (line.norm() > 0.0) hold(muscle.nodes[i], line.normalized());
     }
+  // A rigid obstacle within its search radius of a contact face's node holds that node along its
+  // normal (one-sided, but supporting from Newton's first iteration: doc/contact.md).
+  for (const RigidContact &contact : scene.contacts)
+    for (const mesh::ElementFace &face : contact.faces)
+      for (int k = 0; k < 4; ++k) {
+        const mesh::NodeId n = m.elements[face.element][mesh::kHexFaceNodes[face.localFace][k]];
+        if (const auto cp = contact.obstacle->closest(m.nodes[static_cast<std::size_t>(n)], contact.settings.searchRadius))
+          hold(n, cp->normal);
+      }
   for (int p = 0; p < parts; ++p) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
     std::size_t count = 0;

@@ -20,6 +20,7 @@
 #include "mesh/ThickCylinderGenerator.hpp"
 #include "mesh/ThickSphereGenerator.hpp"
 #include "input/TimeFunctionParameters.hpp"
+#include "input/ContactParameters.hpp"
 #include "input/DeckSets.hpp"
 #include "input/MaterialFactory.hpp"
 #include "input/SceneChecks.hpp"
@@ -348,6 +349,9 @@ void declareSceneParameters(ParameterList &schema) {
   ParameterList loads;
   loads.set(io::kAnySublist, loadParameters(), "one load");
   schema.set("Loads", loads, "surface loads, one sublist each");
+  ParameterList contacts;
+  contacts.set(io::kAnySublist, contactParameters(), "one face set against one rigid obstacle");
+  schema.set("Contact", contacts, "contact with rigid obstacles, one sublist each (doc/contact.md)");
   ParameterList points;
   points.set(io::kAnySublist, namedPointParameters(), "one named point");
   schema.set("Named points", points,
@@ -517,6 +521,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
 
   scene.dirichlet = buildBoundaryConditions(deck, m, endTime);
   buildLoads(deck, m, endTime, scene);
+  buildContacts(deck, m, scene);
   traceNamedPoints(deck, scene);
   if (scene.tracedPoints.empty())
     scene.meshNotes.push_back("no named points: traces.csv and final_displacement will be empty; name points "

@@ -1,6 +1,6 @@
 #pragma once
 // Builds the model::Scene from the deck sections it owns ("Mesh", "Material", "Boundary conditions",
-// "Loads", "Named points") and declares their parameters. Later checks that need the mesh
+// "Loads", "Contact", "Named points") and declares their parameters. Later checks that need the mesh
 // (a set name that does not exist, a named point off the mesh) are DeckErrors naming the path.
 
 #include <Teuchos_ParameterList.hpp>

@@ -3,33 +3,9 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "loads/FaceShape.hpp"
+
 namespace glossa::loads {
-
-namespace {
-constexpr double kS[4] = {-1, 1, 1, -1};
-constexpr double kT[4] = {-1, -1, 1, 1};
-
-// skew(v) w = v x w.
-Eigen::Matrix3d skew(const Eigen::Vector3d &v) {
-  Eigen::Matrix3d S;
-  S << 0, -v(2), v(1), v(2), 0, -v(0), -v(1), v(0), 0;
-  return S;
-}
-
-struct FacePoint {
-  Eigen::Vector4d N, dNds, dNdt;
-};
-
-FacePoint facePoint(double s, double t) {
-  FacePoint q;
-  for (int a = 0; a < 4; ++a) {
-    q.N(a) = 0.25 * (1 + kS[a] * s) * (1 + kT[a] * t);
-    q.dNds(a) = 0.25 * kS[a] * (1 + kT[a] * t);
-    q.dNdt(a) = 0.25 * kT[a] * (1 + kS[a] * s);
-  }
-  return q;
-}
-}  // namespace
 
 const std::array<Eigen::Vector2d, 4> &followerPressureGaussCoordinates() {
   static const std::array<Eigen::Vector2d, 4> points = [] {
@@ -44,7 +20,7 @@ std::array<Eigen::Vector3d, 4> followerPressureGaussPoints(const FaceNodes &X) {
   std::array<Eigen::Vector3d, 4> points;
   for (std::size_t q = 0; q < 4; ++q) {
     const Eigen::Vector2d &st = followerPressureGaussCoordinates()[q];
-    points[q] = X.transpose() * facePoint(st(0), st(1)).N;
+    points[q] = X.transpose() * faceShape(st(0), st(1)).N;
   }
   return points;
 }
@@ -57,7 +33,7 @@ FaceForces followerPressureForces(const FaceNodes &X, const FaceNodes &u,
   // The 2x2 Gauss weights are 1.
   for (std::size_t q = 0; q < 4; ++q) {
     const Eigen::Vector2d &st = followerPressureGaussCoordinates()[q];
-    const FacePoint pt = facePoint(st(0), st(1));
+    const FaceShape pt = faceShape(st(0), st(1));
     const Eigen::Vector3d xs = x.transpose() * pt.dNds, xt = x.transpose() * pt.dNdt;
     const double p = pAtGaussPoints[q];
     // n da = x_,s x x_,t ds dt: the area vector of the deformed face.
@@ -65,7 +41,7 @@ FaceForces followerPressureForces(const FaceNodes &X, const FaceNodes &u,
     for (int a = 0; a < 4; ++a) f.segment<3>(3 * a) -= p * pt.N(a) * nda;
     if (!K) continue;
     // d(x_,s x x_,t)/du_b = dN_b/ds (.) x x_,t + x_,s x dN_b/dt (.) = N_b,t [x_,s]_x - N_b,s [x_,t]_x.
-    const Eigen::Matrix3d Ss = skew(xs), St = skew(xt);
+    const Eigen::Matrix3d Ss = crossMatrix(xs), St = crossMatrix(xt);
     for (int b = 0; b < 4; ++b) {
       const Eigen::Matrix3d dnda = pt.dNdt(b) * Ss - pt.dNds(b) * St;
       for (int a = 0; a < 4; ++a) K->block<3, 3>(3 * a, 3 * b) -= p * pt.N(a) * dnda;

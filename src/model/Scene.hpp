@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "contact/FaceContact.hpp"
+#include "contact/Obstacle.hpp"
 #include "materials/IsochoricMaterial.hpp"
 #include "materials/VolumetricEnergy.hpp"
 #include "mesh/HexMesh.hpp"
@@ -76,6 +78,15 @@ struct FollowerPressureLoad {
   loads::PressureField pressure = loads::PressureField::uniform(0.0);
 };
 
+// Frictionless contact of a face set with a rigid obstacle (contact/FaceContact, doc/contact.md),
+// by the penalty method.
+struct RigidContact {
+  std::string name;
+  std::vector<mesh::ElementFace> faces;
+  std::shared_ptr<const contact::Obstacle> obstacle;
+  contact::ContactSettings settings;
+};
+
 // How elements are shared out among ranks: the built-in coordinate bisection (mesh/Partition) or
 // Zoltan2's geometric partitioners (assembly/ZoltanPartition).
 enum class Partitioner { coordinateBisection, zoltan2MultiJagged, zoltan2Rcb };
@@ -95,6 +106,7 @@ struct Scene {
   std::vector<DeadTractionLoad> tractions;
   std::vector<BodyForceLoad> bodyForces;
   std::vector<FollowerPressureLoad> pressures;
+  std::vector<RigidContact> contacts;
   std::vector<std::string> tracedPoints; // names in mesh.namedPoints, in deck order
   // What the mesh reader changed on the way in (ImportedMesh::notes), for the run to print.
   std::vector<std::string> meshNotes;
