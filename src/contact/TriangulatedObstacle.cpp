@@ -4,7 +4,9 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/Iso_cuboid_3.h>
 
+#include <cmath>
 #include <vector>
 
 #include "contact/SurfaceProjection.hpp"
@@ -42,6 +44,14 @@ TriangulatedObstacle::TriangulatedObstacle(TriangleSurface surface)
 TriangulatedObstacle::~TriangulatedObstacle() = default;
 
 std::optional<ClosestPoint> TriangulatedObstacle::closest(const Eigen::Vector3d &x, double searchRadius) const {
+  // Most of the body's surface is far from the obstacle: the cube around the ball of the search
+  // radius is rejected on the tree's boxes alone, far cheaper than a closest-point query. (Not
+  // CGAL's Sphere_3: against a triangle it is the sphere's surface, which misses a triangle
+  // inside the ball.)
+  if (std::isfinite(searchRadius)) {
+    const Eigen::Vector3d r = Eigen::Vector3d::Constant(searchRadius);
+    if (!search_->tree.do_intersect(Kernel::Iso_cuboid_3(point(x - r), point(x + r)))) return std::nullopt;
+  }
   const auto [p, id] = search_->tree.closest_point_and_primitive(point(x));
   if (CGAL::squared_distance(p, point(x)) > searchRadius * searchRadius) return std::nullopt;
   const auto triangle = static_cast<std::size_t>(id - search_->triangles.cbegin());

@@ -102,6 +102,14 @@ TEST(TriangulatedObstacle, SearchRadiusLeavesOutWhatIsFarther) {
   EXPECT_FALSE(sheet.closest({0.5, 0.5, 0.3}, 0.29).has_value());
   ASSERT_TRUE(sheet.closest({0.5, 0.5, 0.3}, 0.31).has_value());
   EXPECT_FALSE(sheet.closest({0.5, 0.5, -0.3}, 0.29).has_value());  // by distance, either side
+  // Past the cube around the ball, and inside the cube but outside the ball.
+  EXPECT_FALSE(sheet.closest({1.5, 1.5, 0.3}, 0.29).has_value());
+  EXPECT_FALSE(sheet.closest({1.2, 1.2, 0}, 0.28).has_value());  // 0.283 away, in the cube of 0.28
+  EXPECT_TRUE(sheet.closest({1.2, 1.2, 0}, 0.29).has_value());
+  // A ball holding the whole surface finds it, from inside a closed one too.
+  const TriangulatedObstacle octa(ct::octahedron());
+  ASSERT_TRUE(octa.closest({0.1, 0.1, 0.1}, 100.0).has_value());
+  EXPECT_NEAR(octa.closest({0.1, 0.1, 0.1}, 100.0)->gap, -0.7 / std::sqrt(3.0), 1e-15);
 }
 
 TEST(TriangulatedObstacle, TheTreeFindsWhatAScanOfEveryTriangleFinds) {
