@@ -32,7 +32,8 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-template <class F> double medianSeconds(int repeats, F &&f) {
+template <class F>
+double medianSeconds(int repeats, F &&f) {
   std::vector<double> seconds;
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
@@ -52,7 +53,7 @@ std::vector<Eigen::Vector3d> boundaryNodes(const glossa::mesh::HexMesh &mesh) {
   return x;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char **argv) {
   using namespace glossa;
@@ -71,7 +72,8 @@ int main(int argc, char **argv) {
       out = argv[++k];
     } else {
       std::cout << "usage: bench_contact_search [--repeats R] [--refines 0,1,2] [--out FILE]\n"
-                   "the AABB tree's build and one closest-point query per tongue boundary node against palate8.obj\n";
+                   "the AABB tree's build and one closest-point query per tongue boundary node against "
+                   "palate8.obj\n";
       return a == "--help" || a == "-h" ? 0 : 2;
     }
   }

@@ -16,4 +16,4 @@ std::optional<ClosestPoint> MovingObstacle::closest(const Eigen::Vector3d &x, do
   return cp;
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

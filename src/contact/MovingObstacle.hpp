@@ -12,7 +12,7 @@
 namespace glossa::contact {
 
 class MovingObstacle : public Obstacle {
-public:
+ public:
   MovingObstacle(std::shared_ptr<const Obstacle> obstacle, RigidMotion motion);
 
   // The time whose pose the queries use (0 until set).
@@ -21,10 +21,10 @@ public:
 
   std::optional<ClosestPoint> closest(const Eigen::Vector3d &x, double searchRadius) const override;
 
-private:
+ private:
   std::shared_ptr<const Obstacle> obstacle_;
   RigidMotion motion_;
   RigidPose pose_;
 };
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

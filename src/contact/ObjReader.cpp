@@ -5,6 +5,7 @@
 
 #include "contact/SurfaceError.hpp"
 #include "contact/SurfaceText.hpp"
+#include "mesh/ImportSupport.hpp"
 
 namespace glossa::contact {
 
@@ -15,11 +16,13 @@ using surface_text::fail;
 Eigen::Vector3d readVertex(const std::vector<std::string> &tok, const std::string &path, std::size_t line) {
   const std::size_t n = tok.size() - 1;
   if (n != 3 && n != 4 && n != 6) {
-    fail(path, line, "a vertex 'v' has 3 coordinates (4 with a weight, 6 with a colour), found " + std::to_string(n));
+    fail(path, line,
+         "a vertex 'v' has 3 coordinates (4 with a weight, 6 with a colour), found " + std::to_string(n));
   }
   double c[6];
   for (std::size_t k = 0; k < n; ++k) {
-    if (!surface_text::parseDouble(tok[k + 1], c[k])) fail(path, line, "bad vertex coordinate '" + tok[k + 1] + "'");
+    if (!surface_text::parseDouble(tok[k + 1], c[k]))
+      fail(path, line, "bad vertex coordinate '" + tok[k + 1] + "'");
   }
   const double w = n == 4 ? c[3] : 1.0;
   if (w == 0) fail(path, line, "a vertex weight of 0 puts the vertex at infinity");
@@ -29,30 +32,37 @@ Eigen::Vector3d readVertex(const std::vector<std::string> &tok, const std::strin
 // One corner "v[/vt[/vn]]" -> 0-based vertex index; a positive index may refer to a vertex
 // defined further down (checked once the file is read), a negative one counts back from the
 // vertices read so far.
-int readCorner(const std::string &token, std::size_t verticesSoFar, const std::string &path, std::size_t line) {
+int readCorner(const std::string &token, std::size_t verticesSoFar, const std::string &path,
+               std::size_t line) {
   std::vector<std::string> parts{""};
   for (char ch : token) {
-    if (ch == '/') parts.emplace_back();
-    else parts.back() += ch;
+    if (ch == '/')
+      parts.emplace_back();
+    else
+      parts.back() += ch;
   }
   std::int64_t index = 0, ignored = 0;
-  bool ok = parts.size() <= 3 && surface_text::parseInt(parts[0], index) && index != 0 &&
+  bool ok = parts.size() <= 3 && mesh::importing::parseInt(parts[0], index) && index != 0 &&
             index <= std::numeric_limits<int>::max();
   // The texture and normal indices are ignored but must be well formed.
-  for (std::size_t k = 1; ok && k < parts.size(); ++k) ok = parts[k].empty() || surface_text::parseInt(parts[k], ignored);
-  if (!ok) fail(path, line, "bad face corner '" + token + "': expected v, v/vt, v//vn or v/vt/vn with a non-zero index v");
+  for (std::size_t k = 1; ok && k < parts.size(); ++k)
+    ok = parts[k].empty() || mesh::importing::parseInt(parts[k], ignored);
+  if (!ok)
+    fail(path, line,
+         "bad face corner '" + token + "': expected v, v/vt, v//vn or v/vt/vn with a non-zero index v");
   if (index < 0) {
     const std::int64_t resolved = static_cast<std::int64_t>(verticesSoFar) + index;
     if (resolved < 0) {
-      fail(path, line, "face corner '" + token + "' counts back past the first vertex (" +
-                           std::to_string(verticesSoFar) + " read so far)");
+      fail(path, line,
+           "face corner '" + token + "' counts back past the first vertex (" + std::to_string(verticesSoFar) +
+               " read so far)");
     }
     return static_cast<int>(resolved);
   }
   return static_cast<int>(index - 1);
 }
 
-} // namespace
+}  // namespace
 
 TriangleSurface readObj(const std::string &path, double scale) {
   surface_text::checkScale(scale);
@@ -70,20 +80,23 @@ TriangleSurface readObj(const std::string &path, double scale) {
     if (tok[0] == "v") {
       vertices.push_back(scale * readVertex(tok, path, lines.number()));
     } else if (tok[0] == "f") {
-      if (tok.size() < 4) fail(path, lines.number(), "a face has at least 3 corners, found " + std::to_string(tok.size() - 1));
+      if (tok.size() < 4)
+        fail(path, lines.number(), "a face has at least 3 corners, found " + std::to_string(tok.size() - 1));
       std::vector<int> corners;
-      for (std::size_t k = 1; k < tok.size(); ++k) corners.push_back(readCorner(tok[k], vertices.size(), path, lines.number()));
+      for (std::size_t k = 1; k < tok.size(); ++k)
+        corners.push_back(readCorner(tok[k], vertices.size(), path, lines.number()));
       for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
         triangles.push_back({corners[0], corners[k], corners[k + 1]});
         source.locations.push_back(lines.number());
       }
     } else {
-      fail(path, lines.number(), "unsupported statement '" + tok[0] +
-                                     "': a surface is read from v and f (vt, vn, vp, g, o, s, usemtl, mtllib are read past)");
+      fail(path, lines.number(),
+           "unsupported statement '" + tok[0] +
+               "': a surface is read from v and f (vt, vn, vp, g, o, s, usemtl, mtllib are read past)");
     }
   }
   if (triangles.empty()) throw SurfaceError(path + ": no faces ('f' lines)");
   return TriangleSurface(std::move(vertices), std::move(triangles), std::move(source));
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

@@ -15,4 +15,4 @@ namespace glossa::contact {
 // Throws SurfaceError naming the file, the line and what was found.
 TriangleSurface readObj(const std::string &path, double scale = 1.0);
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

@@ -2,8 +2,8 @@
 
 namespace glossa::contact {
 
-TriangleProjection closestOnTriangle(const Eigen::Vector3d &x, const Eigen::Vector3d &a, const Eigen::Vector3d &b,
-                                     const Eigen::Vector3d &c) {
+TriangleProjection closestOnTriangle(const Eigen::Vector3d &x, const Eigen::Vector3d &a,
+                                     const Eigen::Vector3d &b, const Eigen::Vector3d &c) {
   using F = TriangleProjection::Feature;
   const Eigen::Vector3d ab = b - a, ac = c - a, ax = x - a;
   const double d1 = ab.dot(ax), d2 = ac.dot(ax);
@@ -26,4 +26,4 @@ TriangleProjection closestOnTriangle(const Eigen::Vector3d &x, const Eigen::Vect
   return {a + ab * (vb * denom) + ac * (vc * denom), F::Face, 0};
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

@@ -18,7 +18,7 @@ struct TriangleProjection {
 // Ericson, Real-Time Collision Detection (2005), sec. 5.1.5: the Voronoi region of x among the
 // triangle's corners, edges and interior, decided on the signs of the same dot products that
 // give the point, so the feature and the point always agree.
-TriangleProjection closestOnTriangle(const Eigen::Vector3d &x, const Eigen::Vector3d &a, const Eigen::Vector3d &b,
-                                     const Eigen::Vector3d &c);
+TriangleProjection closestOnTriangle(const Eigen::Vector3d &x, const Eigen::Vector3d &a,
+                                     const Eigen::Vector3d &b, const Eigen::Vector3d &c);
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

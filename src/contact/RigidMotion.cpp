@@ -26,4 +26,4 @@ RigidPose RigidMotion::at(double t) const {
   return pose;
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

@@ -30,7 +30,7 @@ struct RigidPose {
 };
 
 class RigidMotion {
-public:
+ public:
   // At rest: the identity at every time.
   RigidMotion() = default;
   // Throws std::invalid_argument for a zero axis.
@@ -39,10 +39,10 @@ public:
 
   RigidPose at(double t) const;
 
-private:
+ private:
   std::array<TimeFunctionOfT, 3> translation_;
   std::vector<AxisRotation> rotations_;
   Eigen::Vector3d pivot_ = Eigen::Vector3d::Zero();
 };
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

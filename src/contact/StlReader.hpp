@@ -16,4 +16,4 @@ namespace glossa::contact {
 // the line (ASCII) or byte offset (binary) and what was found.
 TriangleSurface readStl(const std::string &path, double scale = 1.0);
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

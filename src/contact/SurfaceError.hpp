@@ -9,8 +9,8 @@
 namespace glossa::contact {
 
 class SurfaceError : public mesh::MeshError {
-public:
+ public:
   using mesh::MeshError::MeshError;
 };
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

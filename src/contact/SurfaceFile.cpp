@@ -12,7 +12,8 @@ namespace glossa::contact {
 TriangleSurface readSurface(const std::string &path, double scale) {
   const std::size_t dot = path.find_last_of('.');
   const std::size_t slash = path.find_last_of('/');
-  std::string extension = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : path.substr(dot);
+  std::string extension =
+      dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : path.substr(dot);
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".obj") return readObj(path, scale);
@@ -21,4 +22,4 @@ TriangleSurface readSurface(const std::string &path, double scale) {
                      "' (allowed: .obj, .stl)");
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

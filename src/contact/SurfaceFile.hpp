@@ -11,4 +11,4 @@ namespace glossa::contact {
 // and for what the readers refuse.
 TriangleSurface readSurface(const std::string &path, double scale = 1.0);
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

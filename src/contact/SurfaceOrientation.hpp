@@ -21,4 +21,4 @@ enum class NormalSide { AsStored, Outward, TowardPoint };
 TriangleSurface orientNormals(TriangleSurface surface, NormalSide side,
                               const Eigen::Vector3d &bodyPoint = Eigen::Vector3d::Zero());
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

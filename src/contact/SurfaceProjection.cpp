@@ -10,7 +10,7 @@ namespace {
 // Below this fraction of the triangle's size, x is on the edge or corner itself and (x - p)
 // has no direction: the pseudonormal gives the normal.
 constexpr double kOnFeature = 1e-12;
-} // namespace
+}  // namespace
 
 ClosestPoint projectOnTriangle(const TriangleSurface &surface, std::size_t t, const Eigen::Vector3d &x,
                                bool *besideFreeBoundary) {
@@ -21,16 +21,17 @@ ClosestPoint projectOnTriangle(const TriangleSurface &surface, std::size_t t, co
   cp.point = pr.point;
   const Eigen::Vector3d d = x - pr.point;
   const bool onRim = pr.feature == F::Edge     ? surface.onFreeBoundary(t, pr.index)
-                    : pr.feature == F::Vertex ? surface.onFreeBoundary(surface.triangles()[t][pr.index])
-                                              : false;
+                     : pr.feature == F::Vertex ? surface.onFreeBoundary(surface.triangles()[t][pr.index])
+                                               : false;
   if (besideFreeBoundary) *besideFreeBoundary = onRim;
   if (pr.feature == F::Face) {
     cp.normal = surface.normal(t);
     cp.gap = d.dot(cp.normal);
     return cp;
   }
-  const Eigen::Vector3d pseudo = pr.feature == F::Edge ? surface.edgePseudonormal(t, pr.index)
-                                                       : surface.vertexPseudonormal(surface.triangles()[t][pr.index]);
+  const Eigen::Vector3d pseudo = pr.feature == F::Edge
+                                     ? surface.edgePseudonormal(t, pr.index)
+                                     : surface.vertexPseudonormal(surface.triangles()[t][pr.index]);
   const double distance = d.norm();
   const double size = (b - a).norm() + (c - a).norm();
   if (distance <= kOnFeature * size) {
@@ -44,7 +45,8 @@ ClosestPoint projectOnTriangle(const TriangleSurface &surface, std::size_t t, co
   cp.gap = sign * distance;
   Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - cp.normal * cp.normal.transpose();
   if (pr.feature == F::Edge) {
-    const Eigen::Vector3d e = (surface.corner(t, (pr.index + 1) % 3) - surface.corner(t, pr.index)).normalized();
+    const Eigen::Vector3d e =
+        (surface.corner(t, (pr.index + 1) % 3) - surface.corner(t, pr.index)).normalized();
     P -= e * e.transpose();
   }
   cp.dNormal = P / cp.gap;
@@ -55,8 +57,9 @@ std::size_t closestTriangleByScan(const TriangleSurface &surface, const Eigen::V
   std::size_t best = 0;
   double bestDistance = std::numeric_limits<double>::infinity();
   for (std::size_t t = 0; t < surface.numTriangles(); ++t) {
-    const double d = (x - closestOnTriangle(x, surface.corner(t, 0), surface.corner(t, 1), surface.corner(t, 2)).point)
-                         .squaredNorm();
+    const double d =
+        (x - closestOnTriangle(x, surface.corner(t, 0), surface.corner(t, 1), surface.corner(t, 2)).point)
+            .squaredNorm();
     if (d < bestDistance) {
       bestDistance = d;
       best = t;
@@ -65,4 +68,4 @@ std::size_t closestTriangleByScan(const TriangleSurface &surface, const Eigen::V
   return best;
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

@@ -26,4 +26,4 @@ ClosestPoint projectOnTriangle(const TriangleSurface &surface, std::size_t trian
 // queries such as orienting a surface, where no search tree is worth building.
 std::size_t closestTriangleByScan(const TriangleSurface &surface, const Eigen::Vector3d &x);
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

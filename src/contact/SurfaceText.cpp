@@ -50,24 +50,15 @@ bool parseDouble(const std::string &token, double &value) {
   return true;
 }
 
-bool parseInt(const std::string &token, std::int64_t &value) {
-  if (token.empty()) return false;
-  errno = 0;
-  char *end = nullptr;
-  const long long v = std::strtoll(token.c_str(), &end, 10);
-  if (errno != 0 || end != token.c_str() + token.size()) return false;
-  value = v;
-  return true;
-}
-
 void fail(const std::string &file, std::size_t line, const std::string &reason) {
   throw SurfaceError(file + ":" + std::to_string(line) + ": " + reason);
 }
 
 void checkScale(double scale) {
   if (!(std::isfinite(scale) && scale > 0)) {
-    throw std::invalid_argument("a surface's length scale must be positive and finite, not " + std::to_string(scale));
+    throw std::invalid_argument("a surface's length scale must be positive and finite, not " +
+                                std::to_string(scale));
   }
 }
 
-} // namespace glossa::contact::surface_text
+}  // namespace glossa::contact::surface_text

@@ -15,23 +15,23 @@ std::string readBytes(const std::string &path);
 
 // Lines of a text, numbered from 1, without their terminators.
 class Lines {
-public:
+ public:
   explicit Lines(const std::string &text);
   bool next(std::string &line);
   std::size_t number() const { return number_; }
 
-private:
+ private:
   const std::string &text_;
   std::size_t pos_ = 0, number_ = 0;
 };
 
 std::vector<std::string> tokens(const std::string &line);
-// Whole-token parses: "1.5x", "", "nan" and "inf" fail.
+// Whole-token parse: "1.5x", "", "nan", "inf" and Fortran's "1.5D0" fail. (Integers are
+// parsed as the mesh readers parse them, mesh::importing::parseInt.)
 bool parseDouble(const std::string &token, double &value);
-bool parseInt(const std::string &token, std::int64_t &value);
 
 [[noreturn]] void fail(const std::string &file, std::size_t line, const std::string &reason);
 // The factor from the file's length unit to metres: positive and finite, else invalid_argument.
 void checkScale(double scale);
 
-} // namespace glossa::contact::surface_text
+}  // namespace glossa::contact::surface_text

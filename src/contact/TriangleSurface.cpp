@@ -17,10 +17,10 @@ namespace {
 constexpr double kDegenerateRatio = 1e-12;
 
 struct DirectedEdge {
-  int lo, hi;     // sorted vertex indices
-  bool forward;   // the triangle runs lo -> hi
+  int lo, hi;    // sorted vertex indices
+  bool forward;  // the triangle runs lo -> hi
   std::size_t triangle;
-  int k;          // edge k of the triangle
+  int k;  // edge k of the triangle
 };
 
 std::string vertexText(const std::vector<Eigen::Vector3d> &v, int i) {
@@ -29,7 +29,7 @@ std::string vertexText(const std::vector<Eigen::Vector3d> &v, int i) {
   return s.str();
 }
 
-} // namespace
+}  // namespace
 
 std::string SurfaceSource::where(std::size_t triangle) const {
   if (triangle >= locations.size()) return file;
@@ -60,10 +60,11 @@ void TriangleSurface::checkTriangles() {
     const Eigen::Vector3d a = vertices_[tri[0]], b = vertices_[tri[1]], c = vertices_[tri[2]];
     const Eigen::Vector3d cross = (b - a).cross(c - a);
     const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || !(cross.norm() > kDegenerateRatio * longest)) {
-      throw SurfaceError(source_.where(t) + ": triangle " + std::to_string(t + 1) + " is degenerate (zero area): " +
-                         vertexText(vertices_, tri[0]) + ", " + vertexText(vertices_, tri[1]) + ", " +
-                         vertexText(vertices_, tri[2]));
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] ||
+        !(cross.norm() > kDegenerateRatio * longest)) {
+      throw SurfaceError(source_.where(t) + ": triangle " + std::to_string(t + 1) +
+                         " is degenerate (zero area): " + vertexText(vertices_, tri[0]) + ", " +
+                         vertexText(vertices_, tri[1]) + ", " + vertexText(vertices_, tri[2]));
     }
     normals_[t] = cross.normalized();
   }
@@ -83,13 +84,15 @@ void TriangleSurface::checkEdges() {
   std::sort(edges.begin(), edges.end(), [](const DirectedEdge &p, const DirectedEdge &q) {
     return std::tie(p.lo, p.hi, p.triangle) < std::tie(q.lo, q.hi, q.triangle);
   });
-  edgeNormals_.assign(triangles_.size(), {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
+  edgeNormals_.assign(triangles_.size(),
+                      {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
   freeEdges_.assign(triangles_.size(), {false, false, false});
   freeVertices_.assign(vertices_.size(), false);
   boundaryEdges_ = 0;
   for (std::size_t first = 0; first < edges.size();) {
     std::size_t last = first;
-    while (last < edges.size() && edges[last].lo == edges[first].lo && edges[last].hi == edges[first].hi) ++last;
+    while (last < edges.size() && edges[last].lo == edges[first].lo && edges[last].hi == edges[first].hi)
+      ++last;
     const DirectedEdge &p = edges[first];
     const std::string edgeText =
         "the edge between " + vertexText(vertices_, p.lo) + " and " + vertexText(vertices_, p.hi);
@@ -106,10 +109,11 @@ void TriangleSurface::checkEdges() {
     if (last - first == 2) {
       const DirectedEdge &q = edges[first + 1];
       if (p.forward == q.forward) {
-        throw SurfaceError(source_.where(q.triangle) + ": inconsistent orientation: triangles " +
-                           std::to_string(p.triangle + 1) + " (" + source_.where(p.triangle) + ") and " +
-                           std::to_string(q.triangle + 1) + " run " + edgeText +
-                           " in the same direction; neighbours must run a shared edge in opposite directions");
+        throw SurfaceError(
+            source_.where(q.triangle) + ": inconsistent orientation: triangles " +
+            std::to_string(p.triangle + 1) + " (" + source_.where(p.triangle) + ") and " +
+            std::to_string(q.triangle + 1) + " run " + edgeText +
+            " in the same direction; neighbours must run a shared edge in opposite directions");
       }
       const Eigen::Vector3d sum = normals_[p.triangle] + normals_[q.triangle];
       edgeNormals_[p.triangle][p.k] = sum;
@@ -157,4 +161,4 @@ TriangleSurface TriangleSurface::flipped() const {
   return TriangleSurface(vertices_, std::move(reversed), source_);
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

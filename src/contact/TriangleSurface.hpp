@@ -27,12 +27,13 @@ struct SurfaceSource {
 };
 
 class TriangleSurface {
-public:
+ public:
   using Triangle = std::array<int, 3>;  // 0-based vertex indices
 
   // Checks the triangles (indices in range, not degenerate, manifold edges, consistent
   // orientation); throws SurfaceError.
-  TriangleSurface(std::vector<Eigen::Vector3d> vertices, std::vector<Triangle> triangles, SurfaceSource source);
+  TriangleSurface(std::vector<Eigen::Vector3d> vertices, std::vector<Triangle> triangles,
+                  SurfaceSource source);
 
   const std::vector<Eigen::Vector3d> &vertices() const { return vertices_; }
   const std::vector<Triangle> &triangles() const { return triangles_; }
@@ -59,7 +60,7 @@ public:
   bool onFreeBoundary(std::size_t v) const { return freeVertices_[v]; }
   Eigen::Vector3d corner(std::size_t t, int k) const { return vertices_[triangles_[t][k]]; }
 
-private:
+ private:
   void checkTriangles();
   void checkEdges();
   void computePseudonormals();
@@ -75,4 +76,4 @@ private:
   std::size_t boundaryEdges_ = 0;
 };
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

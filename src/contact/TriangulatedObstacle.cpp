@@ -3,8 +3,8 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Iso_cuboid_3.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <cmath>
 #include <vector>
@@ -20,7 +20,7 @@ using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterato
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 Kernel::Point_3 point(const Eigen::Vector3d &x) { return {x.x(), x.y(), x.z()}; }
-} // namespace
+}  // namespace
 
 // The tree refers to the triangles by iterator: both live here, never moved once built.
 struct TriangulatedObstacle::Search {
@@ -43,7 +43,8 @@ TriangulatedObstacle::TriangulatedObstacle(TriangleSurface surface)
 
 TriangulatedObstacle::~TriangulatedObstacle() = default;
 
-std::optional<ClosestPoint> TriangulatedObstacle::closest(const Eigen::Vector3d &x, double searchRadius) const {
+std::optional<ClosestPoint> TriangulatedObstacle::closest(const Eigen::Vector3d &x,
+                                                          double searchRadius) const {
   // Most of the body's surface is far from the obstacle: the cube around the ball of the search
   // radius is rejected on the tree's boxes alone, far cheaper than a closest-point query. (Not
   // CGAL's Sphere_3: against a triangle it is the sphere's surface, which misses a triangle
@@ -58,4 +59,4 @@ std::optional<ClosestPoint> TriangulatedObstacle::closest(const Eigen::Vector3d 
   return projectOnTriangle(surface_, triangle, x);
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

@@ -13,7 +13,7 @@
 namespace glossa::contact {
 
 class TriangulatedObstacle : public Obstacle {
-public:
+ public:
   explicit TriangulatedObstacle(TriangleSurface surface);
   ~TriangulatedObstacle() override;
   TriangulatedObstacle(const TriangulatedObstacle &) = delete;
@@ -22,10 +22,10 @@ public:
   std::optional<ClosestPoint> closest(const Eigen::Vector3d &x, double searchRadius) const override;
   const TriangleSurface &surface() const { return surface_; }
 
-private:
+ private:
   struct Search;
   TriangleSurface surface_;
   std::unique_ptr<Search> search_;
 };
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

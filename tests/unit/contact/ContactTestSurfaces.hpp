@@ -22,8 +22,9 @@ inline TriangleSurface octahedron() {
 inline TriangleSurface unitCube() {
   std::vector<Eigen::Vector3d> v;
   for (int k = 0; k < 8; ++k) v.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
-  std::vector<TriangleSurface::Triangle> t = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                                              {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  std::vector<TriangleSurface::Triangle> t = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6},
+                                              {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3},
+                                              {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
   return TriangleSurface(std::move(v), std::move(t), {"cube", false, {}});
 }
 
@@ -42,8 +43,9 @@ inline TriangleSurface valleySheet() {
 }
 
 // d normal / d x by central differences, column j the derivative along e_j.
-inline Eigen::Matrix3d centralDifference(const std::function<Eigen::Vector3d(const Eigen::Vector3d &)> &normal,
-                                         const Eigen::Vector3d &x, double h) {
+inline Eigen::Matrix3d centralDifference(
+    const std::function<Eigen::Vector3d(const Eigen::Vector3d &)> &normal, const Eigen::Vector3d &x,
+    double h) {
   Eigen::Matrix3d D;
   for (int j = 0; j < 3; ++j) {
     const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(j);
@@ -52,4 +54,4 @@ inline Eigen::Matrix3d centralDifference(const std::function<Eigen::Vector3d(con
   return D;
 }
 
-} // namespace glossa::contact::testing
+}  // namespace glossa::contact::testing

@@ -25,8 +25,10 @@ TEST(RigidMotion, RotationsApplyInOrderAboutThePivot) {
   const auto quarter = [](double) { return M_PI / 2; };
   const RigidMotion xThenZ({}, {AxisRotation{{1, 0, 0}, quarter}, AxisRotation{{0, 0, 2}, quarter}});
   const auto pose = xThenZ.at(0.0);
-  EXPECT_LT((pose.toWorld({0, 1, 0}) - Eigen::Vector3d(0, 0, 1)).norm(), 1e-15);  // x turns e_y to e_z, z keeps it
-  EXPECT_LT((pose.toWorld({1, 0, 0}) - Eigen::Vector3d(0, 1, 0)).norm(), 1e-15);  // x keeps e_x, z turns it to e_y
+  EXPECT_LT((pose.toWorld({0, 1, 0}) - Eigen::Vector3d(0, 0, 1)).norm(),
+            1e-15);  // x turns e_y to e_z, z keeps it
+  EXPECT_LT((pose.toWorld({1, 0, 0}) - Eigen::Vector3d(0, 1, 0)).norm(),
+            1e-15);  // x keeps e_x, z turns it to e_y
   const RigidMotion halfTurn({}, {AxisRotation{{0, 0, 1}, [](double t) { return M_PI * t; }}}, {1, 0, 0});
   EXPECT_LT((halfTurn.at(1.0).toWorld({0, 0, 0}) - Eigen::Vector3d(2, 0, 0)).norm(), 1e-15);
   EXPECT_LT((halfTurn.at(0.5).toWorld({0, 0, 0}) - Eigen::Vector3d(1, -1, 0)).norm(), 1e-15);
@@ -40,10 +42,10 @@ TEST(RigidMotion, RotationsApplyInOrderAboutThePivot) {
 // The unit cube turned by theta(t) = pi/6 t about z through its centre and moved by
 // c(t) = (0.5 t, 0, 0.2 t).
 MovingObstacle movingCube() {
-  return MovingObstacle(std::make_shared<TriangulatedObstacle>(ct::unitCube()),
-                        RigidMotion({[](double t) { return 0.5 * t; }, {}, [](double t) { return 0.2 * t; }},
-                                    {AxisRotation{{0, 0, 1}, [](double t) { return M_PI / 6 * t; }}},
-                                    {0.5, 0.5, 0.5}));
+  return MovingObstacle(
+      std::make_shared<TriangulatedObstacle>(ct::unitCube()),
+      RigidMotion({[](double t) { return 0.5 * t; }, {}, [](double t) { return 0.2 * t; }},
+                  {AxisRotation{{0, 0, 1}, [](double t) { return M_PI / 6 * t; }}}, {0.5, 0.5, 0.5}));
 }
 
 TEST(MovingObstacle, MovedCubeGivesTheGapAndNormalOfTheMovedBox) {
@@ -106,4 +108,4 @@ TEST(MovingObstacle, AtTimeZeroWithoutMotionItIsTheObstacleItself) {
   EXPECT_FALSE(still.closest(x, 0.01).has_value());
 }
 
-} // namespace
+}  // namespace

@@ -54,8 +54,10 @@ TEST(ObjReader, FanTriangulatesAPolygonWithTheWeightAndColourForms) {
   text.precision(17);
   for (int k = 0; k < 5; ++k) {
     const double a = 2 * M_PI * k / 5;
-    if (k % 2) text << "v " << 2 * std::cos(a) << " " << 2 * std::sin(a) << " 0 2\n";
-    else text << "v " << std::cos(a) << " " << std::sin(a) << " 0 0.5 0.5 0.5\n";
+    if (k % 2)
+      text << "v " << 2 * std::cos(a) << " " << 2 * std::sin(a) << " 0 2\n";
+    else
+      text << "v " << std::cos(a) << " " << std::sin(a) << " 0 0.5 0.5 0.5\n";
   }
   const TriangleSurface s = readObj(dir.write("pentagon.obj", text.str() + "f 1 2 3 4 5\n"));
   EXPECT_EQ(s.numTriangles(), 3u);
@@ -66,13 +68,15 @@ TEST(ObjReader, FanTriangulatesAPolygonWithTheWeightAndColourForms) {
 TEST(ObjReader, RefusesWhatItCannotReadNamingTheLine) {
   ScratchDir dir("obj_errors");
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  expectError([&] { readObj(dir.write("a.obj", "v 0 0 0\nv 1 x 0\n")); }, {"a.obj:2", "bad vertex coordinate 'x'"});
+  expectError([&] { readObj(dir.write("a.obj", "v 0 0 0\nv 1 x 0\n")); },
+              {"a.obj:2", "bad vertex coordinate 'x'"});
   expectError([&] { readObj(dir.write("b.obj", "v 0 0\n")); }, {"b.obj:1", "3 coordinates", "found 2"});
   expectError([&] { readObj(dir.write("c.obj", v + "f 1 2\n")); }, {"c.obj:4", "at least 3 corners"});
   expectError([&] { readObj(dir.write("d.obj", v + "f 1 0 2\n")); }, {"d.obj:4", "bad face corner '0'"});
   expectError([&] { readObj(dir.write("e.obj", v + "f 1/2/3/4 2 3\n")); }, {"e.obj:4", "'1/2/3/4'"});
   expectError([&] { readObj(dir.write("f.obj", v + "f -1 -2 -4\n")); }, {"f.obj:4", "'-4'", "3 read so far"});
-  expectError([&] { readObj(dir.write("g.obj", v + "f 1 2 7\n")); }, {"g.obj:4", "vertex 7", "vertices 1 to 3"});
+  expectError([&] { readObj(dir.write("g.obj", v + "f 1 2 7\n")); },
+              {"g.obj:4", "vertex 7", "vertices 1 to 3"});
   expectError([&] { readObj(dir.write("h.obj", v + "l 1 2\n")); }, {"h.obj:4", "unsupported statement 'l'"});
   expectError([&] { readObj(dir.write("i.obj", v)); }, {"i.obj", "no faces"});
   expectError([&] { readObj(dir.file("missing.obj")); }, {"missing.obj", "cannot open"});
@@ -103,4 +107,4 @@ TEST(ObjReader, ReadsTheMandibleAndHyoidAsClosedSurfacesWithOutwardNormals) {
   EXPECT_NEAR(hyoid.enclosedVolume(), 3.4e-6, 0.05e-6);
 }
 
-} // namespace
+}  // namespace

@@ -33,19 +33,19 @@ TEST(PointTriangle, ClosestPointIsNoFartherThanAnySampleAndItsFeatureIsRight) {
     ++seen[static_cast<int>(pr.feature)];
     const Eigen::Vector3d r = x - pr.point;
     switch (pr.feature) {
-    case Feature::Face:
-      EXPECT_NEAR(r.dot(b - a), 0, 1e-12);
-      EXPECT_NEAR(r.dot(c - a), 0, 1e-12);
-      break;
-    case Feature::Edge: {
-      const Eigen::Vector3d p0 = corners[pr.index], p1 = corners[(pr.index + 1) % 3];
-      EXPECT_NEAR((pr.point - p0).cross(p1 - p0).norm(), 0, 1e-12);
-      EXPECT_NEAR(r.dot(p1 - p0), 0, 1e-12);
-      break;
-    }
-    case Feature::Vertex:
-      EXPECT_EQ(pr.point, corners[pr.index]);
-      break;
+      case Feature::Face:
+        EXPECT_NEAR(r.dot(b - a), 0, 1e-12);
+        EXPECT_NEAR(r.dot(c - a), 0, 1e-12);
+        break;
+      case Feature::Edge: {
+        const Eigen::Vector3d p0 = corners[pr.index], p1 = corners[(pr.index + 1) % 3];
+        EXPECT_NEAR((pr.point - p0).cross(p1 - p0).norm(), 0, 1e-12);
+        EXPECT_NEAR(r.dot(p1 - p0), 0, 1e-12);
+        break;
+      }
+      case Feature::Vertex:
+        EXPECT_EQ(pr.point, corners[pr.index]);
+        break;
     }
   }
   // The random points reach every kind of region.
@@ -54,4 +54,4 @@ TEST(PointTriangle, ClosestPointIsNoFartherThanAnySampleAndItsFeatureIsRight) {
   EXPECT_GT(seen[2], 10);
 }
 
-} // namespace
+}  // namespace

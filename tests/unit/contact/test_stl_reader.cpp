@@ -86,16 +86,20 @@ TEST(StlReader, RefusesBadAsciiNamingTheLine) {
   ScratchDir dir("stl_ascii_errors");
   const std::string head = "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n";
   expectError([&] { readStl(dir.write("a.stl", head + "vertex 0 1\n")); }, {"a.stl:6", "3 coordinates"});
-  expectError([&] { readStl(dir.write("b.stl", head + "vertex 0 1 z\n")); }, {"b.stl:6", "bad coordinate 'z'"});
+  expectError([&] { readStl(dir.write("b.stl", head + "vertex 0 1 z\n")); },
+              {"b.stl:6", "bad coordinate 'z'"});
   expectError([&] { readStl(dir.write("c.stl", head + "vertex 0 1 0\nvertex 1 1 0\n")); },
               {"c.stl:7", "'endloop' (a facet has 3 vertices, not more)"});
   expectError([&] { readStl(dir.write("d.stl", head + "vertex 0 1 0\nendloop\nendfacet\n")); },
               {"d.stl:9", "no 'endsolid'"});
-  expectError([&] { readStl(dir.write("e.stl", "solid s\nfacet 0 0 1\n")); }, {"e.stl:2", "'facet normal nx ny nz'"});
+  expectError([&] { readStl(dir.write("e.stl", "solid s\nfacet 0 0 1\n")); },
+              {"e.stl:2", "'facet normal nx ny nz'"});
   expectError([&] { readStl(dir.write("f.stl", "solid s\nendsolid s\n")); }, {"f.stl", "no facets"});
   // The same edge run twice the same way: the orientation check names the facets' lines.
-  const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
-  const std::string other = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 -1 0\nendloop\nendfacet\n";
+  const std::string facet =
+      "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  const std::string other =
+      "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 -1 0\nendloop\nendfacet\n";
   expectError([&] { readStl(dir.write("g.stl", "solid s\n" + facet + other + "endsolid\n")); },
               {"g.stl:9", "inconsistent orientation", "g.stl:2)"});
 }
@@ -104,20 +108,23 @@ TEST(StlReader, RefusesBadBinaryNamingTheSizeOrTheByte) {
   ScratchDir dir("stl_binary_errors");
   std::string bytes = binaryStl(ct::octahedron(), "binary");
   expectError([&] { readStl(dir.write("short.stl", bytes.substr(0, bytes.size() - 1))); },
-              {"short.stl", "does not start with 'solid'", "8 (bytes 80-83)", std::to_string(bytes.size() - 1) + " bytes"});
+              {"short.stl", "does not start with 'solid'", "8 (bytes 80-83)",
+               std::to_string(bytes.size() - 1) + " bytes"});
   expectError([&] { readStl(dir.write("solid.stl", binaryStl(ct::octahedron(), "solid").substr(0, 100))); },
               {"solid.stl", "NUL bytes"});
   // A NaN as the y of triangle 3's second corner.
   const std::size_t at = 84 + 2 * 50 + 12 + 12 + 4;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   std::memcpy(&bytes[at], &nan, 4);
-  expectError([&] { readStl(dir.write("nan.stl", bytes)); }, {"nan.stl: byte " + std::to_string(at), "triangle 3"});
+  expectError([&] { readStl(dir.write("nan.stl", bytes)); },
+              {"nan.stl: byte " + std::to_string(at), "triangle 3"});
   expectError([&] { readStl(dir.write("tiny.stl", "abc")); }, {"tiny.stl", "3 bytes"});
 }
 
 TEST(StlReader, ThePalateAsBinaryStlReadsBackAsTheObj) {
   ScratchDir dir("stl_palate");
-  const TriangleSurface obj = glossa::contact::readObj(std::string(GLOSSA_SOURCE_DIR) + "/inputs/tongue/palate8.obj");
+  const TriangleSurface obj =
+      glossa::contact::readObj(std::string(GLOSSA_SOURCE_DIR) + "/inputs/tongue/palate8.obj");
   const TriangleSurface stl = readStl(dir.write("palate.stl", binaryStl(obj, "palate")));
   EXPECT_EQ(stl.numTriangles(), obj.numTriangles());
   EXPECT_EQ(stl.vertices().size(), obj.vertices().size());  // every shared corner merged again
@@ -125,4 +132,4 @@ TEST(StlReader, ThePalateAsBinaryStlReadsBackAsTheObj) {
   EXPECT_NEAR(stl.area(), obj.area(), 1e-6 * obj.area());  // float rounding of the coordinates
 }
 
-} // namespace
+}  // namespace

@@ -27,21 +27,32 @@ TEST(SurfaceOrientation, OutwardTurnsAnInwardClosedSurfaceOut) {
 
 TEST(SurfaceOrientation, TowardPointFacesTheSheetToThePoint) {
   const TriangleSurface sheet = ct::unitSquareSheet();  // normals +z
-  EXPECT_EQ(orientNormals(sheet, NormalSide::TowardPoint, {0.3, 0.6, 0.2}).normal(0), Eigen::Vector3d(0, 0, 1));
-  EXPECT_EQ(orientNormals(sheet, NormalSide::TowardPoint, {0.3, 0.6, -0.2}).normal(0), Eigen::Vector3d(0, 0, -1));
-  expectError([&] { orientNormals(sheet, NormalSide::TowardPoint, {0.5, 0.5, 0}); }, {"sheet", "on the surface itself"});
+  EXPECT_EQ(orientNormals(sheet, NormalSide::TowardPoint, {0.3, 0.6, 0.2}).normal(0),
+            Eigen::Vector3d(0, 0, 1));
+  EXPECT_EQ(orientNormals(sheet, NormalSide::TowardPoint, {0.3, 0.6, -0.2}).normal(0),
+            Eigen::Vector3d(0, 0, -1));
+  expectError(
+      [&] {
+        orientNormals(sheet, NormalSide::TowardPoint, {0.5, 0.5, 0});
+      },
+      {"sheet", "on the surface itself"});
   // Beyond the free edge a point faces neither side.
-  expectError([&] { orientNormals(sheet, NormalSide::TowardPoint, {-2, 3, -0.1}); },
-              {"sheet", "(-2, 3, -0.1)", "beside the surface's free edge"});
+  expectError(
+      [&] {
+        orientNormals(sheet, NormalSide::TowardPoint, {-2, 3, -0.1});
+      },
+      {"sheet", "(-2, 3, -0.1)", "beside the surface's free edge"});
 }
 
 TEST(SurfaceOrientation, ThePalateFacesTheTongueAsStored) {
-  const TriangleSurface palate = glossa::contact::readObj(std::string(GLOSSA_SOURCE_DIR) + "/inputs/tongue/palate8.obj");
+  const TriangleSurface palate =
+      glossa::contact::readObj(std::string(GLOSSA_SOURCE_DIR) + "/inputs/tongue/palate8.obj");
   // Node 870 of tongue.node, the top of the dorsum.
-  const TriangleSurface oriented = orientNormals(palate, NormalSide::TowardPoint, {0.09481132, 0.0, 0.113659});
+  const TriangleSurface oriented =
+      orientNormals(palate, NormalSide::TowardPoint, {0.09481132, 0.0, 0.113659});
   for (std::size_t t : {std::size_t(0), std::size_t(4000), palate.numTriangles() - 1}) {
     EXPECT_EQ(oriented.normal(t), palate.normal(t));
   }
 }
 
-} // namespace
+}  // namespace

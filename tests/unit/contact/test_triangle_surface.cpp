@@ -20,7 +20,7 @@ namespace ct = glossa::contact::testing;
 TEST(TriangleSurface, OctahedronIsClosedWithOutwardNormalsItsVolumeAndArea) {
   const TriangleSurface s = ct::octahedron();
   EXPECT_TRUE(s.isClosed());
-  EXPECT_NEAR(s.enclosedVolume(), 4.0 / 3.0, 1e-14);    // 8 corner tetrahedra of volume 1/6
+  EXPECT_NEAR(s.enclosedVolume(), 4.0 / 3.0, 1e-14);     // 8 corner tetrahedra of volume 1/6
   EXPECT_NEAR(s.area(), 8 * std::sqrt(3.0) / 2, 1e-14);  // 8 equilateral triangles of side sqrt(2)
   for (std::size_t t = 0; t < s.numTriangles(); ++t) {
     const Eigen::Vector3d centroid = (s.corner(t, 0) + s.corner(t, 1) + s.corner(t, 2)) / 3;
@@ -47,31 +47,45 @@ SurfaceSource lines(std::vector<std::size_t> l) { return {"shape.obj", false, st
 
 TEST(TriangleSurface, RefusesDegenerateTriangles) {
   std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
-  expectError([&] { TriangleSurface(v, {{0, 1, 2}, {0, 1, 3}}, lines({7, 9})); },
-              {"shape.obj:9", "triangle 2", "degenerate", "vertex 4 (2, 0, 0)"});
+  expectError(
+      [&] {
+        TriangleSurface(v, {{0, 1, 2}, {0, 1, 3}}, lines({7, 9}));
+      },
+      {"shape.obj:9", "triangle 2", "degenerate", "vertex 4 (2, 0, 0)"});
   expectError([&] { TriangleSurface(v, {{0, 1, 1}}, lines({3})); }, {"shape.obj:3", "degenerate"});
 }
 
 TEST(TriangleSurface, RefusesAnEdgeSharedByThreeTriangles) {
   std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
-  expectError([&] { TriangleSurface(v, {{0, 1, 2}, {1, 0, 3}, {1, 0, 4}}, lines({4, 5, 6})); },
-              {"shape.obj:6", "non-manifold", "vertex 1 (0, 0, 0)", "vertex 2 (1, 0, 0)", "shared by 3 triangles",
-               "1 (shape.obj:4), 2 (shape.obj:5), 3 (shape.obj:6)"});
+  expectError(
+      [&] {
+        TriangleSurface(v, {{0, 1, 2}, {1, 0, 3}, {1, 0, 4}}, lines({4, 5, 6}));
+      },
+      {"shape.obj:6", "non-manifold", "vertex 1 (0, 0, 0)", "vertex 2 (1, 0, 0)", "shared by 3 triangles",
+       "1 (shape.obj:4), 2 (shape.obj:5), 3 (shape.obj:6)"});
 }
 
 TEST(TriangleSurface, RefusesNeighboursThatRunTheirEdgeTheSameWay) {
   std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
   // Triangle 2 runs 0 -> 1 as triangle 1 does: one of them is wound the wrong way.
-  expectError([&] { TriangleSurface(v, {{0, 1, 2}, {0, 1, 3}}, lines({10, 12})); },
-              {"shape.obj:12", "inconsistent orientation", "triangles 1 (shape.obj:10) and 2", "vertex 1", "vertex 2"});
+  expectError(
+      [&] {
+        TriangleSurface(v, {{0, 1, 2}, {0, 1, 3}}, lines({10, 12}));
+      },
+      {"shape.obj:12", "inconsistent orientation", "triangles 1 (shape.obj:10) and 2", "vertex 1",
+       "vertex 2"});
   // Wound the other way it is a valid open sheet.
   EXPECT_NO_THROW(TriangleSurface(v, {{0, 1, 2}, {1, 0, 3}}, lines({10, 12})));
 }
 
 TEST(TriangleSurface, RefusesVertexIndicesOutOfRangeAndAnEmptySurface) {
   std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  expectError([&] { TriangleSurface(v, {{0, 1, 3}}, lines({2})); }, {"shape.obj:2", "vertex 4", "vertices 1 to 3"});
+  expectError(
+      [&] {
+        TriangleSurface(v, {{0, 1, 3}}, lines({2}));
+      },
+      {"shape.obj:2", "vertex 4", "vertices 1 to 3"});
   EXPECT_THROW(TriangleSurface(v, {}, lines({})), SurfaceError);
 }
 
-} // namespace
+}  // namespace

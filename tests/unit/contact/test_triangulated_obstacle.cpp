@@ -10,8 +10,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <fstream>
-#include <map>
 #include <limits>
+#include <map>
 #include <random>
 #include <set>
 
@@ -38,9 +38,11 @@ ClosestPoint query(const TriangulatedObstacle &o, const Eigen::Vector3d &x) {
 }
 
 void expectDNormalMatchesFiniteDifferences(const TriangulatedObstacle &o, const Eigen::Vector3d &x) {
-  const Eigen::Matrix3d fd = ct::centralDifference([&](const Eigen::Vector3d &y) { return query(o, y).normal; }, x, 1e-6);
+  const Eigen::Matrix3d fd =
+      ct::centralDifference([&](const Eigen::Vector3d &y) { return query(o, y).normal; }, x, 1e-6);
   EXPECT_LT((query(o, x).dNormal - fd).norm(), 1e-8) << "at " << x.transpose() << "\nanalytic\n"
-                                                      << query(o, x).dNormal << "\nfinite differences\n" << fd;
+                                                     << query(o, x).dNormal << "\nfinite differences\n"
+                                                     << fd;
 }
 
 TEST(TriangulatedObstacle, OctahedronOnAFaceAnEdgeACornerAndInside) {
@@ -87,14 +89,17 @@ TEST(TriangulatedObstacle, BehindAnOpenSheetTheGapIsNegativeAndBesideItsFreeEdge
 
 TEST(TriangulatedObstacle, DNormalMatchesFiniteDifferencesOnFacesEdgesAndCorners) {
   const TriangulatedObstacle octa(ct::octahedron());
-  expectDNormalMatchesFiniteDifferences(octa, {0.5, 0.3, 0.4});                                          // face: 0
-  expectDNormalMatchesFiniteDifferences(octa, Eigen::Vector3d(0.6, 0.4, 0) + 0.3 * Eigen::Vector3d(1, 1, 0.2).normalized());
-  expectDNormalMatchesFiniteDifferences(octa, Eigen::Vector3d(1, 0, 0) + 0.5 * Eigen::Vector3d(1, 0.2, -0.1).normalized());
+  expectDNormalMatchesFiniteDifferences(octa, {0.5, 0.3, 0.4});  // face: 0
+  expectDNormalMatchesFiniteDifferences(
+      octa, Eigen::Vector3d(0.6, 0.4, 0) + 0.3 * Eigen::Vector3d(1, 1, 0.2).normalized());
+  expectDNormalMatchesFiniteDifferences(
+      octa, Eigen::Vector3d(1, 0, 0) + 0.5 * Eigen::Vector3d(1, 0.2, -0.1).normalized());
   const TriangulatedObstacle sheet(ct::unitSquareSheet());
   expectDNormalMatchesFiniteDifferences(sheet, {0.5, -0.3, -0.2});   // beside the free edge
   expectDNormalMatchesFiniteDifferences(sheet, {-0.2, -0.1, -0.3});  // beside a free corner
   expectDNormalMatchesFiniteDifferences(sheet, {1.2, 1.1, 0.3});
-  expectDNormalMatchesFiniteDifferences(TriangulatedObstacle(ct::valleySheet()), {0.05, 0.4, -0.3});  // inner edge, behind
+  expectDNormalMatchesFiniteDifferences(TriangulatedObstacle(ct::valleySheet()),
+                                        {0.05, 0.4, -0.3});  // inner edge, behind
 }
 
 TEST(TriangulatedObstacle, SearchRadiusLeavesOutWhatIsFarther) {
@@ -136,7 +141,8 @@ struct BoundaryNode {
 std::vector<BoundaryNode> tongueBoundaryNodes() {
   const auto imported = glossa::mesh::readAnsysMesh(kTongue + "tongue.node", kTongue + "tongue.elem");
   std::set<glossa::mesh::NodeId> nodes;
-  for (const auto &quad : glossa::mesh::testing::boundaryQuads(imported.mesh)) nodes.insert(quad.begin(), quad.end());
+  for (const auto &quad : glossa::mesh::testing::boundaryQuads(imported.mesh))
+    nodes.insert(quad.begin(), quad.end());
   std::vector<BoundaryNode> out;
   for (auto n : nodes) out.push_back({imported.nodeFileIds[n], imported.mesh.nodes[n]});
   return out;
@@ -210,4 +216,4 @@ TEST(TriangulatedObstacle, TongueAtRestClearsThePalateAndTouchesTheBonesAsTheDat
   EXPECT_EQ(hyoid.within(5e-3), 77);
 }
 
-} // namespace
+}  // namespace
