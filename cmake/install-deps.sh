@@ -11,6 +11,7 @@ packages=(
   python3-numpy python3-matplotlib                 # plots and reference-table scripts (/usr/bin/python3)
   paraview xvfb                                    # the ParaView reader test (pvpython under xvfb-run)
   gmsh                                             # the import tests run the real Gmsh (else they are skipped)
+  libcgal-dev                                      # the AABB tree of the contact search (header-only; src/contact/TriangulatedObstacle.cpp)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,57 @@
+#pragma once
+// Small surfaces for the contact tests, with their geometry known in closed form, and the
+// central difference of a normal for the dNormal checks.
+
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+#include "contact/TriangleSurface.hpp"
+
+namespace glossa::contact::testing {
+
+// |x| + |y| + |z| = 1, normals out: volume 4/3, each face at distance 1/sqrt(3) from 0.
+inline TriangleSurface octahedron() {
+  std::vector<Eigen::Vector3d> v = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  std::vector<TriangleSurface::Triangle> t = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                              {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  return TriangleSurface(std::move(v), std::move(t), {"octahedron", false, {}});
+}
+
+// The cube [0, 1]^3, normals out.
+inline TriangleSurface unitCube() {
+  std::vector<Eigen::Vector3d> v;
+  for (int k = 0; k < 8; ++k) v.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+  std::vector<TriangleSurface::Triangle> t = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6},
+                                              {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3},
+                                              {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  return TriangleSurface(std::move(v), std::move(t), {"cube", false, {}});
+}
+
+// The open square [0, 1]^2 at z = 0 as two triangles, normals +z.
+inline TriangleSurface unitSquareSheet() {
+  std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  return TriangleSurface(std::move(v), {{0, 1, 2}, {0, 2, 3}}, {"sheet", false, {}});
+}
+
+// A valley of two unit squares meeting along the y axis, rising to z = 1 at x = -1 and x = 1,
+// normals up into the valley: its inner edge has two triangles on each side, its rim is free.
+inline TriangleSurface valleySheet() {
+  std::vector<Eigen::Vector3d> v = {{-1, 0, 1}, {0, 0, 0}, {0, 1, 0}, {-1, 1, 1}, {1, 0, 1}, {1, 1, 1}};
+  std::vector<TriangleSurface::Triangle> t = {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}};
+  return TriangleSurface(std::move(v), std::move(t), {"valley", false, {}});
+}
+
+// d normal / d x by central differences, column j the derivative along e_j.
+inline Eigen::Matrix3d centralDifference(
+    const std::function<Eigen::Vector3d(const Eigen::Vector3d &)> &normal, const Eigen::Vector3d &x,
+    double h) {
+  Eigen::Matrix3d D;
+  for (int j = 0; j < 3; ++j) {
+    const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(j);
+    D.col(j) = (normal(x + e) - normal(x - e)) / (2 * h);
+  }
+  return D;
+}
+
+}  // namespace glossa::contact::testing
