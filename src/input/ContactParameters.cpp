@@ -1,11 +1,18 @@
 #include "input/ContactParameters.hpp"
 
+#include <algorithm>
+#include <filesystem>
 #include <memory>
+#include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "contact/CylinderObstacle.hpp"
 #include "contact/PlaneObstacle.hpp"
 #include "contact/SphereObstacle.hpp"
+#include "contact/SurfaceFile.hpp"
+#include "contact/SurfaceOrientation.hpp"
+#include "contact/TriangulatedObstacle.hpp"
 #include "input/DeckSets.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
@@ -37,9 +44,53 @@ double positiveAt(const io::Deck &deck, const std::vector<std::string> &path, co
   throw io::DeckError(deck.where(path) + " is 0; " + why + " needs a value > 0");
 }
 
+// A triangulated surface from its file (relative to the deck), its normals turned to the body's
+// side. The file's own errors (SurfaceError) name the file and line and pass through.
+std::shared_ptr<const contact::Obstacle> buildSurface(const io::Deck &deck, const std::string &name) {
+  const ParameterList &c = deck.root().sublist("Contact").sublist(name);
+  const std::string file = c.get<std::string>("file");
+  if (file.empty())
+    throw io::DeckError(deck.where({"Contact", name}) + ": no 'file' given; a surface obstacle needs its OBJ or STL file");
+  std::filesystem::path path(file);
+  if (path.is_relative()) path = std::filesystem::path(deck.file()).parent_path() / path;
+  const std::string normals = c.get<std::string>("normals");
+  const contact::NormalSide side = normals == "outward"       ? contact::NormalSide::Outward
+                                   : normals == "toward point" ? contact::NormalSide::TowardPoint
+                                                               : contact::NormalSide::AsStored;
+  contact::TriangleSurface surface = contact::readSurface(path.string(), c.get<double>("file unit"));
+  return std::make_shared<contact::TriangulatedObstacle>(
+      contact::orientNormals(std::move(surface), side, vec3(c.get<Array<double>>("body point"))));
+}
+
+// The nodes of the contact's faces that start inside the obstacle deeper than the deck tolerates:
+// refused, naming the deepest few, since the first Newton iteration would meet a pressure
+// eps x depth that no load put there (doc/contact.md, "Overlaps at the start").
+void checkStartingOverlap(const io::Deck &deck, const mesh::HexMesh &m, const model::RigidContact &contact) {
+  const double tolerance = deck.root().sublist("Contact").sublist(contact.name).get<double>("start overlap tolerance");
+  std::set<mesh::NodeId> nodes;
+  for (const mesh::ElementFace &f : contact.faces)
+    for (int a : mesh::kHexFaceNodes[f.localFace]) nodes.insert(m.elements[f.element][a]);
+  std::vector<std::pair<double, mesh::NodeId>> inside;
+  for (mesh::NodeId n : nodes) {
+    const auto p = contact.obstacle->closest(m.nodes[n], contact.settings.searchRadius);
+    if (p && p->gap < -tolerance) inside.emplace_back(p->gap, n);
+  }
+  if (inside.empty()) return;
+  std::sort(inside.begin(), inside.end());
+  std::ostringstream os;
+  os << deck.where({"Contact", contact.name}) << ": " << inside.size()
+     << " node(s) of face set '" << deck.root().sublist("Contact").sublist(contact.name).get<std::string>("face set")
+     << "' start inside the obstacle deeper than 'start overlap tolerance' (" << tolerance << " m); deepest:";
+  for (std::size_t k = 0; k < std::min<std::size_t>(inside.size(), 5); ++k)
+    os << " node " << inside[k].second << " at " << -inside[k].first << " m";
+  os << ". Move the obstacle, raise the tolerance, or leave those faces out of the face set";
+  throw io::DeckError(os.str());
+}
+
 std::shared_ptr<const contact::Obstacle> buildObstacle(const io::Deck &deck, const std::string &name) {
   const ParameterList &c = deck.root().sublist("Contact").sublist(name);
   const std::string shape = c.get<std::string>("obstacle");
+  if (shape == "surface") return buildSurface(deck, name);
   const Eigen::Vector3d point = vec3(c.get<Array<double>>("point"));
   const contact::BodySide side =
       c.get<std::string>("body side") == "inside" ? contact::BodySide::inside : contact::BodySide::outside;
@@ -59,7 +110,17 @@ std::shared_ptr<const contact::Obstacle> buildObstacle(const io::Deck &deck, con
 ParameterList contactParameters() {
   ParameterList p;
   io::declareString(p, "face set", "", "the body's faces that may touch the obstacle");
-  io::declareString(p, "obstacle", "plane", "the rigid obstacle's shape", {"plane", "sphere", "cylinder"});
+  io::declareString(p, "obstacle", "plane", "the rigid obstacle's shape, or a triangulated surface read from a file",
+                    {"plane", "sphere", "cylinder", "surface"});
+  io::declareString(p, "file", "", "surface: its Wavefront OBJ or STL (ASCII or binary) file, relative to the deck");
+  io::declareDouble(p, "file unit", 1.0, "m", "surface: the length of one unit of the file's coordinates (1e-3 for mm)",
+                    io::Range::positive());
+  io::declareString(p, "normals", "as stored",
+                    "surface: which way its normals point, i.e. the body's side: as the file winds them, "
+                    "outward from the volume a closed surface encloses, or toward 'body point'",
+                    {"as stored", "outward", "toward point"});
+  io::declareDoubleArray(p, "body point", Array<double>(3, 0.0), "m",
+                         "surface with normals 'toward point': a point on the body's side of it", 3);
   io::declareDoubleArray(p, "point", Array<double>(3, 0.0), "m",
                          "plane: a point of it; sphere: its centre; cylinder: a point of its axis", 3);
   io::declareDoubleArray(p, "normal", unitZ(), "",
@@ -79,6 +140,9 @@ ParameterList contactParameters() {
                     "where contact is tested on each face: its 2x2 Gauss points (consistent forces, the patch "
                     "test on any mesh) or its nodes (doc/contact.md)",
                     {"gauss", "nodal"});
+  io::declareDouble(p, "start overlap tolerance", 0.0, "m",
+                    "how deep a node of the face set may start inside the obstacle; deeper is refused, naming the nodes",
+                    io::Range::nonNegative());
   return p;
 }
 
@@ -95,6 +159,7 @@ void buildContacts(const io::Deck &deck, const mesh::HexMesh &m, model::Scene &s
     contact.settings.searchRadius = c.get<double>("search radius");
     contact.settings.rule =
         c.get<std::string>("contact points") == "nodal" ? contact::ContactQuadrature::nodal : contact::ContactQuadrature::gauss;
+    checkStartingOverlap(deck, m, contact);
     scene.contacts.push_back(std::move(contact));
     // The contact tangent's area term is not symmetric: GMRES.
     scene.symmetricTangent = false;

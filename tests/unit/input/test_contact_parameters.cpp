@@ -1,9 +1,12 @@
 // The Contact section parsed into the scene's rigid contacts: each obstacle built with the deck's
 // geometry (checked through the gap it reports), the penalty, search radius and contact points;
-// a missing penalty or radius and a zero normal or axis refused with the file, line and parameter.
+// a missing penalty or radius and a zero normal or axis refused with the file, line and parameter;
+// a triangulated surface read beside the deck and turned to the body's side; nodes that start
+// inside an obstacle deeper than the deck tolerates refused by name.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "DeckOnFile.hpp"
 #include "input/ContactParameters.hpp"
@@ -114,6 +117,64 @@ TEST(ContactParameters, MissingPenaltyOrRadiusAndZeroVectorsAreRefused) {
     const std::string xml = std::string("<ParameterList name=\"c\">\n") + c.contact + "\n</ParameterList>\n";
     EXPECT_EQ(errorOf(c.file, xml), "deck " + test::deckPath(c.file) + c.error);
   }
+}
+
+
+// A square sheet at z = -0.25 (two triangles) written beside the deck and wound so that its
+// normal points down (-z), away from the unit box above it: turned toward the body point, the
+// box's bottom corner has the gap 0.25; as stored, -0.25, and with no tolerance it is refused.
+void writeSheet(const std::string &name) {
+  std::ofstream(test::deckPath(name)) << "# a square, wound clockwise seen from +z\n"
+                                         "v -1 -1 -0.25\nv 2 -1 -0.25\nv 2 2 -0.25\nv -1 2 -0.25\n"
+                                         "f 1 3 2\nf 1 4 3\n";
+}
+
+const char *kSheet = R"X(  <ParameterList name="sheet">
+    <Parameter name="face set" type="string" value="zmin"/>
+    <Parameter name="obstacle" type="string" value="surface"/>
+    <Parameter name="file" type="string" value="contact_sheet.obj"/>
+    <Parameter name="penalty" type="double" value="1e9"/>
+)X";
+
+TEST(ContactParameters, SurfaceObstacleFromAFileBesideTheDeck) {
+  writeSheet("contact_sheet.obj");
+  const model::Scene scene = sceneOf("contact_surface.xml", std::string(kSheet) + R"X(
+    <Parameter name="normals" type="string" value="toward point"/>
+    <Parameter name="body point" type="Array(double)" value="{0.5, 0.5, 0.5}"/>
+  </ParameterList>
+)X");
+  ASSERT_EQ(scene.contacts.size(), 1u);
+  const auto p = scene.contacts[0].obstacle->closest(Eigen::Vector3d::Zero(), 1.0);
+  ASSERT_TRUE(p);
+  EXPECT_NEAR(p->gap, 0.25, 1e-15);
+  EXPECT_NEAR(p->normal.z(), 1.0, 1e-15);
+}
+
+TEST(ContactParameters, NodesStartingInsideTheObstacleAreRefusedByName) {
+  writeSheet("contact_sheet.obj");
+  // As stored, the sheet faces away from the box: all 9 bottom nodes are 0.25 "inside" it.
+  const std::string asStored = std::string(kSheet) + "  </ParameterList>\n";
+  EXPECT_EQ(errorOf("contact_inside.xml", asStored),
+            "deck " + test::deckPath("contact_inside.xml") +
+                ":3: parameter 'Contact/sheet': 9 node(s) of face set 'zmin' start inside the obstacle deeper than "
+                "'start overlap tolerance' (0 m); deepest: node 0 at 0.25 m node 1 at 0.25 m node 2 at 0.25 m "
+                "node 3 at 0.25 m node 4 at 0.25 m. Move the obstacle, raise the tolerance, or leave those faces out "
+                "of the face set");
+  // Within the tolerance it is taken.
+  const model::Scene tolerated = sceneOf("contact_tolerated.xml", std::string(kSheet) + R"X(
+    <Parameter name="start overlap tolerance" type="double" value="0.3"/>
+  </ParameterList>
+)X");
+  EXPECT_NEAR(tolerated.contacts[0].obstacle->closest(Eigen::Vector3d::Zero(), 1.0)->gap, -0.25, 1e-15);
+  // No file named.
+  EXPECT_EQ(errorOf("contact_no_file.xml", R"X(  <ParameterList name="s">
+    <Parameter name="face set" type="string" value="zmin"/>
+    <Parameter name="obstacle" type="string" value="surface"/>
+    <Parameter name="penalty" type="double" value="1e9"/>
+  </ParameterList>
+)X"),
+            "deck " + test::deckPath("contact_no_file.xml") +
+                ":3: parameter 'Contact/s': no 'file' given; a surface obstacle needs its OBJ or STL file");
 }
 
 }  // namespace
