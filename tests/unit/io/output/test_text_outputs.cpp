@@ -3,19 +3,14 @@
 // leaves a CSV file ending at its last complete row and an error naming it.
 
 #include <cmath>
-#include <csignal>
-#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <sstream>
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "FileSizeLimit.hpp"
 #include "ScratchDirectory.hpp"
 #include "io/output/AtomicFile.hpp"
 #include "io/output/OutputError.hpp"
@@ -163,26 +158,18 @@ TEST(TraceWriter, AFullDiskLeavesCompleteRowsAndNamesTheFile) {
   const auto file = dir / "traces.csv";
   std::vector<std::pair<std::string, Eigen::Vector3d>> points;
   for (int p = 0; p < 100; ++p) points.emplace_back("p" + std::to_string(p), Eigen::Vector3d(p / 3.0, -p / 7.0, 1.0 / (p + 1)));
-  constexpr rlim_t kLimit = 50000; // not a whole number of calls' rows
-  const pid_t child = ::fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    const rlimit limit{kLimit, kLimit};
-    ::signal(SIGXFSZ, SIG_IGN);
-    if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(10);
+  constexpr std::uintmax_t kLimit = 50000; // not a whole number of calls' rows
+  const std::string ended = testing::underFileSizeLimit(kLimit, [&] {
     TraceWriter writer(file);
     try {
       for (int step = 0; step < 1000; ++step) writer.append(0.1 * step, points);
     } catch (const OutputError &e) {
       const std::string what = e.what();
-      ::_exit(what.find(file.string()) != std::string::npos && what.find("File too large") != std::string::npos ? 0 : 12);
+      return what.find(file.string()) != std::string::npos && what.find("File too large") != std::string::npos ? 0 : 12;
     }
-    ::_exit(11);
-  }
-  int status = 0;
-  ASSERT_EQ(::waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status));
-  ASSERT_EQ(WEXITSTATUS(status), 0) << "10: no limit; 11: nothing failed; 12: another message";
+    return 11;
+  });
+  ASSERT_EQ(ended, "exit 0") << "100: no limit; 11: nothing failed; 12: another message";
   const auto rows = parseTraces(file); // every row has its 8 fields
   ASSERT_FALSE(rows.empty());
   EXPECT_EQ(rows.size() % points.size(), 0u) << "a call's rows are written whole or not at all";
