@@ -5,6 +5,8 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "assembly/RankAgreement.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -25,12 +27,15 @@ UzawaLoop::UzawaLoop(const assembly::ResultEvaluator &results, const NewtonSolve
 }
 
 std::vector<double> UzawaLoop::tissueErrors(const assembly::ElementFields &f) const {
-  std::vector<double> local(augmentation_.tissues(), 0.0), global(augmentation_.tissues(), 0.0);
-  for (std::size_t i = 0; i < f.theta.size(); ++i)
-    local[localTissue_[i]] = std::max(local[localTissue_[i]], ruleOf(i).dilatationError(f.theta[i], f.pressure[i]));
-  Teuchos::reduceAll(*results_.assembler().layout().comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()),
-                     local.data(), global.data());
-  return global;
+  // A NaN stays (std::max would drop it on some ranks only): the ranks decide alike whether to
+  // raise a tissue's kappa_AL.
+  std::vector<double> local(augmentation_.tissues(), 0.0);
+  for (std::size_t i = 0; i < f.theta.size(); ++i) {
+    const double e = ruleOf(i).dilatationError(f.theta[i], f.pressure[i]);
+    double &worst = local[localTissue_[i]];
+    if (std::isnan(e) || e > worst) worst = e;
+  }
+  return assembly::largestOnAnyRank(*results_.assembler().layout().comm(), local);
 }
 
 std::vector<int> UzawaLoop::activeTissues() const {
@@ -76,8 +81,9 @@ DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) con
   for (std::size_t i = 0; i < f.theta.size(); ++i) {
     const double change = std::abs(f.theta[i] - 1.0);
     const double e = measuresPhysicalLaw() ? ruleOf(i).dilatationError(f.theta[i], f.pressure[i]) : change;
-    maxErr = std::max(maxErr, e);
-    maxChange = std::max(maxChange, change);
+    // A NaN is kept: the convergence test (max < tolerance) then fails on every rank.
+    if (std::isnan(e) || e > maxErr) maxErr = e;
+    if (std::isnan(change) || change > maxChange) maxChange = change;
     local[0] += e * f.referenceVolume[i];
     volume += f.referenceVolume[i];
   }
@@ -86,8 +92,9 @@ DilatationError UzawaLoop::dilatationError(const assembly::ElementFields &f) con
   DilatationError err;
   const auto &comm = *results_.assembler().layout().comm();
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2, local, sums);
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, maxErr, Teuchos::outArg(err.max));
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, maxChange, Teuchos::outArg(err.maxVolumeChange));
+  const std::vector<double> largest = assembly::largestOnAnyRank(comm, {maxErr, maxChange});
+  err.max = largest[0];
+  err.maxVolumeChange = largest[1];
   err.mean = sums[0] / sums[1];
   return err;
 }

@@ -9,6 +9,7 @@
 #include <Thyra_Ifpack2PreconditionerFactory.hpp>
 
 #include "io/deck/DeckError.hpp"
+#include "solvers/linear/CollectivePreconditioner.hpp"
 #include "solvers/linear/MumpsPreconditioner.hpp"
 
 namespace glossa::solvers {
@@ -76,8 +77,25 @@ ParameterList mueluParameters(const LinearSolverParameters &s, const LinearSolve
     sp.set("partitioner: type", "linear");
     sp.set("partitioner: overlap", overlap);
   };
+  // On several ranks the coarse levels are gathered onto one rank (below), where a smoother's
+  // set-up that fails fails on that rank alone, inside MueLu's set-up while the other ranks go on
+  // into its collective calls: nothing after it can bring the ranks back together. Lanczos broke
+  // down there (the isometric block at T0s = 1 on 2 ranks: a NaN eigenvalue estimate on level 1,
+  // the job dead in MPI_ERR_TRUNCATE); the power method does not break down, so the coarse levels
+  // use it (levels 1 to 9: MueLu's default "max levels" is 10).
+  auto coarseLevelsByPower = [&] {
+    if (c.ranks == 1 || powerMethod(s, c)) return;
+    for (int level = 1; level < 10; ++level) {
+      ParameterList &l = m.sublist("level " + std::to_string(level));
+      chebyshev(l);
+      l.sublist("smoother: params").set("eigen-analysis: type", "power method");
+      l.sublist("smoother: params").set("chebyshev: eigenvalue max iterations",
+                                        s.chebyshevEigenvalueIterations > 0 ? s.chebyshevEigenvalueIterations : 50);
+    }
+  };
   if (s.mueLuSmoother == MueLuSmoother::chebyshev) {
     chebyshev(m);
+    coarseLevelsByPower();
   } else if (s.mueLuSmoother == MueLuSmoother::nodeBlockGaussSeidel) {
     blockRelaxation(m, 0, degree);
   } else if (s.mueLuSmoother == MueLuSmoother::vertexPatch) {
@@ -237,7 +255,9 @@ buildLinearSolver(const LinearSolverParameters &section, const LinearSolverConte
   Stratimikos::DefaultLinearSolverBuilder builder;
   registerPreconditioners(builder);
   builder.setParameterList(stratimikosParameters(section, context));
-  return builder.createLinearSolveStrategy("");
+  auto solver = builder.createLinearSolveStrategy("");
+  makePreconditionerCollective(*solver);
+  return solver;
 }
 
 Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>>
@@ -249,7 +269,7 @@ buildDisplacementPreconditioner(const LinearSolverParameters &section, const Lin
   LinearSolverParameters block = section;
   block.directSolver = DirectSolver::mumps; // a preconditioner, which KLU2 through Amesos2 is not
   builder.setParameterList(stratimikosParameters(block, displacementBlock));
-  return builder.createPreconditioningStrategy("");
+  return collectivePreconditioner(builder.createPreconditioningStrategy(""));
 }
 
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> buildBlockKrylovSolver(const LinearSolverParameters &section) {

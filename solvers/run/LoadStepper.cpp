@@ -1,5 +1,6 @@
 #include "solvers/run/LoadStepper.hpp"
 
+#include "assembly/RankAgreement.hpp"
 #include "solvers/run/CheckpointContents.hpp"
 
 namespace glossa::solvers {
@@ -35,7 +36,21 @@ bool LoadStepper::attemptFrom(StepAttempter &attempter, double dt, bool extrapol
   multipliers_.predict(dt, stepStart_->lambda);
   trial_ = std::make_unique<StepTrial>(t_ + dt, dt, assemblySeconds, *stepStart_);
   attempter.attempt(*trial_);
+  agreeOnOutcome(trial_->attempt);
   return trial_->attempt.ok;
+}
+
+void LoadStepper::agreeOnOutcome(StepAttempt &attempt) const {
+  // Whatever the attempter's checks are, a step that fails on one rank fails on all, for the
+  // reason the lowest failing rank gives: a rank that committed while another cut back would
+  // meet it in a different collective call.
+  const assembly::Comm &comm = *committed_->u.getMap()->getComm();
+  const auto failure =
+      assembly::failureOnAnyRank(comm, attempt.ok ? std::nullopt : std::optional<std::string>(attempt.why));
+  attempt.unstable = assembly::anyRank(comm, attempt.unstable);
+  if (!failure) return;
+  if (attempt.ok || attempt.why != failure->reason) attempt.why = failure->reason + " (" + failure->where() + ")";
+  attempt.ok = false;
 }
 
 void LoadStepper::commit(const std::vector<double> &nextMultipliers) {

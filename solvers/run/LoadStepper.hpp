@@ -60,6 +60,8 @@ public:
 
 private:
   bool attemptFrom(StepAttempter &attempter, double dt, bool extrapolated, double assemblySeconds);
+  // Every rank takes the attempt as failed (and past a limit point) when any rank does. Collective.
+  void agreeOnOutcome(StepAttempt &attempt) const;
 
   StepSizeController steps_;
   bool extrapolate_;

@@ -8,6 +8,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 
 #include "assembly/ModelEvaluator.hpp"
+#include "io/output/OutputError.hpp"
 #include "io/output/SummaryWriter.hpp"
 #include "solvers/run/StopSignals.hpp"
 
@@ -210,6 +211,38 @@ void RunReport::finish(const AssemblyCounters &counters, double t, const nlohman
   // Why a run stopped goes to stderr, also with --quiet: a script must see it.
   if (!failure_.empty() && root_)
     std::fprintf(stderr, "glossa: stopped: %s; results so far in %s\n", failure_.c_str(), dir_.c_str());
+}
+
+void RunReport::recordingOutputFailure(const std::function<void()> &work) {
+  try {
+    work();
+  } catch (const io::OutputError &e) {
+    outputFailed(e.what());
+    throw;
+  } catch (const std::filesystem::filesystem_error &e) {
+    outputFailed(e.what());
+    throw;
+  }
+}
+
+void RunReport::outputFailed(const std::string &what) {
+  // Before the output directory is known (it could not be made) there is no summary to write.
+  if (!root_ || dir_.empty()) return;
+  std::lock_guard<std::recursive_mutex> lock(mutex_);
+  doc_["running"] = false;
+  doc_["converged"] = false;
+  doc_["failure"] = "an output file could not be written: " + what + "; the files hold what was written before it";
+  doc_["output_failure"] = what;
+  try {
+    if (!summary_) summary_ = std::make_unique<io::SummaryWriter>(dir_ / "summary.json");
+    summary_->root() = doc_;
+    summary_->write();
+  } catch (const std::exception &e) {
+    const std::filesystem::path file = dir_ / "summary.json";
+    std::fprintf(stderr, "glossa: error: %s could not be written either (%s)%s\n", file.c_str(), e.what(),
+                 std::filesystem::exists(file) ? "; the one there is from the last step written, and says running"
+                                               : "; there is none");
+  }
 }
 
 } // namespace glossa::solvers

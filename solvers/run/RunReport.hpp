@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -83,9 +84,16 @@ public:
   void restored(const nlohmann::json &summary, int step, double t);
   // The end: the final displacements, how it ended, and where the results are. Collective.
   void finish(const AssemblyCounters &counters, double t, const nlohmann::json &finalDisplacement);
+  // Runs `work`; when an output file cannot be written in it (io::OutputError, a filesystem
+  // error), summary.json says at once that the run ended so and names the file (`running`
+  // false, `failure`, `output_failure`), or stderr says that summary.json could not be written
+  // either, before the error goes on to end the run (exit status 4, on every rank). Rank 0
+  // writes; a rank alone in the error ends the job (main), so nothing here is collective.
+  void recordingOutputFailure(const std::function<void()> &work);
 
 private:
   void interrupted(int signal); // on the signal watcher thread (rank 0)
+  void outputFailed(const std::string &what);
 
   using Clock = std::chrono::steady_clock;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;

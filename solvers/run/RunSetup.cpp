@@ -211,8 +211,11 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
   const std::filesystem::path dir = outputDirectory(*run);
   run->report->setDirectory(dir);
   const OutputParameters &output = run->config.output;
-  run->recorder = std::make_unique<StepRecorder>(assembly::ResultEvaluator(*run->assembler), dir, output.fields, run->root, output.resultantFaceSets,
-                                                 output.volumeFaceSets, run->restart ? &run->restart->outputs : nullptr);
+  run->report->recordingOutputFailure([&] {
+    run->recorder = std::make_unique<StepRecorder>(assembly::ResultEvaluator(*run->assembler), dir, output.fields, run->root,
+                                                   output.resultantFaceSets, output.volumeFaceSets,
+                                                   run->restart ? &run->restart->outputs : nullptr);
+  });
   // None on an arc-length path (its direction and step are LOCA's own state).
   run->checkpoints = std::make_unique<RunCheckpoint>(dir, comm, output.checkpointEvery);
   describeRun(*run);
@@ -229,8 +232,10 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
     std::optional<std::uintmax_t> resumeAt;
     if (run->restart && run->restart->outputs.csvBytes.count("controls.csv"))
       resumeAt = run->restart->outputs.csvBytes.at("controls.csv");
-    run->controlled = std::make_unique<ControlledSteps>(run->control, run->stepSolverParts(), *run->solver, *run->stepper,
-                                                        *run->groups, dir, resumeAt, run->root, run->detail);
+    run->report->recordingOutputFailure([&] { // controls.csv
+      run->controlled = std::make_unique<ControlledSteps>(run->control, run->stepSolverParts(), *run->solver,
+                                                          *run->stepper, *run->groups, dir, resumeAt, run->root, run->detail);
+    });
   }
   return run;
 }

@@ -24,10 +24,11 @@ Simulation::Simulation(const io::Deck &deck, const RunConfiguration &config,
   std::vector<double> inputs;
   for (std::size_t g = 0; g < run.scene->muscles.groups.size(); ++g)
     inputs.push_back(run.history->input(static_cast<int>(g), 0.0));
-  if (!run.restart) {
-    run.recorder->record(0.0, state.u, state.lambda, true, initial, inputs);
-    run.report->write(assemblyCounters(*run.model));
-  }
+  if (!run.restart)
+    run.report->recordingOutputFailure([&] {
+      run.recorder->record(0.0, state.u, state.lambda, true, initial, inputs);
+      run.report->write(assemblyCounters(*run.model));
+    });
   if (run.controlled) run.controlled->setCommittedStretch(initial.groupMeanStretch);
   if (run.restart) restoreRun(run, *run.restart);
   run.report->beginSteps(run.stepper->time());
@@ -147,13 +148,15 @@ nlohmann::json Simulation::run() {
                   trial.time, trial.attempt.why.c_str());
     run.report->doc()["predictor_retries"] = run.report->doc().value("predictor_retries", 0) + 1;
   };
-  while (!onPath_ && !run.stepper->finished()) {
-    if (run.report->stopRequested(run.stepper->stepNumber(), run.stepper->time())) break;
-    if (run.stepper->attemptStep(*this, run.model->assemblySeconds(), onRetry)) commit();
-    else if (!rollBack()) break;
-  }
-  if (onPath_ || switchToPath_) followPath();
-  finish();
+  run.report->recordingOutputFailure([&] {
+    while (!onPath_ && !run.stepper->finished()) {
+      if (run.report->stopRequested(run.stepper->stepNumber(), run.stepper->time())) break;
+      if (run.stepper->attemptStep(*this, run.model->assemblySeconds(), onRetry)) commit();
+      else if (!rollBack()) break;
+    }
+    if (onPath_ || switchToPath_) followPath();
+    finish();
+  });
   return run.report->doc();
 }
 

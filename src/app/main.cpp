@@ -1,5 +1,6 @@
 // glossa: the command-line front end. `glossa --help` lists the commands.
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <cstdio>
 #include <cstring>
@@ -214,6 +215,11 @@ int main(int argc, char **argv) {
       return 0;
     }
   Tpetra::ScopeGuard mpi(&argc, &argv);
+  // A write past the file size limit (ulimit -f, a batch system's) fails with EFBIG, which ends
+  // the run as a full disk does (exit status 4, the files so far whole, summary.json saying so),
+  // instead of SIGXFSZ killing the process mid-write. mpiexec starts the ranks with the default
+  // action, so each rank says it here.
+  std::signal(SIGXFSZ, SIG_IGN);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
   Stage stage = Stage::Collective;

@@ -176,4 +176,26 @@ TEST(LinearStrategyLists, EachSmootherIsWhatTheDeckSays) {
     EXPECT_EQ(sp.get<std::string>("eigen-analysis: type"), "power method");
     EXPECT_EQ(sp.get<int>("chebyshev: eigenvalue max iterations"), 50);
   }
+  {
+    // Several ranks: the coarse levels, gathered onto one rank, by the power method (Lanczos broke
+    // down there on one rank alone); the finest level, on every rank, keeps Lanczos.
+    const auto schema = app::deckSchema();
+    auto deck = io::Deck::fromFile(test::inputPath("verification/step44_block.xml"));
+    deck.validate(schema);
+    solvers::LinearSolverContext twoRanks;
+    twoRanks.ranks = 2;
+    twoRanks.globalRows = 375;
+    const auto p = solvers::stratimikosParameters(
+        solvers::parseLinearSolverParameters(deck.root().sublist("Linear solver")), twoRanks);
+    const auto &m = p->sublist("Preconditioner Types").sublist("MueLu");
+    EXPECT_EQ(m.sublist("smoother: params").get<std::string>("eigen-analysis: type"), "cg");
+    EXPECT_FALSE(m.isSublist("level 0"));
+    for (int level = 1; level < 10; ++level) {
+      const auto &l = m.sublist("level " + std::to_string(level));
+      EXPECT_EQ(l.get<std::string>("smoother: type"), "CHEBYSHEV");
+      EXPECT_EQ(l.sublist("smoother: params").get<std::string>("eigen-analysis: type"), "power method");
+      EXPECT_EQ(l.sublist("smoother: params").get<int>("chebyshev: eigenvalue max iterations"), 50);
+      EXPECT_EQ(l.sublist("smoother: params").get<int>("chebyshev: degree"), 6);
+    }
+  }
 }

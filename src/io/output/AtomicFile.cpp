@@ -39,14 +39,15 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path &target) {
 }
 
 void replaceFileAtomically(const std::filesystem::path &target, std::string_view contents) {
+  // Errors name the target (the file the user knows), not its temporary.
   const std::filesystem::path temporary = temporaryPathFor(target);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail("create", temporary, errno);
+  if (fd < 0) fail("create", target, errno);
   try {
-    writeAll(fd, contents, temporary);
+    writeAll(fd, contents, target);
     // Without fsync a crash of the machine (not just of the run) could leave the renamed file
     // empty on some file systems; the cost is one sync of a small file per call.
-    if (::fsync(fd) != 0) fail("sync", temporary, errno);
+    if (::fsync(fd) != 0) fail("sync", target, errno);
   } catch (...) {
     ::close(fd);
     ::unlink(temporary.c_str());
@@ -55,7 +56,7 @@ void replaceFileAtomically(const std::filesystem::path &target, std::string_view
   if (::close(fd) != 0) {
     const int error = errno;
     ::unlink(temporary.c_str());
-    fail("close", temporary, error);
+    fail("close", target, error);
   }
   if (::rename(temporary.c_str(), target.c_str()) != 0) {
     const int error = errno;

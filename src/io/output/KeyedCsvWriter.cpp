@@ -1,11 +1,22 @@
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/OutputError.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "io/output/RoundTripText.hpp"
 
 namespace glossa::io {
+
+namespace {
+[[noreturn]] void cannot(const char *what, const std::filesystem::path &file, int error) {
+  throw OutputError(std::string("cannot ") + what + " " + file.string() + ": " + std::strerror(error));
+}
+} // namespace
 
 KeyedCsvWriter::KeyedCsvWriter(const std::filesystem::path &file, const std::string &keyColumn,
                                const std::vector<std::string> &valueColumns, std::optional<std::uintmax_t> resumeAt)
@@ -16,19 +27,41 @@ KeyedCsvWriter::KeyedCsvWriter(const std::filesystem::path &file, const std::str
     if (error || size < *resumeAt)
       throw OutputError("cannot resume " + file_.string() + ": it is " + (error ? "missing" : "shorter than at the checkpoint"));
     std::filesystem::resize_file(file_, *resumeAt);
-    out_.open(file_, std::ios::out | std::ios::app);
+    fd_ = ::open(file_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (fd_ < 0) cannot("open", file_, errno);
     bytes_ = *resumeAt;
-    if (!out_) throw OutputError("cannot write " + file_.string());
     return;
   }
   if (file_.has_parent_path()) std::filesystem::create_directories(file_.parent_path());
-  out_.open(file_, std::ios::out | std::ios::trunc);
+  fd_ = ::open(file_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
+  if (fd_ < 0) cannot("create", file_, errno);
   std::string header = "time [s]," + keyColumn;
   for (const auto &c : valueColumns) header += ',' + c;
   header += '\n';
-  out_ << header << std::flush;
-  bytes_ = header.size();
-  if (!out_) throw OutputError("cannot write " + file_.string());
+  writeRows(header);
+}
+
+KeyedCsvWriter::~KeyedCsvWriter() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void KeyedCsvWriter::writeRows(const std::string &text) {
+  const char *p = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd_, p, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const int error = errno;
+      // Part of a row may have gone in before the disk filled up: the file ends at the last
+      // complete row, as a reader expects.
+      [[maybe_unused]] const int cut = ::ftruncate(fd_, static_cast<off_t>(bytes_));
+      cannot("write", file_, error);
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  bytes_ += text.size();
 }
 
 void KeyedCsvWriter::append(double time, const std::vector<std::pair<std::string, std::vector<double>>> &rows) {
@@ -47,10 +80,7 @@ void KeyedCsvWriter::append(double time, const std::vector<std::pair<std::string
     for (double v : values) text += ',' + roundTripText(v);
     text += '\n';
   }
-  out_.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out_.flush();
-  if (!out_) throw OutputError("cannot write " + file_.string());
-  bytes_ += text.size();
+  writeRows(text);
 }
 
 } // namespace glossa::io

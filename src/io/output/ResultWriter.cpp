@@ -60,13 +60,36 @@ void checkTopology(const std::vector<std::array<std::int64_t, 8>> &hexes, std::s
                                     std::to_string(node) + " but the mesh has " + std::to_string(numNodes) +
                                     " nodes");
 }
-// File access without HDF5's file locks: the writer holds the file only while it writes a step,
-// and ParaView 5.11 (HDF5 1.10) aborted on the lock of a running job's file unless the user set
+// File access without HDF5's file locks (a restart's read of the mesh file): ParaView 5.11 (HDF5
+// 1.10) aborted on the lock of a running job's file unless the user set
 // HDF5_USE_FILE_LOCKING=FALSE. Readers still take their own locks; the writer ignores them.
 Hdf5Handle unlockedAccess() {
   Hdf5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "creating a file access property list");
   checkHdf5(H5Pset_file_locking(fapl.get(), false, true), "turning off HDF5 file locking");
   return fapl;
+}
+
+// A file is built in memory (HDF5's core driver without a backing store) and its image written
+// to disk by replaceFileAtomically, whose every write is checked: HDF5 never meets a full disk.
+// When it did, a failed flush left the file open inside HDF5, and closing it again at
+// MPI_Finalize (H5F__close_cb) crashed the run that should have ended with exit status 4.
+// Nothing holds a file on disk open, so no file lock is taken either.
+Hdf5Handle createInMemory(const std::string &name) {
+  const Hdf5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "creating a file access property list");
+  checkHdf5(H5Pset_fapl_core(fapl.get(), 1 << 20, false), "choosing HDF5's in-memory driver");
+  return Hdf5Handle(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose,
+                    "creating " + name + " in memory");
+}
+
+// The bytes of an in-memory file, as they would be on disk.
+std::string fileImage(hid_t file, const std::string &name) {
+  checkHdf5(H5Fflush(file, H5F_SCOPE_GLOBAL), "flushing " + name + " in memory");
+  const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+  if (size < 0) throw OutputError("HDF5: sizing the image of " + name + " failed");
+  std::string image(static_cast<std::size_t>(size), '\0');
+  if (H5Fget_file_image(file, image.data(), image.size()) != size)
+    throw OutputError("HDF5: copying the image of " + name + " failed");
+  return image;
 }
 // Tuples of (xx, yy, zz, xy, yz, xz) as row-major 3x3 tensors.
 std::vector<double> fullSymmetricTensors(const std::vector<double> &six) {
@@ -98,9 +121,9 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
   std::filesystem::remove_all(stepsDirectory());
   std::filesystem::create_directories(stepsDirectory());
 
-  const Hdf5Handle file(H5Fcreate(hdf5Path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, unlockedAccess().get()), H5Fclose,
-                        "creating " + hdf5Path().string());
+  std::string image;
   {
+    const Hdf5Handle file = createInMemory(hdf5Path().string());
     const Hdf5Handle mesh(H5Gcreate2(file.get(), "mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                           "creating group /mesh");
     std::vector<double> xyz;
@@ -110,8 +133,9 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
     // std::array<int64_t, 8> is contiguous and unpadded, so the vector is already E x 8 row-major.
     static_assert(sizeof(std::array<std::int64_t, 8>) == 8 * sizeof(std::int64_t));
     writeDataset(mesh.get(), "topology", H5T_NATIVE_INT64, hexes.data(), hexes.size(), 8);
+    image = fileImage(file.get(), hdf5Path().string());
   }
-  checkHdf5(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing " + hdf5Path().string());
+  replaceFileAtomically(hdf5Path(), image);
   writeXdmf();
 }
 
@@ -131,11 +155,11 @@ ResultWriter::ResultWriter(const std::filesystem::path &directory, const std::st
       throw OutputError((directory_ / stepFile(k)).string() + ": missing; the run cannot resume at its checkpoint");
   }
   // Steps written after the checkpoint are written again by the restarted run; a step file the
-  // kill cut short (its .part) goes too.
+  // kill cut short goes too (staged as .tmp by replaceFileAtomically; .part by earlier versions).
   for (std::size_t k = steps_.size(); std::filesystem::exists(directory_ / stepFile(k)); ++k)
     std::filesystem::remove(directory_ / stepFile(k));
   for (const auto &entry : std::filesystem::directory_iterator(stepsDirectory()))
-    if (entry.path().extension() == ".part") std::filesystem::remove(entry.path());
+    if (entry.path().extension() == ".tmp" || entry.path().extension() == ".part") std::filesystem::remove(entry.path());
   writeXdmf();
 }
 
@@ -173,14 +197,13 @@ void ResultWriter::writeStep(double time, const std::vector<Field> &nodeFields,
   const std::size_t index = steps_.size();
   const std::string group = stepGroupName(index);
   XdmfStep step{time, {}, stepFile(index)};
-  // The step's own file, written under a temporary name and renamed when complete: a reader
-  // (ParaView on a running job) sees either no file or the whole step, and never a file that is
-  // being changed (a reader of one file the writer appends to met its metadata in flux).
+  // The step's own file, replaced into place whole (replaceFileAtomically): a reader (ParaView on a
+  // running job) sees either no file or the whole step, and never a file that is being changed (a
+  // reader of one file the writer appends to met its metadata in flux).
   const std::filesystem::path final = directory_ / step.heavyDataFile;
-  const std::filesystem::path part = final.string() + ".part";
-  try {
-    const Hdf5Handle file(H5Fcreate(part.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, unlockedAccess().get()), H5Fclose,
-                          "creating " + part.string());
+  std::string image;
+  {
+    const Hdf5Handle file = createInMemory(final.string());
     const Hdf5Handle g(H5Gcreate2(file.get(), group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                        "creating group /" + group);
     writeTimeAttribute(g.get(), time);
@@ -196,18 +219,20 @@ void ResultWriter::writeStep(double time, const std::vector<Field> &nodeFields,
     };
     for (const auto &f : nodeFields) write(f, mesh_.numNodes, Centering::Node);
     for (const auto &f : cellFields) write(f, mesh_.numCells, Centering::Cell);
-    checkHdf5(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing " + part.string());
+    image = fileImage(file.get(), final.string());
+  }
+  // Nothing of a step that fails here stays: the XDMF file still describes the previous steps only.
+  replaceFileAtomically(final, image);
+  steps_.push_back(std::move(step));
+  try {
+    writeXdmf();
   } catch (...) {
-    // Nothing of the step stays: the XDMF file still describes the previous steps only.
+    // The XDMF file still names the previous steps only: their files alone stay.
+    steps_.pop_back();
     std::error_code ignored;
-    std::filesystem::remove(part, ignored);
+    std::filesystem::remove(final, ignored);
     throw;
   }
-  std::error_code error;
-  std::filesystem::rename(part, final, error);
-  if (error) throw OutputError(part.string() + ": cannot be renamed to " + final.string() + ": " + error.message());
-  steps_.push_back(std::move(step));
-  writeXdmf();
 }
 
 std::filesystem::path ResultWriter::stepsDirectory() const { return directory_ / (baseName_ + "_steps"); }

@@ -6,9 +6,10 @@
 // temporal collection, XdmfTimeSeries.hpp) points into them.
 //
 // Rank 0 writes (the caller gathers global arrays first). No file a reader can see is ever being
-// changed: a step's file is written under a temporary name (.part) and renamed when complete,
-// and only then is the XDMF file replaced atomically (AtomicFile.hpp), so it never names data
-// that is not on disk yet. ParaView thus opens a running job's files as they are, and a run
+// changed: each HDF5 file is built in memory and its image replaces the file on disk whole
+// (AtomicFile.hpp: written under <name>.tmp, synced, renamed), and only then is the XDMF file
+// replaced the same way, so it never names data that is not on disk yet. A write that fails (a
+// full disk) throws OutputError naming the file and leaves every file written before it intact. ParaView thus opens a running job's files as they are, and a run
 // killed at any moment leaves every step written so far readable. (With all steps in one file,
 // a reader that opened it while the writer added a step could meet its metadata in flux:
 // pvpython aborted with "not a dataspace" about once in six runs of the test that reads a

@@ -1,7 +1,8 @@
 // ResultWriter: what it writes (the mesh file and one file per step) reads back exactly with the
 // plain HDF5 C API, the XDMF index names exactly the datasets that exist, bad input is refused
-// before anything is written, and a run that stops (writer destroyed, or process killed) after a
-// step leaves that step readable.
+// before anything is written, a run that stops (writer destroyed, or process killed) after a
+// step leaves that step readable, and a step that does not fit on the disk (a file size limit)
+// fails naming its file, leaves the earlier files readable and the process ending cleanly.
 
 #include <cmath>
 #include <csignal>
@@ -18,8 +19,10 @@
 
 #include <gtest/gtest.h>
 
+#include "FileSizeLimit.hpp"
 #include "Hdf5Reading.hpp"
 #include "ScratchDirectory.hpp"
+#include "io/output/OutputError.hpp"
 #include "io/output/ResultWriter.hpp"
 
 namespace glossa::io {
@@ -124,7 +127,7 @@ std::filesystem::path stepFile(const std::filesystem::path &dir, const std::stri
 
 // Every HDF DataItem of the XDMF file must point into `<base>.h5` (the mesh) or a step file of
 // `<base>_steps/`, at a dataset that exists with the declared dimensions; every dataset of those
-// files must be referenced, and no other file (a leftover .part) may lie in the steps folder.
+// files must be referenced, and no other file (a leftover .tmp) may lie in the steps folder.
 void expectXdmfMatchesHdf5(const std::filesystem::path &dir, const std::string &base) {
   const std::string text = readText(dir / (base + ".xdmf"));
   ASSERT_NE(text.find("</Xdmf>"), std::string::npos) << "XDMF file is incomplete";
@@ -327,13 +330,13 @@ TEST(ResultWriter, ResumedAtACheckpointDropsTheLaterStepsAndCarriesOn) {
     atCheckpoint = writer.steps();
     write(writer, s2);
   }
-  // A kill while step 4 was being written left its .part, which the restart removes.
-  std::ofstream(stepFile(dir.path(), "results", 4).string() + ".part") << "cut short";
+  // A kill while step 4 was being written left its .tmp, which the restart removes.
+  std::ofstream(stepFile(dir.path(), "results", 4).string() + ".tmp") << "cut short";
   {
     ResultWriter writer(dir.path(), "results", mesh.nodes.size(), mesh.hexes.size(), atCheckpoint);
     EXPECT_EQ(xdmfTimes(dir / "results.xdmf"), (std::vector<double>{0.1, 0.2}));
     EXPECT_FALSE(std::filesystem::exists(stepFile(dir.path(), "results", 2)));
-    EXPECT_FALSE(std::filesystem::exists(stepFile(dir.path(), "results", 4).string() + ".part"));
+    EXPECT_FALSE(std::filesystem::exists(stepFile(dir.path(), "results", 4).string() + ".tmp"));
     write(writer, again);
     write(writer, s3);
   }
@@ -374,6 +377,40 @@ TEST(ResultWriter, H5dumpReadsTheFileWhenInstalled) {
     const std::string command = "/usr/bin/h5dump -H " + file.string() + " > /dev/null";
     EXPECT_EQ(std::system(command.c_str()), 0) << file;
   }
+}
+
+// A full disk, as RLIMIT_FSIZE makes one (SIGXFSZ ignored: a write past the limit fails with
+// EFBIG, as one on a full disk fails with ENOSPC): a child process writes the mesh and a first
+// step, then a step with many more fields than fit. Before, HDF5 wrote the file itself; its
+// failed flush left the file open inside HDF5, and closing it again at exit crashed the process.
+TEST(ResultWriter, AStepPastAFullDiskFailsNamingItsFileAndLeavesTheEarlierOnesReadable) {
+  ScratchDirectory dir;
+  const TwoHexMesh mesh;
+  const StepData s0 = makeStep(0.5, 2.0, mesh);
+  StepData big = makeStep(1.0, 4.0, mesh);
+  for (int k = 0; k < 400; ++k) big.nodeFields.push_back(makeField("extra_" + std::to_string(k), 9, mesh.nodes.size(), k));
+  // The first step's file is a few KB, the big one's over 300 KB.
+  const std::string ended = testing::underFileSizeLimit(64 * 1024, [&] {
+    try {
+      ResultWriter writer(dir.path(), "run", mesh.nodes, mesh.hexes);
+      write(writer, s0);
+      try {
+        write(writer, big);
+      } catch (const OutputError &e) {
+        const std::string what = e.what(); // the step's own file, and why
+        const bool named = what.find("run_steps/step_000001.h5") != std::string::npos;
+        return named && what.find("File too large") != std::string::npos ? 0 : 13;
+      }
+      return 12;
+    } catch (const OutputError &) {
+      return 11;
+    }
+  });
+  ASSERT_EQ(ended, "exit 0") << "100: no limit; 11: the first step failed; 12: nothing failed; 13: another message";
+  expectMeshReadsBack(Hdf5File(dir / "run.h5"), mesh);
+  expectStepReadsBack(Hdf5File(stepFile(dir.path(), "run", 0)), "/step_000000", s0);
+  expectXdmfMatchesHdf5(dir.path(), "run"); // also: no step_000001.h5, no leftover .tmp
+  EXPECT_EQ(xdmfTimes(dir / "run.xdmf"), std::vector<double>{0.5});
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // traces.csv and summary.json: numbers read back exactly, files are complete after every call,
-// and the atomic replacement leaves no temporary file behind.
+// the atomic replacement leaves no temporary file behind, and a full disk (a file size limit)
+// leaves a CSV file ending at its last complete row and an error naming it.
 
 #include <cmath>
 #include <fstream>
@@ -9,8 +10,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "FileSizeLimit.hpp"
 #include "ScratchDirectory.hpp"
 #include "io/output/AtomicFile.hpp"
+#include "io/output/OutputError.hpp"
 #include "io/output/SummaryWriter.hpp"
 #include "io/output/TraceWriter.hpp"
 
@@ -145,6 +148,35 @@ TEST(AtomicFile, FailureLeavesTargetUntouched) {
   EXPECT_THROW(replaceFileAtomically(file, "lost\n"), std::runtime_error);
   EXPECT_EQ(lines(file), std::vector<std::string>{"kept"});
   EXPECT_THROW(replaceFileAtomically(dir / "missing/index.txt", "x"), std::runtime_error);
+}
+
+// A full disk, as RLIMIT_FSIZE makes one (SIGXFSZ ignored: the write fails with EFBIG): a child
+// appends rows of 100 points until a write fails part-way through a row. The file must end at the
+// last complete row (a reader parses every row), and the error must name the file and the reason.
+TEST(TraceWriter, AFullDiskLeavesCompleteRowsAndNamesTheFile) {
+  ScratchDirectory dir;
+  const auto file = dir / "traces.csv";
+  std::vector<std::pair<std::string, Eigen::Vector3d>> points;
+  for (int p = 0; p < 100; ++p) points.emplace_back("p" + std::to_string(p), Eigen::Vector3d(p / 3.0, -p / 7.0, 1.0 / (p + 1)));
+  constexpr std::uintmax_t kLimit = 50000; // not a whole number of calls' rows
+  const std::string ended = testing::underFileSizeLimit(kLimit, [&] {
+    TraceWriter writer(file);
+    try {
+      for (int step = 0; step < 1000; ++step) writer.append(0.1 * step, points);
+    } catch (const OutputError &e) {
+      const std::string what = e.what();
+      return what.find(file.string()) != std::string::npos && what.find("File too large") != std::string::npos ? 0 : 12;
+    }
+    return 11;
+  });
+  ASSERT_EQ(ended, "exit 0") << "100: no limit; 11: nothing failed; 12: another message";
+  const auto rows = parseTraces(file); // every row has its 8 fields
+  ASSERT_FALSE(rows.empty());
+  EXPECT_EQ(rows.size() % points.size(), 0u) << "a call's rows are written whole or not at all";
+  EXPECT_LE(std::filesystem::file_size(file), kLimit);
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text.back(), '\n');
 }
 
 } // namespace

@@ -1,13 +1,15 @@
 // The load stepper on a fake step solve (no deck, no assembly): steps to the end time, a failed
 // attempt leaves the committed state intact and cuts the step back, the linear predictor starts
 // a step at the exact extrapolation of a motion linear in time, a failure from the extrapolated
-// start is retried once from the committed state (not when the step is past a limit point), and a
-// checkpoint's save and restore continue the same steps.
+// start is retried once from the committed state (not when the step is past a limit point), a
+// checkpoint's save and restore continue the same steps, and (under mpiexec on 2 ranks) a step
+// that fails or is past a limit point on one rank only fails on every rank, for that rank's reason.
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <vector>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
 #include "solvers/run/LoadStepper.hpp"
@@ -189,4 +191,54 @@ TEST(LoadStepper, ACheckpointOfAnotherSizeIsRefused) {
   part["lambda"] = std::vector<double>(kElements + 1, 0.0);
   LoadStepper other({1.0, 0.25, 1e-3}, false, stateAt(0.0));
   EXPECT_ANY_THROW(other.restore(part, run));
+}
+
+namespace {
+bool onLastRank() {
+  const auto comm = Tpetra::getDefaultComm();
+  return comm->getRank() == comm->getSize() - 1;
+}
+// The same on every rank (gathered to all).
+bool sameOnEveryRank(int mine) {
+  int low = 0, high = 0;
+  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_MIN, mine, Teuchos::outArg(low));
+  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_MAX, mine, Teuchos::outArg(high));
+  return low == high;
+}
+} // namespace
+
+// A solve that fails on the last rank alone (as a smoother on the coarse levels MueLu gathers onto
+// one rank did): without agreement the other ranks committed the step while it cut back, and the
+// job died in MPI_ERR_TRUNCATE at the next collective call.
+TEST(LoadStepper, AStepThatFailsOnOneRankFailsOnEveryRank) {
+  LoadStepper stepper({1.0, 0.25, 1e-3}, false, stateAt(0.0));
+  FakeSolve solve;
+  solve.fails = [](const StepTrial &trial, double) { return trial.dt > 0.1 && onLastRank(); };
+  EXPECT_FALSE(stepper.attemptStep(solve, 0.0, {}));
+  EXPECT_FALSE(stepper.trial().attempt.ok);
+  const int ranks = Tpetra::getDefaultComm()->getSize();
+  // The reason is the failing rank's, and says which rank it was on whichever rank reads it.
+  const std::string where = "on rank " + std::to_string(ranks - 1) + " of " + std::to_string(ranks);
+  if (onLastRank()) EXPECT_EQ(stepper.trial().attempt.why, "fake failure");
+  else EXPECT_EQ(stepper.trial().attempt.why, "fake failure (" + where + ")");
+  EXPECT_EQ(stepper.stepNumber(), 0);
+  EXPECT_TRUE(stepper.cutBack());
+  runToEnd(stepper, solve); // the step grows back and is cut back again, on every rank alike
+  EXPECT_TRUE(sameOnEveryRank(stepper.stepNumber()));
+  EXPECT_DOUBLE_EQ(stepper.time(), 1.0);
+  EXPECT_TRUE(sameOnEveryRank(solve.attempts));
+}
+
+TEST(LoadStepper, AStepPastALimitPointOnOneRankIsSoOnEveryRank) {
+  LoadStepper stepper({1.0, 0.25, 1e-3}, true, stateAt(0.0));
+  FakeSolve solve;
+  EXPECT_TRUE(stepper.attemptStep(solve, 0.0, {}));
+  stepper.commit({});
+  solve.fails = [](const StepTrial &, double) { return onLastRank(); };
+  solve.unstable = onLastRank();
+  int retries = 0;
+  EXPECT_FALSE(stepper.attemptStep(solve, 0.0, [&retries](const StepTrial &) { ++retries; }));
+  EXPECT_TRUE(stepper.trial().attempt.unstable);
+  EXPECT_EQ(retries, 0); // not retried from the committed state, on any rank
+  EXPECT_EQ(solve.attempts, 2);
 }

@@ -1,7 +1,8 @@
 // The run's report without a run: a committed step's record in summary.json, its console line
 // (what it calls the linear solves and the volume measure), a refused step's
-// inside-out record, how the end is told (converged, or the failure and its reason), and a stop
-// signal agreed by every rank and written into the summary by the watcher at once.
+// inside-out record, how the end is told (converged, or the failure and its reason), a stop
+// signal agreed by every rank and written into the summary by the watcher at once, and an output
+// file that cannot be written told in summary.json, or on stderr when summary.json cannot be.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -12,6 +13,7 @@
 #include <Tpetra_Core.hpp>
 
 #include "SharedScratch.hpp"
+#include "io/output/OutputError.hpp"
 #include "solvers/run/RunReport.hpp"
 
 using namespace glossa;
@@ -167,3 +169,46 @@ TEST(RunReport, AStopSignalIsAgreedAndWrittenAtOnce) {
   EXPECT_EQ(summary["interrupted"], "SIGTERM");
   EXPECT_EQ(summary["running"], false);
 }
+
+TEST(RunReport, AnOutputFileThatCannotBeWrittenEndsTheRunInTheSummary) {
+  glossa::testing::SharedScratch dir;
+  RunReport report(Tpetra::getDefaultComm(), root(), false);
+  report.setDirectory(dir.path());
+  report.addStep(trialTo(0.5, 0.25), 0.5, false, 2.0, {{"reactions", nlohmann::json::object()}});
+  report.doc()["running"] = true;
+  report.write({2.0, 7, 3, 2, 1});
+  const std::string what = "cannot write " + (dir.path() / "results_steps/step_000002.h5").string() + ": File too large";
+  EXPECT_THROW(report.recordingOutputFailure([&] { throw io::OutputError(what); }), io::OutputError);
+  // A filesystem error (a directory that cannot be made) is an output failure too.
+  EXPECT_THROW(report.recordingOutputFailure([] {
+    throw std::filesystem::filesystem_error("cannot create directory", std::make_error_code(std::errc::no_space_on_device));
+  }), std::filesystem::filesystem_error);
+  EXPECT_NO_THROW(report.recordingOutputFailure([] {}));
+  if (!root()) return;
+  const nlohmann::json summary = readSummary(dir.path());
+  EXPECT_FALSE(summary["running"].get<bool>());
+  EXPECT_FALSE(summary["converged"].get<bool>());
+  EXPECT_EQ(summary["steps"].size(), 1u); // what was written before stays
+  EXPECT_NE(summary["output_failure"].get<std::string>().find("cannot create directory"), std::string::npos);
+}
+
+TEST(RunReport, ASummaryThatCannotBeWrittenEitherIsSaidOnStderr) {
+  glossa::testing::SharedScratch dir;
+  RunReport report(Tpetra::getDefaultComm(), root(), false);
+  report.setDirectory(dir.path());
+  // A directory where summary.json should be: its replacement cannot be renamed into place.
+  if (root()) std::filesystem::create_directories(dir.path() / "summary.json" / "in_the_way");
+  Tpetra::getDefaultComm()->barrier();
+  ::testing::internal::CaptureStderr();
+  EXPECT_THROW(report.recordingOutputFailure([] { throw io::OutputError("cannot write traces.csv: No space left on device"); }),
+               io::OutputError);
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  if (!root()) {
+    EXPECT_EQ(said, ""); // rank 0 speaks for the run
+    return;
+  }
+  EXPECT_NE(said.find("glossa: error: " + (dir.path() / "summary.json").string() + " could not be written either ("),
+            std::string::npos) << said;
+  EXPECT_TRUE(std::filesystem::is_directory(dir.path() / "summary.json"));
+}
+
