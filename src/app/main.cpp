@@ -88,9 +88,9 @@ const CommandHelp kCommands[] = {
 const char *kFooter = R"(
 --set overrides any deck parameter, e.g. --set Mesh/Box/cells=16,16,16 (for sweeps).
 Exit status: 0 success; 1 the run stopped without converging (a step failed below the minimum
-step size, or a check failed); 2 a bad deck, mesh file or command line; 3 the run was
-interrupted (SIGTERM or SIGINT; summary.json says where); 4 an output file could not be
-written; 5 an internal error. Errors go to stderr, with --quiet too.
+step size, or a check failed); 2 a bad deck, mesh file, command line or checkpoint; 3 the
+run was interrupted (SIGTERM or SIGINT; summary.json says where); 4 an output file could not be
+written (a full disk); 5 an internal error. Errors go to stderr, with --quiet too.
 )";
 
 // The help for `command` alone, or every command's when it names none of them.
