@@ -11,14 +11,12 @@
 
 #include "fem/HexShape.hpp"
 
+#include "UnitCube.hpp"
+
 namespace glossa::fem {
 namespace {
 
-NodeMatrix unitCube() {
-  NodeMatrix X;
-  for (int a = 0; a < 8; ++a) X.row(a) = 0.5 * (hexNodeXi(a).array() + 1.0).matrix().transpose();
-  return X;
-}
+using testing::unitCube;
 
 double minGaussJacobian(const NodeMatrix &X, const NodeMatrix &u) {
   double smallest = std::numeric_limits<double>::infinity();

@@ -11,14 +11,12 @@
 
 #include "fem/TurnedOverVolume.hpp"
 
+#include "UnitCube.hpp"
+
 namespace glossa::fem {
 namespace {
 
-NodeMatrix unitCube() {
-  NodeMatrix X;
-  for (int a = 0; a < 8; ++a) X.row(a) = 0.5 * (hexNodeXi(a).array() + 1.0).matrix().transpose();
-  return X;
-}
+using testing::unitCube;
 
 // The midpoint rule on n^3 sub-cubes of [-1, 1]^3.
 double bruteForceTurnedOver(const NodeMatrix &x, int n = 64) {
