@@ -1,5 +1,6 @@
 #include "solvers/incompressibility/Augmentation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -43,6 +44,20 @@ void Augmentation::setRatio(std::size_t tissue, double ratio) {
   rules_[tissue] = AugmentedLagrangianRule(physical_[tissue], ratio * mu_[tissue]);
   if (parameters_.method == IncompressibilityMethod::augmentedLagrangian)
     tangent_[tissue] = physical_[tissue].withKappa(rules_[tissue].tangentKappa());
+}
+
+materials::VolumetricEnergy Augmentation::constrainedLaw(std::size_t tissue) const {
+  const materials::VolumetricEnergy &law = physical_.at(tissue);
+  return law.withKappa(std::min(law.kappa(), kConstrainedRatio * mu_[tissue]));
+}
+
+std::vector<materials::VolumetricEnergy> Augmentation::exchangeTangentLaws(std::vector<materials::VolumetricEnergy> laws) {
+  if (laws.size() != tangent_.size())
+    throw std::invalid_argument("Augmentation::exchangeTangentLaws: " + std::to_string(laws.size()) + " laws for " +
+                                std::to_string(tangent_.size()) + " tissues");
+  std::vector<materials::VolumetricEnergy> held(tangent_);
+  std::copy(laws.begin(), laws.end(), tangent_.begin());
+  return held;
 }
 
 } // namespace glossa::solvers

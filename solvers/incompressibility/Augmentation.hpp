@@ -44,6 +44,15 @@ public:
   // tangent law.
   void setRatio(std::size_t tissue, double ratio);
 
+  // The law of the constrained problem that the Uzawa loop converges to, for its tangent
+  // (ConstrainedTangent): the physical one, its bulk modulus capped at kConstrainedRatio mu
+  // (infinite for nu = 0.5; the cap moves a limit point by about 1e-5 of its load, below).
+  static constexpr double kConstrainedRatio = 1e4;
+  materials::VolumetricEnergy constrainedLaw(std::size_t tissue) const;
+  // Puts `laws` (one per tissue) in the tangent's place and returns the laws it held; the storage
+  // the assembly reads stays the same. For ConstrainedTangent, which puts them back.
+  std::vector<materials::VolumetricEnergy> exchangeTangentLaws(std::vector<materials::VolumetricEnergy> laws);
+
 private:
   IncompressibilityParameters parameters_;
   std::vector<materials::VolumetricEnergy> physical_, tangent_;

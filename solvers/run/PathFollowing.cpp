@@ -22,9 +22,9 @@ StepTrial &pointTrial(RunParts &run, const ArcLengthPoint &point, const assembly
   a.uzawa.dilatation =
       run.uzawa->dilatationError(
           assembly::ResultEvaluator(*run.assembler).elementDilatations(u, run.stepper->committed().lambda));
-  run.solver->measureCorners(trial.state, a);
   a.ok = true;
-  run.solver->refuseInsideOut(trial.state, a);
+  run.solver->measureCorners(trial.state, point.time, a);
+  if (a.ok) run.solver->refuseInsideOut(trial.state, a);
   return trial;
 }
 } // namespace
@@ -41,7 +41,8 @@ void followArcLength(RunParts &run, const std::function<void()> &commit) {
   auto onPoint = [&](const ArcLengthPoint &point, const assembly::Vector &u) {
     const StepTrial &trial = pointTrial(run, point, u);
     if (!trial.attempt.ok) {
-      doc["inside_out_refusals"].push_back(trial.attempt.insideOut);
+      if (!trial.attempt.folded.is_null()) doc["folded_element"] = trial.attempt.folded;
+      else doc["inside_out_refusals"].push_back(trial.attempt.insideOut);
       run.report->fail("arc-length step " + std::to_string(point.step) + ": " + trial.attempt.why);
       return false;
     }

@@ -6,6 +6,8 @@
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/ResultEvaluator.hpp"
+#include "solvers/incompressibility/Augmentation.hpp"
+#include "solvers/incompressibility/ConstrainedTangent.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
 #include "solvers/stepping/LimitPointMonitor.hpp"
 #include "solvers/stepping/PathStiffness.hpp"
@@ -25,21 +27,34 @@ LargestMotion largestMotion(const assembly::ResultEvaluator &results, const asse
 }
 
 PathWatch::PathWatch(const assembly::Assembler &assembler, assembly::ModelEvaluator &model, const NewtonSolver &newton,
-                     double nominalStep, double tolerance, bool talk)
+                     double nominalStep, double tolerance, bool talk, Augmentation *augmentation)
     : assembler_(assembler), model_(model), newton_(newton),
-      limit_(std::make_unique<LimitPointMonitor>(nominalStep, tolerance)), talk_(talk) {}
+      limit_(std::make_unique<LimitPointMonitor>(nominalStep, tolerance)), talk_(talk), augmentation_(augmentation) {}
 
 PathWatch::~PathWatch() = default;
 
 void PathWatch::check(StepTrial &trial) {
   model_.setTime(trial.time);
   model_.setMultipliers(trial.state.lambda);
-  const PathStiffness measured =
-      pathStiffness(assembler_, newton_, trial.state.u, trial.time, trial.dt, trial.state.lambda);
-  if (!measured.note.empty() && talk_)
-    std::printf("  note: the stiffness along the path at t = %.6g was not measured: %s\n", trial.time, measured.note.c_str());
+  PathStiffness measured = pathStiffness(assembler_, newton_, trial.state.u, trial.time, trial.dt, trial.state.lambda);
   StepAttempt &a = trial.attempt;
   a.pathStiffness = limit_->relativeStiffness(measured.stiffness);
+  // Far from a limit point the two tangents tell the same (S of order 1 either way); near one,
+  // only the constrained problem's says where its maximum is. Not measured at all (df/dt = 0): nothing to redo.
+  const bool unmeasurable = std::isnan(measured.stiffness) && measured.note.empty();
+  if (augmentation_ && !(a.pathStiffness >= LimitPointMonitor::kSoftened) && !unmeasurable) {
+    {
+      const ConstrainedTangent constrained(*augmentation_, assembly::ResultEvaluator(assembler_), trial.state.u,
+                                           trial.state.lambda);
+      model_.setMultipliers(constrained.multipliers());
+      measured = pathStiffness(assembler_, newton_, trial.state.u, trial.time, trial.dt, constrained.multipliers(),
+                               /*ownSolver=*/true);
+    }
+    model_.setMultipliers(trial.state.lambda);
+    a.pathStiffness = limit_->relativeStiffness(measured.stiffness);
+  }
+  if (!measured.note.empty() && talk_)
+    std::printf("  note: the stiffness along the path at t = %.6g was not measured: %s\n", trial.time, measured.note.c_str());
   if (!LimitPointMonitor::beyond(a.pathStiffness)) return;
   a.ok = false;
   a.unstable = true;
@@ -52,10 +67,21 @@ void PathWatch::check(StepTrial &trial) {
 
 void PathWatch::accepted(double t, double pathStiffness) {
   limit_->accepted(t, pathStiffness);
-  if (pathStiffness < LimitPointMonitor::kSoftened && !softeningSaid_ && talk_)
+  if (!(pathStiffness < LimitPointMonitor::kSoftened) || softeningSaid_) return;
+  softeningSaid_ = true;
+  if (talk_)
     std::printf("  note: the load path has softened: the tangent's stiffness along the path is %.3g of the first "
                 "step's (a limit point may be near)\n", pathStiffness);
-  softeningSaid_ = softeningSaid_ || pathStiffness < LimitPointMonitor::kSoftened;
+  // The Newton solves at fixed multipliers find no state past the inner problem's own maximum,
+  // which lies about 10 mu / kappa_AL below the constrained one (the thick sphere: 0.3 % at 30 mu):
+  // past it every step would fail, and the failures would bracket the wrong maximum.
+  for (std::size_t tissue = 0; augmentation_ && tissue < augmentation_->tissues(); ++tissue) {
+    if (!(augmentation_->ratios()[tissue] < kNearLimitPointRatio)) continue;
+    augmentation_->setRatio(tissue, kNearLimitPointRatio);
+    if (talk_)
+      std::printf("  note: kappa_AL raised to %.3g mu in tissue %zu for the rest of the run, so that the Newton solves "
+                  "at fixed multipliers reach the limit point\n", kNearLimitPointRatio, tissue);
+  }
 }
 
 PathWatch::Verdict PathWatch::refused(double t, const StepTrial &trial, const StepState &committed, double nextStep,

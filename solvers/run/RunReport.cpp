@@ -150,6 +150,7 @@ void RunReport::addStep(const StepTrial &trial, double t, bool onPath, double as
   step["max_volume_change"] = r.dilatation.maxVolumeChange;
   step["min_corner_J"] = trial.attempt.minCornerJ;
   step["min_regular_corner_J"] = trial.attempt.minRegularCornerJ;
+  step["max_turned_over_volume"] = trial.attempt.turnedOver;
   if (std::isfinite(trial.attempt.pathStiffness)) step["path_stiffness"] = trial.attempt.pathStiffness;
   if (!(trial.attempt.minCornerJ > 0.0) && talk_)
     std::printf("  note: element %lld has a corner turned over at t = %.6g (det F = %.3g there; its Gauss points are "

@@ -94,8 +94,9 @@ void buildSolvers(RunParts &run) {
     run.arcLength = std::make_unique<ArcLengthSettings>(arcLengthSettings(config, *run.assembler));
   run.solver = std::make_unique<StepSolver>(run.stepSolverParts(), scene, run.linearPlan.keptScope, run.detail, run.talk);
   if (mixedPressure.is_null() && !onPath && config.time.atLimitPoint != AtLimitPoint::ignore)
-    run.watch = std::make_unique<PathWatch>(*run.assembler, *run.model, *run.newton, config.time.steps.nominal,
-                                            config.time.limitPointTolerance, run.talk);
+    run.watch = std::make_unique<PathWatch>(
+        *run.assembler, *run.model, *run.newton, config.time.steps.nominal, config.time.limitPointTolerance, run.talk,
+        config.incompressibility.method == IncompressibilityMethod::augmentedLagrangian ? run.augmentation.get() : nullptr);
 }
 
 // What summary.json says of the run before its first step, and the console's first lines. The

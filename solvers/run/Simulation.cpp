@@ -92,6 +92,12 @@ void Simulation::record(const StepTrial &trial) {
 bool Simulation::rollBack() {
   RunParts &run = *run_;
   const StepTrial &trial = run.stepper->trial();
+  if (!trial.attempt.folded.is_null()) {
+    // A fold is where the path leads, not a failed solve: a smaller step converges to it again.
+    run.report->doc()["folded_element"] = trial.attempt.folded;
+    run.report->fail(trial.attempt.why);
+    return false;
+  }
   run.report->stepRefused(trial);
   const bool stepLeft = run.stepper->cutBack();
   if (run.watch) {

@@ -5,6 +5,7 @@
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/ResultEvaluator.hpp"
+#include "fem/TurnedOverVolume.hpp"
 #include "model/Scene.hpp"
 #include "model/SymmetryPlanes.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
@@ -69,25 +70,47 @@ StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool qui
                   "the run\n", scene_.tissues[t].name.c_str(), parts_.uzawa.penaltyRatios()[t]);
   // The history at the converged state: lambda_c of every point with this step's activation.
   if (out.uzawa.converged) out.muscle = assembly::updateMuscleHistory(assembly::ResultEvaluator(parts_.assembler), state.u, parts_.history);
-  if (out.uzawa.converged) measureCorners(state, out);
   out.ok = out.uzawa.converged && out.muscle.valid;
+  if (out.ok) measureCorners(state, time, out);
   if (out.ok) refuseInsideOut(state, out);
   if (!out.ok && out.why.empty()) out.why = failureReason(out);
   return out;
 }
 
 // What the Gauss points cannot see: the smallest det F at the elements' corners, at all corners
-// and at regular ones. Reported per step (summary.json, and a note when a corner has turned
-// over), not refused: in the tongue scenes, whose Gauss points and answers are sound, corners
-// turn over to det F = -8.5 (s8_4_sg) and even regular corners, whose reference det is at least
-// 0.2 of their element's mean, to -1.1 (s8_5 passive supine) and -0.21 (s8_4_sg), so no corner
-// threshold tells those from an element inside out as a whole (doc/theory.md).
-void StepSolver::measureCorners(const StepState &state, StepAttempt &attempt) const {
+// and at regular ones, reported per step; and how much of an element is turned over, which
+// refuses the state beyond fem::kFoldedFraction. A corner det F alone cannot decide: in the sound
+// tongue scenes corners of near-degenerate imaged elements turn over to det F = -8.5 (s8_4_sg)
+// and even regular ones, whose reference det is at least 0.2 of their element's mean, to -1.1
+// (s8_5 passive supine), while a regular cube folded by a node pushed to its centre has -0.5; the
+// turned-over volume of those corners stays below 0.14 % of their elements, the fold's is 0.31 %
+// (doc/theory.md, "Folded elements").
+void StepSolver::measureCorners(const StepState &state, double time, StepAttempt &attempt) const {
   const auto worst = assembly::ResultEvaluator(parts_.assembler).worstCorner(state.u);
   attempt.minCornerJ = worst.J;
   attempt.cornerElement = worst.element;
   attempt.minRegularCornerJ = worst.regularJ;
   attempt.regularCornerElement = worst.regularElement;
+  attempt.turnedOver = worst.turnedOver;
+  if (!(worst.turnedOver > fem::kFoldedFraction)) return;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const auto n : scene_.mesh.elements[worst.turnedOverElement]) centroid += scene_.mesh.nodes[n] / 8.0;
+  char why[600];
+  std::snprintf(why, sizeof why,
+                "element %lld (reference centroid %.4g, %.4g, %.4g m) is folded through itself in the converged state "
+                "at t = %.6g: %.3g %% of its volume is turned inside out (its smallest corner det F %.3g), beyond the "
+                "%.2g %% a sound state keeps; the mesh is too coarse or too distorted there for this deformation: "
+                "refine it there, or lower the load",
+                static_cast<long long>(worst.turnedOverElement), centroid.x(), centroid.y(), centroid.z(), time,
+                100.0 * worst.turnedOver, worst.turnedOverCornerJ, 100.0 * fem::kFoldedFraction);
+  attempt.ok = false;
+  attempt.why = why;
+  attempt.folded = {{"time", time},
+                    {"element", worst.turnedOverElement},
+                    {"reference_centroid", {centroid.x(), centroid.y(), centroid.z()}},
+                    {"turned_over_volume", worst.turnedOver},
+                    {"min_corner_J", worst.turnedOverCornerJ},
+                    {"threshold", fem::kFoldedFraction}};
 }
 
 void StepSolver::refuseInsideOut(const StepState &state, StepAttempt &attempt) const {

@@ -1,7 +1,8 @@
 #pragma once
 // One load step's solve and the checks its converged state must pass: the Uzawa loop of Newton
 // solves at the step's time (UzawaLoop), the muscle history at the converged state, the smallest
-// corner det F (reported), and the refusal of a state that has passed through a symmetry plane.
+// corner det F (reported), the refusal of a state with an element folded through itself, and of
+// a state that has passed through a symmetry plane.
 
 #include <vector>
 
@@ -49,8 +50,11 @@ public:
   // A converged state in which material has crossed a symmetry plane is refused
   // (model/SymmetryPlanes.hpp): `attempt` then fails, saying where. Collective.
   void refuseInsideOut(const StepState &state, StepAttempt &attempt) const;
-  // The corner checks of a converged state (Assembler::worstCorner) into `attempt`. Collective.
-  void measureCorners(const StepState &state, StepAttempt &attempt) const;
+  // The corner checks of a converged state (ResultEvaluator::worstCorner) into `attempt`; an
+  // element turned over by more than fem::kFoldedFraction of its volume refuses the state, which
+  // `attempt.folded` then names (the run stops there: a smaller step reaches the same fold).
+  // Collective.
+  void measureCorners(const StepState &state, double time, StepAttempt &attempt) const;
 
 private:
   StepSolverParts parts_;

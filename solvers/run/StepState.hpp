@@ -40,6 +40,8 @@ struct StepAttempt {
   mesh::ElementId cornerElement = 0; // where
   double minRegularCornerJ = 1.0;   // the same over regular corners (ResultEvaluator::WorstCorner)
   mesh::ElementId regularCornerElement = 0;
+  double turnedOver = 0.0;          // the largest fraction of an element turned over (fem::turnedOverFraction)
+  nlohmann::json folded;            // converged with an element folded: which, where (StepSolver::measureCorners)
   double pathStiffness = std::numeric_limits<double>::quiet_NaN(); // S (LimitPointMonitor); NaN: not measured
   bool unstable = false;            // converged, but past a limit point (S <= 0)
   nlohmann::json insideOut;         // converged inside out: where (model/SymmetryPlanes.hpp)

@@ -18,7 +18,7 @@ constexpr double kTangentTolerance = 1e-3;
 } // namespace
 
 PathStiffness pathStiffness(const assembly::Assembler &assembler, const NewtonSolver &newton, const assembly::Vector &u,
-                            double time, double dt, const std::vector<double> &lambda) {
+                            double time, double dt, const std::vector<double> &lambda, bool ownSolver) {
   PathStiffness out{std::numeric_limits<double>::quiet_NaN(), 0, {}};
   // df/dt at fixed u: the loads and the prescribed displacements at t -+ h. h small against the
   // step (a tabulated load is linear between its rows), large against round-off.
@@ -49,7 +49,14 @@ PathStiffness pathStiffness(const assembly::Assembler &assembler, const NewtonSo
   assembly::Vector rhs(u.getMap()), w(u.getMap()); // w: 2h du/dt
   rhs.update(-1.0, fLater, 0.0);
   try {
-    out.krylovIterations = newton.solveTangentWithKeptSolver(u, rhs, w, kTangentTolerance);
+    if (ownSolver) {
+      assembly::MultiVector b(u.getMap(), 1), x(u.getMap(), 1);
+      b.getVectorNonConst(0)->assign(rhs);
+      out.krylovIterations = newton.solveTangent(u, b, x, kTangentTolerance);
+      w.assign(*x.getVector(0));
+    } else {
+      out.krylovIterations = newton.solveTangentWithKeptSolver(u, rhs, w, kTangentTolerance);
+    }
   } catch (const std::exception &e) {
     // CG's p^T K p <= 0 is itself a direction along which K is not positive definite.
     out.note = linearSolveFailure(e.what());

@@ -26,8 +26,10 @@ struct PathStiffness {
 };
 
 // At the converged u of the step to `time` (of size dt) with `lambda`; the model evaluator
-// behind `newton` must be at that time and multipliers. One tangent assembly and solve. Collective.
+// behind `newton` must be at that time and multipliers. One tangent assembly and solve, with
+// Newton's kept linear solver, or with a solver of its own (`ownSolver`: a tangent other than the
+// one Newton factored or preconditioned, ConstrainedTangent's). Collective.
 PathStiffness pathStiffness(const assembly::Assembler &assembler, const NewtonSolver &newton, const assembly::Vector &u,
-                            double time, double dt, const std::vector<double> &lambda);
+                            double time, double dt, const std::vector<double> &lambda, bool ownSolver = false);
 
 } // namespace glossa::solvers

@@ -9,6 +9,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include "fem/HexShape.hpp"
+#include "fem/TurnedOverVolume.hpp"
 #include "loads/FollowerPressure.hpp"
 
 namespace glossa::assembly {
@@ -68,20 +69,23 @@ ResultEvaluator::WorstCorner ResultEvaluator::worstCorner(const Vector &u) const
   auto uData = uOverlap.getData(0);
   constexpr double inf = std::numeric_limits<double>::infinity();
   constexpr auto none = std::numeric_limits<mesh::ElementId>::max();
-  std::array<std::pair<double, mesh::ElementId>, 2> local{{{inf, none}, {inf, none}}}; // all corners, regular ones
+  // All corners, regular ones, and the turned-over fraction (negated, so that all three are minima).
+  std::array<std::pair<double, mesh::ElementId>, 3> local{{{inf, none}, {inf, none}, {0.0, none}}};
+  std::vector<double> allJ(layout_.localElements.size());
   for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
     const auto e = layout_.localElements[i];
     const auto X = mesh.elementCoordinates(e);
     const auto ue = elementDisplacement(i, uData);
     const fem::CornerJacobians corners = fem::cornerJacobians(X, ue, kRegularCorner);
-    const double J[2] = {corners.all, corners.regular};
-    for (int k = 0; k < 2; ++k)
+    allJ[i] = corners.all;
+    const double J[3] = {corners.all, corners.regular, -fem::turnedOverFraction(X, ue)};
+    for (int k = 0; k < 3; ++k)
       if (J[k] < local[k].first || (J[k] == local[k].first && e < local[k].second)) local[k] = {J[k], e};
   }
   // The smallest over the ranks, and the lowest element id among equals.
-  std::array<std::pair<double, mesh::ElementId>, 2> global{};
+  std::array<std::pair<double, mesh::ElementId>, 3> global{};
   const Comm &comm = *layout_.comm();
-  for (int k = 0; k < 2; ++k) {
+  for (int k = 0; k < 3; ++k) {
     double J = 0.0;
     Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, local[k].first, Teuchos::outArg(J));
     const long long mine = local[k].first == J ? static_cast<long long>(local[k].second) : std::numeric_limits<long long>::max();
@@ -89,7 +93,16 @@ ResultEvaluator::WorstCorner ResultEvaluator::worstCorner(const Vector &u) const
     Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(element));
     global[k] = {J, static_cast<mesh::ElementId>(element)};
   }
-  return {global[0].first, global[0].second, global[1].first, global[1].second};
+  // The folded element's smallest corner det F, from the rank that holds it.
+  double foldJ = inf, turnedJ = inf;
+  for (std::size_t i = 0; i < layout_.localElements.size(); ++i)
+    if (layout_.localElements[i] == global[2].second) foldJ = allJ[i];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, foldJ, Teuchos::outArg(turnedJ));
+  WorstCorner out{global[0].first, global[0].second, global[1].first, global[1].second};
+  out.turnedOver = -global[2].first;
+  out.turnedOverElement = global[2].second == none ? 0 : global[2].second;
+  out.turnedOverCornerJ = turnedJ;
+  return out;
 }
 
 Vector ResultEvaluator::nodalForces(const Teuchos::ArrayRCP<const double> &uData, double time,

@@ -62,6 +62,11 @@ public:
     // The same over regular corners (fem::minRegularCornerJacobian with kRegularCorner).
     double regularJ = 0.0;
     mesh::ElementId regularElement = 0;
+    // The largest fraction of an element turned over since the reference (fem::turnedOverFraction),
+    // the fold check, and that element's smallest corner det F.
+    double turnedOver = 0.0;
+    mesh::ElementId turnedOverElement = 0;
+    double turnedOverCornerJ = 1.0;
   };
   static constexpr double kRegularCorner = 0.2;
   WorstCorner worstCorner(const Vector &u) const;

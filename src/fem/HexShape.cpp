@@ -68,10 +68,10 @@ CornerJacobians cornerJacobians(const NodeMatrix &X, const NodeMatrix &u, double
   constexpr double inf = std::numeric_limits<double>::infinity();
   CornerJacobians out{inf, inf};
   for (int a = 0; a < 8; ++a) {
-    if (!(reference[a] > 0.0)) {
-      out.all = -inf;
-      continue;
-    }
+    // det F = det(dx/dxi) / det(dX/dxi) whatever the reference's sign: a zero-strain configuration
+    // may turn a near-degenerate corner of the imaged mesh over (its Gauss points stay positive),
+    // and det F there is still the ratio; only a reference det of exactly 0 leaves it undefined.
+    if (reference[a] == 0.0) continue;
     const double J = deformed[a] / reference[a];
     out.all = std::min(out.all, J);
     if (reference[a] >= regularity * mean) out.regular = std::min(out.regular, J);

@@ -36,7 +36,9 @@ bool hexGradients(const NodeMatrix &X, const Eigen::Vector3d &xi,
 // The smallest det F = det(dx/dxi) / det(dX/dxi) at the eight corners of the element, x = X + u:
 // the check the Gauss points cannot make. An element folded through itself can keep J > 0 at
 // all eight Gauss points while a corner has turned over (a node pushed past the opposite face).
-// -infinity for a degenerate reference corner.
+// A corner whose reference det dX/dxi is exactly 0 has no det F and is left out (+infinity if
+// every corner is); a negative one (a turned-over corner of a zero-strain configuration) gives
+// the ratio, negative where the deformation has turned that corner back.
 double minCornerJacobian(const NodeMatrix &X, const NodeMatrix &u);
 // The same over the element's regular corners only: those whose reference det dX/dxi is at least
 // `regularity` times the mean of its eight (a poorly shaped hexahedron's near-degenerate corner

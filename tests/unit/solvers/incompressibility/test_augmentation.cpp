@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <vector>
 
 #include "io/deck/DeckError.hpp"
 #include "materials/VolumetricEnergy.hpp"
@@ -64,4 +66,25 @@ TEST(Augmentation, APenaltyAtNuOneHalfIsRefused) {
                io::DeckError);
   EXPECT_THROW(Augmentation(method(IncompressibilityMethod::augmentedLagrangian), {law(1.0)}, {kMu, kMu}),
                std::invalid_argument);
+}
+
+// The constrained problem's laws (ConstrainedTangent): the physical law where it is finite and
+// below the cap, the cap of 1e4 mu for nu = 0.5; exchanged into the storage the assembly holds
+// and back, unchanged, the rules untouched.
+TEST(Augmentation, TheConstrainedLawsAreExchangedIntoTheTangentsStorageAndBack) {
+  const double kappa = 5000.0 * kMu, infinite = std::numeric_limits<double>::infinity();
+  Augmentation al(method(IncompressibilityMethod::augmentedLagrangian), {law(kappa), law(infinite)}, {kMu, 2.0 * kMu});
+  EXPECT_EQ(al.constrainedLaw(0).kappa(), kappa);
+  EXPECT_EQ(al.constrainedLaw(1).kappa(), Augmentation::kConstrainedRatio * 2.0 * kMu);
+  EXPECT_EQ(al.constrainedLaw(1).form(), VolumetricEnergy::Form::SimoTaylor);
+  const std::vector<VolumetricEnergy> &held = al.tangentLaws(); // the assembly's reference
+  const double kappaT0 = held[0].kappa(), kappaT1 = held[1].kappa();
+  auto augmented = al.exchangeTangentLaws({al.constrainedLaw(0), al.constrainedLaw(1)});
+  EXPECT_EQ(held[0].kappa(), kappa);
+  EXPECT_EQ(held[1].kappa(), Augmentation::kConstrainedRatio * 2.0 * kMu);
+  EXPECT_EQ(al.rule(1).tangentKappa(), kappaT1); // the Uzawa rule stays the augmented one
+  al.exchangeTangentLaws(std::move(augmented));
+  EXPECT_EQ(held[0].kappa(), kappaT0);
+  EXPECT_EQ(held[1].kappa(), kappaT1);
+  EXPECT_THROW(al.exchangeTangentLaws({law(kappa)}), std::invalid_argument);
 }

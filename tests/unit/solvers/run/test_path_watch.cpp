@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "BlockStack.hpp"
+#include "solvers/incompressibility/ConstrainedTangent.hpp"
 #include "solvers/run/PathWatch.hpp"
 
 using namespace glossa;
@@ -46,4 +47,41 @@ TEST(PathWatch, AlongANearlyLinearPathTheStiffnessStaysThatOfTheFirstStep) {
   PathWatch restored(*s.assembler, *s.evaluator, *s.newton, 0.25, 0.01, false);
   restored.restore(watch.state());
   EXPECT_EQ(restored.state(), watch.state());
+}
+
+// Under the augmented Lagrangian near a limit point (ConstrainedTangent): at a converged state of
+// the block, the constrained laws with their multipliers Lambda_c give every element the pressure
+// and the residual the state has (to round-off), the augmented laws come back afterwards, and the
+// watch raises kappa_AL to 300 mu once, when the path has softened.
+TEST(PathWatch, TheConstrainedTangentKeepsTheStateAndASoftenedPathRaisesKappaAL) {
+  Stack s(rampedBlock());
+  StepState state(s.assembler->layout().ownedMap(), s.assembler->layout().numLocalElements());
+  ASSERT_TRUE(s.solver->solve(1.0, 1.0, state, true).ok);
+  const assembly::ResultEvaluator results(*s.assembler);
+  const auto before = results.elementDilatations(state.u, state.lambda);
+  assembly::Vector f(state.u.getMap()), fc(state.u.getMap());
+  ASSERT_TRUE(s.assembler->assemble(state.u, 1.0, state.lambda, nullptr, &f, nullptr).valid);
+  const double kappaT = s.augmentation.tangentLaws()[0].kappa();
+  {
+    const ConstrainedTangent constrained(s.augmentation, results, state.u, state.lambda);
+    EXPECT_EQ(s.augmentation.tangentLaws()[0].kappa(), s.augmentation.physicalLaw(0).kappa()); // nu = 0.4999: below the cap
+    const auto after = results.elementDilatations(state.u, constrained.multipliers());
+    double scale = 0.0, worst = 0.0;
+    for (std::size_t i = 0; i < before.pressure.size(); ++i) {
+      scale = std::max(scale, std::abs(before.pressure[i]));
+      worst = std::max(worst, std::abs(after.pressure[i] - before.pressure[i]));
+    }
+    EXPECT_LT(worst, 1e-9 * scale);
+    ASSERT_TRUE(s.assembler->assemble(state.u, 1.0, constrained.multipliers(), nullptr, &fc, nullptr).valid);
+    fc.update(-1.0, f, 1.0);
+    EXPECT_LT(fc.norm2(), 1e-9 * s.assembler->externalForceNorm(1.0));
+  }
+  EXPECT_EQ(s.augmentation.tangentLaws()[0].kappa(), kappaT);
+
+  PathWatch watch(*s.assembler, *s.evaluator, *s.newton, 0.25, 0.01, false, &s.augmentation);
+  watch.accepted(0.25, 0.5);
+  EXPECT_EQ(s.augmentation.ratios()[0], 30.0);
+  watch.accepted(0.5, 0.05);
+  EXPECT_EQ(s.augmentation.ratios()[0], PathWatch::kNearLimitPointRatio);
+  EXPECT_GT(s.augmentation.tangentLaws()[0].kappa(), kappaT);
 }

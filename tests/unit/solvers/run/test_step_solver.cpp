@@ -2,7 +2,8 @@
 // at x = 0, held by a symmetry plane at y = 0, under its own weight): a step's Uzawa loop brings
 // every element to the dilatation tolerance and the supports then carry the block's weight (the
 // balance of forces, an independent reference); a state with material across the symmetry plane
-// is refused, naming the plane and the node; corners are measured.
+// is refused, naming the plane and the node; corners are measured, and an element folded through
+// itself refuses the state.
 #include <gtest/gtest.h>
 
 #include "BlockStack.hpp"
@@ -54,6 +55,40 @@ TEST(StepSolver, AStateOnItsSideOfThePlaneIsKept) {
   a.ok = true;
   s.solver->refuseInsideOut(state, a);
   EXPECT_TRUE(a.ok);
-  s.solver->measureCorners(state, a);
+  s.solver->measureCorners(state, 0.0, a);
   EXPECT_DOUBLE_EQ(a.minCornerJ, 1.0); // the reference state
+  EXPECT_EQ(a.turnedOver, 0.0);
+  EXPECT_TRUE(a.ok);
+}
+
+// The node at (side, side, side) belongs to one element of the 2 x 2 x 2 block; pushed to that
+// cube's centre it folds it through itself (0.31 % of its volume turned over,
+// tests/unit/fem/test_turned_over_volume.cpp): the state is refused, naming the element, its
+// reference centroid and the time.
+TEST(StepSolver, AStateWithAFoldedElementIsRefusedNamingIt) {
+  Stack s;
+  StepState state(s.assembler->layout().ownedMap(), s.assembler->layout().numLocalElements());
+  const mesh::HexMesh &mesh = s.scene.mesh;
+  std::size_t corner = 0, element = 0;
+  for (std::size_t n = 0; n < mesh.numNodes(); ++n)
+    if (mesh.nodes[n].isApprox(Eigen::Vector3d::Constant(kSide))) corner = n;
+  for (std::size_t e = 0; e < mesh.numElements(); ++e)
+    for (const auto n : mesh.elements[e])
+      if (n == corner) element = e;
+  const Eigen::Vector3d centre = Eigen::Vector3d::Constant(0.75 * kSide), move = centre - mesh.nodes[corner];
+  std::vector<double> all(3 * mesh.numNodes(), 0.0);
+  for (int c = 0; c < 3; ++c) all[3 * corner + c] = move(c);
+  assembly::ResultEvaluator(*s.assembler).scatterDisplacement(all, state.u);
+  StepAttempt a;
+  a.ok = true;
+  s.solver->measureCorners(state, 0.5, a);
+  EXPECT_FALSE(a.ok);
+  EXPECT_NEAR(a.turnedOver, 0.003076, 2e-5);
+  ASSERT_FALSE(a.folded.is_null());
+  EXPECT_EQ(a.folded["element"].get<std::size_t>(), element);
+  EXPECT_EQ(a.folded["time"].get<double>(), 0.5);
+  EXPECT_NEAR(a.folded["min_corner_J"].get<double>(), -0.5, 1e-12);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.folded["reference_centroid"][c].get<double>(), centre(c), 1e-12 * kSide);
+  EXPECT_NE(a.why.find("element " + std::to_string(element) + " "), std::string::npos) << a.why;
+  EXPECT_NE(a.why.find("folded through itself"), std::string::npos) << a.why;
 }
