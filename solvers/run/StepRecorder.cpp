@@ -122,6 +122,16 @@ void StepRecorder::recordContacts(double time, const std::vector<contact::Contac
   contacts_->append(time, rows);
 }
 
+std::vector<io::Field> StepRecorder::nodeFields(const std::vector<double> &uAll) const {
+  std::vector<io::Field> fields{{"displacement", 3, uAll}};
+  if (evaluator_.scene().contacts.empty()) return fields;
+  // Collective; as the Uzawa loop's last solve recorded them at this state.
+  assembly::ContactNodeFields contact = assembly::contactNodeFields(evaluator_);
+  fields.push_back({"contact_pressure", 1, std::move(contact.pressure)});
+  fields.push_back({"contact_gap", 1, std::move(contact.gap)});
+  return fields;
+}
+
 std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(double time, const assembly::Vector &u,
                                                                 const std::vector<double> &lambda, bool writeFields,
                                                                 const assembly::MuscleFields &muscle,
@@ -197,14 +207,8 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(do
       cells.push_back({"contractile_stretch_" + groups[g].name, 1, b});
     }
   }
-  std::vector<io::Field> nodeFields{{"displacement", 3, uAll}};
-  if (!evaluator_.scene().contacts.empty()) {
-    // Collective; as the Uzawa loop's last solve recorded them at this state.
-    assembly::ContactNodeFields contact = assembly::contactNodeFields(evaluator_);
-    nodeFields.push_back({"contact_pressure", 1, std::move(contact.pressure)});
-    nodeFields.push_back({"contact_gap", 1, std::move(contact.gap)});
-  }
-  if (root_) results_->writeStep(fieldsTime.value_or(time), nodeFields, cells);
+  const std::vector<io::Field> nodes = nodeFields(uAll);
+  if (root_) results_->writeStep(fieldsTime.value_or(time), nodes, cells);
   return reactions;
 }
 

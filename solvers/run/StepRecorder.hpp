@@ -73,6 +73,10 @@ public:
   void recordContacts(double time, const std::vector<contact::ContactMeasures> &contacts);
 
 private:
+  // The node fields of a step: the displacement (all nodes) and, with contacts, their pressure
+  // and gap (assembly::contactNodeFields). Collective.
+  std::vector<io::Field> nodeFields(const std::vector<double> &uAll) const;
+
   const assembly::ResultEvaluator evaluator_;
   bool root_, fields_;
   std::unique_ptr<io::ResultWriter> results_;
