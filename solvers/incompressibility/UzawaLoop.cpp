@@ -5,6 +5,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "assembly/ContactResponse.hpp"
 #include "assembly/RankAgreement.hpp"
 
 #include <stdexcept>
@@ -22,6 +23,7 @@ UzawaLoop::UzawaLoop(const assembly::ResultEvaluator &results, const NewtonSolve
   if (augmentation.tissues() != scene.tissues.size())
     throw std::invalid_argument("UzawaLoop: an augmentation of " + std::to_string(augmentation.tissues()) +
                                 " tissues for a scene of " + std::to_string(scene.tissues.size()));
+  for (const auto &contact : scene.contacts) augmentedContact_ = augmentedContact_ || contact.augmented();
   for (const auto e : results.assembler().layout().localElements)
     localTissue_.push_back(scene.elementTissue.empty() ? 0 : scene.elementTissue[static_cast<std::size_t>(e)]);
 }
@@ -123,7 +125,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
   };
   bool tight = !inexact_;
   std::vector<double> previousErrors; // after the last tight solve, per tissue
-  for (int k = 1; k <= (measuresPhysicalLaw() ? maxIterations_ : 1); ++k) {
+  for (int k = 1; k <= (measuresPhysicalLaw() || augmentedContact_ ? maxIterations_ : 1); ++k) {
     newton_.model().setMultipliers(lambda);
     NewtonResult n = tight ? newton_.solve(u, NewtonSolver::ToleranceRule(tightTolerance), onNewton)
                            : newton_.solveToResidual(u, NewtonSolver::ToleranceRule(looseTolerance), onNewton,
@@ -140,8 +142,13 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
 
     const assembly::ElementFields fields = results_.elementDilatations(u, lambda);
     result.dilatation = dilatationError(fields);
+    // The contacts' gaps at this solve (recorded in their states) and whether every augmented
+    // one is within its gap tolerance: the loop ends when both the volume and the contacts are.
+    result.contacts = assembly::updateContactStates(results_, u);
+    const bool gapMet = result.gapMet();
     if (onUzawa) onUzawa(k, result.newton.back(), result.dilatation);
-    if (!measuresPhysicalLaw() || result.dilatation.max < tolerance_) {
+    const bool volumeMet = !measuresPhysicalLaw() || result.dilatation.max < tolerance_;
+    if (volumeMet && gapMet) {
       if (tight) {
         result.converged = true;
         if (augmented_ && !mixed_) result.nextMultipliers = nextMultipliers(fields);
@@ -150,6 +157,13 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
       // The inexact solve meets the tolerance already (its multipliers were well predicted):
       // Newton goes on from its iterate to the full tolerance with them, no update between.
       tight = true;
+      continue;
+    }
+    // lambda_q <- max(0, lambda_q - eps g_q) at the recorded gaps, beside the volume update: each
+    // multiplier takes the pressure its point carried, so the next solve needs less penetration.
+    if (!gapMet && assembly::updateContactMultipliers(results_.scene(), result.contacts)) ++result.contactUpdates;
+    if (volumeMet) {
+      tight = true; // only the contacts move: the volume multipliers stay where they satisfy the law
       continue;
     }
     // A loose solve's error says nothing of the contraction; two tight ones in a row do.

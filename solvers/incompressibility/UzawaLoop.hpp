@@ -5,6 +5,9 @@
 // the material's physical volumetric law (theta -> 1 for nu = 0.5). With a moderate kappa_AL in
 // the tangent the Krylov solves stay cheap, while the multiplier carries the pressure that a pure
 // penalty would need kappa/mu >= 1e6 to produce. In "penalty" mode the loop performs one solve.
+// Contacts enforced by the augmented Lagrangian (doc/contact.md) are updated in the same loop:
+// after each converged solve their gaps are recorded, their multipliers updated where the largest
+// gap error exceeds the gap tolerance, and the loop ends when both tolerances are met.
 
 #include <functional>
 #include <vector>
@@ -70,6 +73,7 @@ private:
   const NewtonSolver &newton_;
   bool augmented_;
   bool mixed_;                // element pressures are Newton unknowns (MixedPressureState)
+  bool augmentedContact_ = false; // a contact is enforced by the augmented Lagrangian: its gap bounds the loop
   // Stops on the distance from the physical law, with room for more than one Newton solve
   // (augmented Lagrangian and mixed; a penalty makes one solve and reports |theta - 1|).
   bool measuresPhysicalLaw() const { return augmented_ || mixed_; }

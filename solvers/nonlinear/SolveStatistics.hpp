@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "contact/ContactMeasures.hpp"
+
 namespace glossa::solvers {
 
 struct NewtonResult {
@@ -27,7 +29,9 @@ struct DilatationError {
 };
 
 struct UzawaResult {
-  bool converged = false;     // Newton converged and (AL mode) the dilatation tolerance was met
+  // Newton converged, (AL mode) the dilatation tolerance was met and every augmented contact's
+  // gap tolerance too
+  bool converged = false;
   bool elementInverted = false;
   int solves = 0;             // Newton solves = Uzawa iterations
   int newtonIterations = 0;
@@ -38,6 +42,14 @@ struct UzawaResult {
   // Augmented Lagrangian, converged: the multipliers the loop's next update would set, beta p_e
   // (the next step's prediction starts from them: MultiplierPredictor).
   std::vector<double> nextMultipliers;
+  // Per scene contact, at the last converged solve (its gaps recorded in the contact's state).
+  std::vector<contact::ContactMeasures> contacts;
+  int contactUpdates = 0; // Uzawa updates of contact multipliers in this step
+  bool gapMet() const {
+    for (const auto &c : contacts)
+      if (!c.gapMet()) return false;
+    return true;
+  }
 };
 
 } // namespace glossa::solvers

@@ -1,5 +1,7 @@
 #include "solvers/run/CheckpointContents.hpp"
 
+#include <limits>
+
 #include "io/output/CheckpointError.hpp"
 
 namespace glossa::solvers {
@@ -43,6 +45,16 @@ model::MuscleHistory::Snapshot muscleSnapshotFromJson(const nlohmann::json &j) {
   h.time = j.at("time").get<double>();
   h.dt = j.at("dt").get<double>();
   return h;
+}
+
+nlohmann::json toJson(const contact::ContactState::Snapshot &state) { return {{"multipliers", state.multipliers}}; }
+
+contact::ContactState::Snapshot contactSnapshotFromJson(const nlohmann::json &j) {
+  contact::ContactState::Snapshot state;
+  state.multipliers = j.at("multipliers").get<std::vector<double>>();
+  state.gap.assign(state.multipliers.size(), std::numeric_limits<double>::infinity());
+  state.pressure.assign(state.multipliers.size(), 0.0);
+  return state;
 }
 
 std::vector<double> ownedValues(const assembly::Vector &v) {

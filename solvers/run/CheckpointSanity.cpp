@@ -184,6 +184,15 @@ void checkPartValues(const json &part, double time, const CheckpointShape &shape
   const double t = number(member(muscle, "muscle", "time"), "muscle/time", 0.0, HUGE_VAL, false, "");
   if (t != time) refuse("muscle/time is " + text(t) + " s, the checkpoint's time " + text(time) + " s");
   number(member(muscle, "muscle", "dt"), "muscle/dt", 0.0, HUGE_VAL, true, "a step size");
+  if (shape.contactPoints.empty() && !part.contains("contact")) return;
+  const json &contacts = member(part, "part", "contact");
+  if (!contacts.is_array() || contacts.size() != shape.contactPoints.size())
+    refuse("contact is not one entry per contact (" + std::to_string(shape.contactPoints.size()) + ")");
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const std::string name = "contact[" + std::to_string(c) + "]";
+    values(member(contacts[c], name, "multipliers"), name + "/multipliers", shape.contactPoints[c], 0.0, HUGE_VAL,
+           "a contact pressure");
+  }
 }
 
 } // namespace glossa::solvers

@@ -5,7 +5,7 @@
 // partition. The rules are what the run's parts guarantee when they save: a time in [0, end
 // time], step sizes finite, positive and within the deck's bounds, counts non-negative, every
 // state value finite, the muscle history's activations and inputs in [0, 1] and its contractile
-// stretches positive, sizes that fit this rank's share of the mesh, and CSV lengths that the
+// stretches positive, the contact multipliers non-negative, sizes that fit this rank's share of the mesh, and CSV lengths that the
 // files in the output directory still have. No Trilinos here.
 
 #include <cstddef>
@@ -28,6 +28,7 @@ struct CheckpointShape {
   std::size_t groups = 0;                      // muscle groups
   std::size_t lambdaC = 0;                     // contractile stretches on this rank
   std::vector<std::size_t> externalLambdaC;    // per external muscle
+  std::vector<std::size_t> contactPoints;      // per contact: its multipliers (4 per face)
   std::filesystem::path outputDirectory;       // where the CSV files it records the lengths of are
 };
 

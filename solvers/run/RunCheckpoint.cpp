@@ -8,6 +8,7 @@
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "model/MuscleHistory.hpp"
+#include "model/Scene.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 
 #include "io/output/CheckpointError.hpp"
@@ -148,6 +149,8 @@ CheckpointShape checkpointShape(const RunParts &run) {
   shape.groups = history.alpha.size();
   shape.lambdaC = history.lambdaC.size();
   for (const auto &external : history.externalLambdaC) shape.externalLambdaC.push_back(external.size());
+  for (const auto &contact : run.scene->contacts)
+    shape.contactPoints.push_back(contact.state ? contact.state->snapshot().multipliers.size() : 0);
   return shape;
 }
 
@@ -155,6 +158,12 @@ void writeCheckpoint(RunParts &run) {
   nlohmann::json part, state;
   run.stepper->save(part, state);
   part["muscle"] = toJson(run.history->snapshot());
+  if (!run.scene->contacts.empty()) {
+    nlohmann::json contacts = nlohmann::json::array();
+    for (const auto &contact : run.scene->contacts)
+      contacts.push_back(toJson(contact.state ? contact.state->snapshot() : contact::ContactState::Snapshot{}));
+    part["contact"] = contacts;
+  }
   if (run.root) {
     state["deck"] = run.config.listing;
     state["ranks"] = run.comm->getSize();
@@ -179,6 +188,9 @@ void restoreRun(RunParts &run, const Restart &restart) {
   try {
     run.stepper->restore(restart.part, restart.run);
     run.history->restore(muscleSnapshotFromJson(restart.part.at("muscle")));
+    for (std::size_t c = 0; c < run.scene->contacts.size(); ++c)
+      if (run.scene->contacts[c].state)
+        run.scene->contacts[c].state->restore(contactSnapshotFromJson(restart.part.at("contact").at(c)));
     if (run.watch) run.watch->restore(restart.run);
     run.uzawa->restorePenaltyRatios(restart.run.at("penalty_ratios").get<std::vector<double>>());
     if (run.controlled) run.controlled->restore(restart.run);

@@ -181,8 +181,15 @@ void RunReport::stepLine(int step, double t, double endTime, double dt, const Uz
   const double elapsed = since(stepsStart_);
   const long left = t < endTime ? std::lround(std::ceil((endTime - t) / dt - 1e-9)) : 0;
   const double remaining = t > stepsStartTime_ ? elapsed * (endTime - t) / (t - stepsStartTime_) : 0.0;
-  std::printf("step %d/%ld  t = %.6g of %.6g s  newton %d  %s  uzawa %d  %s%s  [%s elapsed, about %s left]\n", step,
-              step + left, t, endTime, r.newtonIterations, linear, r.solves, volume, controlLine.c_str(),
+  // The contact points carrying pressure, over all contacts (none: no contact in the deck).
+  char contact[64] = "";
+  if (!r.contacts.empty()) {
+    long active = 0;
+    for (const auto &c : r.contacts) active += c.activePoints;
+    std::snprintf(contact, sizeof contact, "  contact %ld points", active);
+  }
+  std::printf("step %d/%ld  t = %.6g of %.6g s  newton %d  %s  uzawa %d  %s%s%s  [%s elapsed, about %s left]\n", step,
+              step + left, t, endTime, r.newtonIterations, linear, r.solves, volume, contact, controlLine.c_str(),
               readableDuration(elapsed).c_str(), readableDuration(remaining).c_str());
 }
 

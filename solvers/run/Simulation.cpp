@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "assembly/Assembler.hpp"
+#include "assembly/ContactResponse.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/ResultEvaluator.hpp"
 #include "model/Scene.hpp"
@@ -26,7 +27,11 @@ Simulation::Simulation(const io::Deck &deck, const RunConfiguration &config,
     inputs.push_back(run.history->input(static_cast<int>(g), 0.0));
   if (!run.restart)
     run.report->recordingOutputFailure([&] {
+      // The contacts at the reference state (what touches before any load), as the other CSVs'
+      // t = 0 rows; recorded first, for the fields.
+      const auto contacts = assembly::updateContactStates(assembly::ResultEvaluator(*run.assembler), state.u);
       run.recorder->record(0.0, state.u, state.lambda, true, initial, inputs);
+      run.recorder->recordContacts(0.0, contacts);
       run.report->write(assemblyCounters(*run.model));
     });
   if (run.controlled) run.controlled->setCommittedStretch(initial.groupMeanStretch);
@@ -61,6 +66,8 @@ void Simulation::commit() {
   record(trial);
   if (run.controlled) run.controlled->committed(trial);
   run.history->commit();
+  for (const auto &contact : run.scene->contacts)
+    if (contact.state) contact.state->commit();
   run.report->stepLine(run.stepper->stepNumber(), t, run.stepper->steps().endTime(), trial.dt, trial.attempt.uzawa,
                        onPath_, run.controlled ? run.controlled->controlLine() : std::string());
   run.report->write(assemblyCounters(*run.model));
@@ -74,6 +81,7 @@ void Simulation::record(const StepTrial &trial) {
   const bool fields = run.stepper->finished() || run.stepper->stepNumber() % run.config.output.every == 0;
   const auto reactions = run.recorder->record(run.stepper->time(), state.u, state.lambda, fields, trial.attempt.muscle,
                                               run.history->trialInput(), fieldsStamp());
+  run.recorder->recordContacts(run.stepper->time(), trial.attempt.uzawa.contacts);
   nlohmann::json step, forces = nlohmann::json::object();
   for (const auto &[name, row] : reactions) forces[name] = std::vector<double>(row.begin(), row.begin() + 3);
   step["reactions"] = forces;
@@ -84,9 +92,37 @@ void Simulation::record(const StepTrial &trial) {
                            {"mean_contractile_stretch", v[4]}};
     step["activation"] = activation;
   }
+  recordContacts(trial.attempt.uzawa, step);
   if (trial.attempt.uzawa.augmentationRaises > 0) step["penalty_ratios"] = run.uzawa->penaltyRatios();
   if (run.controlled) step["control"] = run.controlled->record(trial, run.stepper->time());
   run.report->addStep(trial, run.stepper->time(), onPath_, run.model->assemblySeconds(), step);
+}
+
+void Simulation::recordContacts(const UzawaResult &uzawa, nlohmann::json &step) {
+  RunParts &run = *run_;
+  if (uzawa.contacts.empty()) return;
+  nlohmann::json contacts = nlohmann::json::object();
+  nlohmann::json &overall = run.report->doc()["contact"];
+  if (!overall.is_object()) overall = nlohmann::json::object(); // the first step
+  bool met = overall.value("gap_tolerance_met", true);
+  double largest = overall.value("largest_gap_error", 0.0);
+  for (std::size_t c = 0; c < uzawa.contacts.size(); ++c) {
+    const contact::ContactMeasures &m = uzawa.contacts[c];
+    const model::RigidContact &contact = run.scene->contacts[c];
+    contacts[contact.name] = {{"area", m.area}, {"normal_force", m.normalForce},
+                              {"largest_penetration", m.largestPenetration}, {"active_points", m.activePoints},
+                              {"largest_gap_error", m.largestGapError}, {"gap_met", m.gapMet()},
+                              {"enforcement", contact.augmented() ? "augmented Lagrangian" : "penalty"}};
+    if (contact.augmented()) {
+      met = met && m.gapMet();
+      largest = std::max(largest, m.largestGapError);
+    }
+  }
+  step["contacts"] = contacts;
+  step["contact_updates"] = uzawa.contactUpdates;
+  // Over the run: every step's augmented contacts within their gap tolerance, and the largest
+  // gap error any of them ended a step with.
+  overall = {{"gap_tolerance_met", met}, {"largest_gap_error", largest}};
 }
 
 bool Simulation::rollBack() {

@@ -42,6 +42,9 @@ private:
   void commit();   // the converged trial becomes the committed state and is recorded
   bool rollBack(); // after a failure: false if the run stops here
   void record(const StepTrial &trial);
+  // The contacts of a converged step into its summary entry, and the run's gap verdict
+  // (summary.json: contact).
+  void recordContacts(const UzawaResult &uzawa, nlohmann::json &step);
   void followPath(); // by arc length from the committed state to the path's end
   void finish();
   // The fields' time in results.xdmf on the path, where t may fall: the path's start plus the

@@ -1,5 +1,6 @@
 #include "solvers/run/StepRecorder.hpp"
 
+#include "assembly/ContactResponse.hpp"
 #include "io/output/OutputError.hpp"
 #include "materials/ActivationDynamics.hpp"
 
@@ -25,6 +26,12 @@ StepRecorder::StepRecorder(const assembly::ResultEvaluator &results, const std::
   if (!volumeSets_.empty())
     volumes_ = std::make_unique<io::KeyedCsvWriter>(dir / "volumes.csv", "face_set",
                                                     std::vector<std::string>{"volume [m^3]"}, resumeAt("volumes.csv"));
+  if (!results.scene().contacts.empty())
+    contacts_ = std::make_unique<io::KeyedCsvWriter>(
+        dir / "contact.csv", "contact",
+        std::vector<std::string>{"area [m^2]", "normal_force [N]", "largest_penetration [m]", "active_points [-]",
+                                 "largest_gap_error [m]"},
+        resumeAt("contact.csv"));
   const auto &mesh = results.scene().mesh;
   if (fields_ && resume)
     results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.numNodes(), mesh.numElements(), resume->fieldSteps);
@@ -65,7 +72,7 @@ OutputMark StepRecorder::mark() const {
   OutputMark m;
   if (!root_) return m;
   m.csvBytes["traces.csv"] = traces_->bytes();
-  for (const auto *csv : {resultants_.get(), volumes_.get(), reactions_.get(), activation_.get()})
+  for (const auto *csv : {resultants_.get(), volumes_.get(), reactions_.get(), activation_.get(), contacts_.get()})
     if (csv) m.csvBytes[csv->file().filename().string()] = csv->bytes();
   if (results_) m.fieldSteps = results_->steps();
   return m;
@@ -101,6 +108,28 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::reactionR
     rows.push_back({evaluator_.scene().dirichlet[b].name, {f.x(), f.y(), f.z(), reactions[b].power}});
   }
   return rows;
+}
+
+void StepRecorder::recordContacts(double time, const std::vector<contact::ContactMeasures> &contacts) {
+  const auto &scene = evaluator_.scene();
+  if (!root_ || !contacts_ || contacts.size() != scene.contacts.size()) return;
+  std::vector<std::pair<std::string, std::vector<double>>> rows;
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const contact::ContactMeasures &m = contacts[c];
+    rows.push_back({scene.contacts[c].name,
+                    {m.area, m.normalForce, m.largestPenetration, static_cast<double>(m.activePoints), m.largestGapError}});
+  }
+  contacts_->append(time, rows);
+}
+
+std::vector<io::Field> StepRecorder::nodeFields(const std::vector<double> &uAll) const {
+  std::vector<io::Field> fields{{"displacement", 3, uAll}};
+  if (evaluator_.scene().contacts.empty()) return fields;
+  // Collective; as the Uzawa loop's last solve recorded them at this state.
+  assembly::ContactNodeFields contact = assembly::contactNodeFields(evaluator_);
+  fields.push_back({"contact_pressure", 1, std::move(contact.pressure)});
+  fields.push_back({"contact_gap", 1, std::move(contact.gap)});
+  return fields;
 }
 
 std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(double time, const assembly::Vector &u,
@@ -178,7 +207,8 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(do
       cells.push_back({"contractile_stretch_" + groups[g].name, 1, b});
     }
   }
-  if (root_) results_->writeStep(fieldsTime.value_or(time), {{"displacement", 3, uAll}}, cells);
+  const std::vector<io::Field> nodes = nodeFields(uAll);
+  if (root_) results_->writeStep(fieldsTime.value_or(time), nodes, cells);
   return reactions;
 }
 

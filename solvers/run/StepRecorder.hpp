@@ -1,7 +1,7 @@
 #pragma once
 // Writes what a run records of every converged step: the traced points (traces.csv), the
 // reactions of the Dirichlet conditions (reactions.csv), the muscle groups' input, activation,
-// FFMR and mean fibre and contractile stretch (activation.csv), and, every `Output/every` steps, the fields for
+// FFMR and mean fibre and contractile stretch (activation.csv), the contacts (contact.csv), and, every `Output/every` steps, the fields for
 // ParaView (results.h5 and results_steps/ + XDMF: displacement, element pressure, dilatation, J, Cauchy stress and,
 // with muscles, fibre stress, directions, stretches and muscle sets). Every rank gathers; the
 // writer rank writes.
@@ -18,6 +18,7 @@
 
 #include "assembly/MuscleResponse.hpp"
 #include "assembly/ResultEvaluator.hpp"
+#include "contact/ContactMeasures.hpp"
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "io/output/TraceWriter.hpp"
@@ -67,12 +68,20 @@ public:
                                                                   const std::vector<double> &input,
                                                                   std::optional<double> fieldsTime = std::nullopt);
 
+  // One row per contact in contact.csv: area, normal force, largest penetration, active points
+  // and largest gap error of a converged step (the Uzawa loop's measures; writer rank only).
+  void recordContacts(double time, const std::vector<contact::ContactMeasures> &contacts);
+
 private:
+  // The node fields of a step: the displacement (all nodes) and, with contacts, their pressure
+  // and gap (assembly::contactNodeFields). Collective.
+  std::vector<io::Field> nodeFields(const std::vector<double> &uAll) const;
+
   const assembly::ResultEvaluator evaluator_;
   bool root_, fields_;
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;
-  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_, resultants_, volumes_;
+  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_, resultants_, volumes_, contacts_;
   std::vector<std::string> resultantSets_, volumeSets_;
   std::map<std::string, std::vector<double>> fibreDirections_; // rank 0, per family
   std::vector<std::pair<std::string, std::vector<double>>> groupMembership_; // per group, per element

@@ -31,6 +31,7 @@ std::string failureReason(const StepAttempt &a) {
          : r.elementInverted ? "an element inverted (J <= 0) or a muscle point law failed"
          : !last.failure.empty() ? last.failure.substr(0, last.failure.find('\n'))
          : !last.converged ? "Newton did not converge"
+         : !r.gapMet()     ? "Uzawa did not reach a contact's gap tolerance"
                            : "Uzawa did not reach the dilatation tolerance";
 }
 } // namespace

@@ -152,20 +152,24 @@ private:
   const model::DirichletCondition &support_;
 };
 
-// Frictionless contact of a face set with a rigid obstacle by the penalty method
-// (contact/FaceContact): a follower load, the obstacle's push on the faces that touch it.
+// Frictionless contact of a face set with a rigid obstacle (contact/FaceContact): a follower
+// load, the obstacle's push on the faces that touch it, with the state's trial multipliers under
+// the augmented Lagrangian (none for the penalty method).
 class RigidContactContribution final : public LoadContribution {
 public:
   explicit RigidContactContribution(const model::RigidContact &contact) : contact_(contact) {}
   Kind kind() const override { return Kind::follower; }
   bool onSurface() const override { return true; }
   bool addTo(const LoadTarget &target, double) const override {
-    const contact::FaceMultipliers none{0.0, 0.0, 0.0, 0.0}; // the penalty method: no multipliers
-    for (const auto &face : contact_.faces) {
+    const contact::FaceMultipliers none{0.0, 0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i < contact_.faces.size(); ++i) {
+      const auto &face = contact_.faces[i];
       if (target.layout.elementOwner[face.element] != target.layout.rank) continue;
       const FaceAtTarget f = faceAt(target, face);
+      const contact::FaceMultipliers lambda =
+          contact_.augmented() && contact_.state ? contact_.state->trialMultipliers(i) : none;
       loads::FaceTangent Kf; // filled, and read, only with a tangent
-      const loads::FaceForces ff = contact::faceContactForces(*contact_.obstacle, f.X, f.u, none, contact_.settings,
+      const loads::FaceForces ff = contact::faceContactForces(*contact_.obstacle, f.X, f.u, lambda, contact_.settings,
                                                               nullptr, target.K ? &Kf : nullptr);
       target.subtract(f.nodes.data(), 4, ff.data(), target.K ? Kf.data() : nullptr);
     }

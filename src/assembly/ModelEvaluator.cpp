@@ -114,6 +114,9 @@ void ModelEvaluator::beginStep(double time, double dt, const std::vector<double>
   TEUCHOS_TEST_FOR_EXCEPTION(!history_ && !inputs.empty(), std::logic_error, "neural inputs without a muscle history");
   setTime(time);
   if (history_) history_->beginStep(time, dt, inputs);
+  // As lambda_c: a step's solves start from the committed contact multipliers.
+  for (const auto &contact : assembler_->scene().contacts)
+    if (contact.state) contact.state->rollBack();
 }
 
 MEB::InArgs<double> ModelEvaluator::getNominalValues() const {

@@ -37,15 +37,16 @@ loads::FaceForces faceContactForces(const Obstacle &obstacle, const loads::FaceN
     state.gap = cp ? cp->gap : std::numeric_limits<double>::infinity();
     const double trial = cp ? lambda[q] - eps * cp->gap : -1.0;
     state.pressure = std::max(0.0, trial);
+    const Eigen::Vector3d xs = x.transpose() * shape.dNds, xt = x.transpose() * shape.dNdt;
+    const Eigen::Vector3d area = xs.cross(xt);
+    const double j = area.norm(), t = state.pressure;
+    state.area = j; // both rules weigh each point by 1
     if (points) (*points)[q] = state;
     // At the kink (trial = 0: touching at zero gap, no multiplier) the point carries nothing
     // but gives the tangent of the contact side, so that a body resting on an obstacle has its
     // stiffness from the first Newton iteration rather than a singular direction.
     if (trial < 0.0) continue;
 
-    const Eigen::Vector3d xs = x.transpose() * shape.dNds, xt = x.transpose() * shape.dNdt;
-    const Eigen::Vector3d area = xs.cross(xt);
-    const double j = area.norm(), t = state.pressure;
     const Eigen::Vector3d &n = cp->normal;
     // Both rules weigh each point by 1.
     for (int a = 0; a < 4; ++a) f.segment<3>(3 * a) += t * j * shape.N(a) * n;

@@ -47,6 +47,7 @@ struct ContactPointState {
   // g_q [m]; +infinity when no obstacle lies within the search radius (never active then).
   double gap = 0;
   double pressure = 0;  // t_q [Pa], >= 0
+  double area = 0;      // w_q j_q [m^2]: the point's share of the deformed face (output: area, force)
   bool active() const { return pressure > 0; }
 };
 

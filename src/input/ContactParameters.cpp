@@ -105,6 +105,18 @@ std::shared_ptr<const contact::Obstacle> buildObstacle(const io::Deck &deck, con
     throw io::DeckError(deck.where({"Contact", name, vectorName}) + ": " + e.what());
   }
 }
+// The mean reference length of the faces' edges (each face's four, shared edges counted per
+// face): the element size h of the default gap tolerance, 1e-3 h, a penetration far below what
+// the elements resolve.
+double meanEdgeLength(const mesh::HexMesh &m, const std::vector<mesh::ElementFace> &faces) {
+  double sum = 0.0;
+  for (const auto &face : faces)
+    for (int k = 0; k < 4; ++k) {
+      const auto &local = mesh::kHexFaceNodes[face.localFace];
+      sum += (m.nodes[m.elements[face.element][local[k]]] - m.nodes[m.elements[face.element][local[(k + 1) % 4]]]).norm();
+    }
+  return faces.empty() ? 0.0 : sum / (4.0 * static_cast<double>(faces.size()));
+}
 }  // namespace
 
 ParameterList contactParameters() {
@@ -136,6 +148,14 @@ ParameterList contactParameters() {
                     io::Range::nonNegative());
   io::declareDouble(p, "search radius", 1.0, "m",
                     "contact points farther than this from the obstacle's surface, on either side, are not tested", io::Range::positive());
+  io::declareString(p, "enforcement", "augmented Lagrangian",
+                    "penalty: a point pressed by p penetrates p / eps; augmented Lagrangian: multipliers updated "
+                    "in the Uzawa loop until the largest gap error is within the gap tolerance",
+                    {"penalty", "augmented Lagrangian"});
+  io::declareDouble(p, "gap tolerance", 0.0, "m",
+                    "augmented Lagrangian: the largest gap error |g| of a point carrying pressure that ends the "
+                    "Uzawa loop; 0: 1e-3 of the face set's mean edge length",
+                    io::Range::nonNegative());
   io::declareString(p, "contact points", "gauss",
                     "where contact is tested on each face: its 2x2 Gauss points (consistent forces, the patch "
                     "test on any mesh) or its nodes (doc/contact.md)",
@@ -159,6 +179,11 @@ void buildContacts(const io::Deck &deck, const mesh::HexMesh &m, model::Scene &s
     contact.settings.searchRadius = c.get<double>("search radius");
     contact.settings.rule =
         c.get<std::string>("contact points") == "nodal" ? contact::ContactQuadrature::nodal : contact::ContactQuadrature::gauss;
+    contact.enforcement = c.get<std::string>("enforcement") == "penalty" ? model::ContactEnforcement::penalty
+                                                                          : model::ContactEnforcement::augmentedLagrangian;
+    contact.gapTolerance = c.get<double>("gap tolerance");
+    if (!(contact.gapTolerance > 0.0)) contact.gapTolerance = 1e-3 * meanEdgeLength(m, contact.faces);
+    contact.state = std::make_shared<contact::ContactState>(contact.faces.size());
     checkStartingOverlap(deck, m, contact);
     scene.contacts.push_back(std::move(contact));
     // The contact tangent's area term is not symmetric: GMRES.

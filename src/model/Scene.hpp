@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/ContactState.hpp"
 #include "contact/FaceContact.hpp"
 #include "contact/Obstacle.hpp"
 #include "materials/IsochoricMaterial.hpp"
@@ -78,13 +79,24 @@ struct FollowerPressureLoad {
   loads::PressureField pressure = loads::PressureField::uniform(0.0);
 };
 
-// Frictionless contact of a face set with a rigid obstacle (contact/FaceContact, doc/contact.md),
-// by the penalty method.
+// How a contact's condition g >= 0 is enforced (doc/contact.md, "Penalty and augmented Lagrangian").
+enum class ContactEnforcement { penalty, augmentedLagrangian };
+
+// Frictionless contact of a face set with a rigid obstacle (contact/FaceContact, doc/contact.md).
 struct RigidContact {
   std::string name;
   std::vector<mesh::ElementFace> faces;
   std::shared_ptr<const contact::Obstacle> obstacle;
   contact::ContactSettings settings;
+  ContactEnforcement enforcement = ContactEnforcement::augmentedLagrangian;
+  double gapTolerance = 0; // [m]: the Uzawa loop's bound on the largest gap error (augmented Lagrangian)
+  // Per face of `faces` (index as there): the multipliers, gaps and pressures. Shared and mutable
+  // through a const scene because it is the run's state, not the model's: the assembly reads the
+  // trial multipliers, the Uzawa loop records the converged gaps and updates them, the stepper
+  // commits, rolls back and checkpoints them, as the muscle history. Each rank fills the entries
+  // of the faces of its own elements.
+  std::shared_ptr<contact::ContactState> state;
+  bool augmented() const { return enforcement == ContactEnforcement::augmentedLagrangian; }
 };
 
 // How elements are shared out among ranks: the built-in coordinate bisection (mesh/Partition) or

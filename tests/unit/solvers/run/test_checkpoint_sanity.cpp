@@ -198,3 +198,20 @@ TEST_F(CheckpointSanity, TimesThatDisagreeAcrossTheCheckpointAreRefused) {
 }
 
 } // namespace
+
+// The contacts' multipliers: one entry per contact, 4 per contact face, each a contact pressure
+// (finite, >= 0).
+TEST_F(CheckpointSanity, ContactMultipliersOfAnotherMeshOrNegativeAreRefused) {
+  shape.contactPoints = {8};
+  EXPECT_REFUSED("part has no 'contact'");
+  part["contact"] = json::array({{{"multipliers", {0.0, 0.0, 1e3, 1e3, 0.0, 0.0, 1e3, 1e3}}}});
+  EXPECT_EQ(refusal(), "");
+  part["contact"][0]["multipliers"][2] = -1.0;
+  EXPECT_REFUSED("contact[0]/multipliers[2] = -1; it must be finite and in [0, inf] (a contact pressure)");
+  part["contact"][0]["multipliers"][2] = kNaN;
+  EXPECT_REFUSED("contact[0]/multipliers[2] = nan");
+  part["contact"][0]["multipliers"] = {0.0, 0.0, 1e3, 1e3};
+  EXPECT_REFUSED("contact[0]/multipliers has 4 values, this run has 8 here");
+  part["contact"] = json::array();
+  EXPECT_REFUSED("contact is not one entry per contact (1)");
+}
