@@ -15,13 +15,16 @@ namespace {
 StepTrial &pointTrial(RunParts &run, const ArcLengthPoint &point, const assembly::Vector &u) {
   StepTrial &trial = run.stepper->beginTrial(point.time, run.model->assemblySeconds());
   StepAttempt &a = trial.attempt;
+  // LOCA's point carries the Krylov error at the constrained dofs (the residual ignores them,
+  // Assembler::importPrescribed): the recorded state holds the prescribed values exactly.
   trial.state.u.assign(u);
+  run.assembler->applyDirichlet(trial.state.u, point.time);
   a.uzawa.converged = true;
   a.uzawa.solves = 1;
   a.uzawa.newtonIterations = point.newtonIterations;
   a.uzawa.dilatation =
       run.uzawa->dilatationError(
-          assembly::ResultEvaluator(*run.assembler).elementDilatations(u, run.stepper->committed().lambda));
+          assembly::ResultEvaluator(*run.assembler).elementDilatations(trial.state.u, run.stepper->committed().lambda));
   a.ok = true;
   run.solver->measureCorners(trial.state, point.time, a);
   if (a.ok) run.solver->refuseInsideOut(trial.state, a);
@@ -54,7 +57,7 @@ void followArcLength(RunParts &run, const std::function<void()> &commit) {
       doc["load_maximum"] = {{"time", highest}, {"step", run.stepper->stepNumber() - 1}};
       if (run.talk) std::printf("  note: the path passed a load maximum near t = %.6g and follows the falling branch\n", highest);
     }
-    const double largest = largestMotion(assembly::ResultEvaluator(*run.assembler), u).norm;
+    const double largest = largestMotion(assembly::ResultEvaluator(*run.assembler), run.stepper->committed().u).norm;
     if (run.report->stopRequested(run.stepper->stepNumber(), run.stepper->time())) return false;
     return !(settings.stopAtDisplacement > 0.0 && largest >= settings.stopAtDisplacement);
   };

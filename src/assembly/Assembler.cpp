@@ -33,6 +33,18 @@ Assembler::Assembler(const model::Scene &scene, DofLayout layout, const model::M
       for (mesh::NodeId n : bc.nodes)
         for (int c = 0; c < 3; ++c)
           if (bc.fixed[c]) constrained_[3 * n + c] = 1;
+  // The constrained dofs this rank sees (owned and ghosted), in the conditions' order so that a
+  // later condition on the same dof wins, as in applyDirichlet.
+  for (std::size_t k = 0; k < scene_.dirichlet.size(); ++k) {
+    const auto &bc = scene_.dirichlet[k];
+    if (bc.elastic()) continue;
+    for (mesh::NodeId n : bc.nodes)
+      for (int c = 0; c < 3; ++c) {
+        const LO lid = bc.fixed[c] ? overlapMap->getLocalElement(layout_.dof(n, c))
+                                   : Teuchos::OrdinalTraits<LO>::invalid();
+        if (lid != Teuchos::OrdinalTraits<LO>::invalid()) prescribedDofs_.push_back({lid, k, n, c});
+      }
+  }
 
   loads_ = loadContributions(scene_, history_, &externalMuscles_);
 
@@ -147,6 +159,13 @@ void Assembler::importToOverlap(const Vector &u, Vector &overlap) const {
   overlap.doImport(u, *importer_, Tpetra::INSERT);
 }
 
+void Assembler::importPrescribed(const Vector &u, double time, Vector &overlap) const {
+  importToOverlap(u, overlap);
+  auto data = overlap.getDataNonConst(0);
+  for (const PrescribedDof &d : prescribedDofs_)
+    data[d.lid] = scene_.dirichlet[d.condition].prescribed(d.component, scene_.mesh.nodes[d.node], time);
+}
+
 fem::NodeMatrix Assembler::elementDisplacement(std::size_t i, const Teuchos::ArrayRCP<const double> &uData) const {
   fem::NodeMatrix ue;
   for (int a = 0; a < 8; ++a)
@@ -199,7 +218,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
   const mesh::HexMesh &mesh = scene_.mesh;
   const bool trialPoint = point == BasePoint::trial || K == nullptr;
   Vector uOverlap(layout_.overlapMap()), fOverlap(layout_.overlapMap());
-  importToOverlap(u, uOverlap);
+  importPrescribed(u, time, uOverlap);
   auto uData = uOverlap.getData(0);
 
   double *values = nullptr;
@@ -264,7 +283,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
 
 Vector Assembler::loadResidual(const Vector &u, double time) const {
   Vector uOverlap(layout_.overlapMap()), fOverlap(layout_.overlapMap()), f(layout_.ownedMap());
-  importToOverlap(u, uOverlap);
+  importPrescribed(u, time, uOverlap);
   auto uData = uOverlap.getData(0);
   {
     auto fData = fOverlap.getDataNonConst(0);

@@ -123,6 +123,12 @@ private:
 
   // u with the ghosts of the local elements (the overlap map). Collective.
   void importToOverlap(const Vector &u, Vector &overlap) const;
+  // The same with the prescribed values at time t at every constrained dof, whatever u holds there:
+  // the residual and tangent depend on the free dofs alone. An iterative solve meets the constrained
+  // rows of a Newton update (diagonal, zero right-hand side) only to its tolerance, and on several
+  // ranks the preconditioner's error there is ~1e-9 m; assembled at such an iterate, the free dofs
+  // converged to the equilibrium of the drifted supports. Collective.
+  void importPrescribed(const Vector &u, double time, Vector &overlap) const;
   // Local element i's nodal displacements from the overlap vector's data.
   fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const;
   // A load target at the overlap displacement.
@@ -148,6 +154,13 @@ private:
   Teuchos::RCP<Export> exporter_;
   Teuchos::RCP<FEGraph> graph_;
   std::vector<char> constrained_;                       // per mesh dof 3*node+c
+  struct PrescribedDof {
+    LO lid;                // in the overlap map
+    std::size_t condition; // in scene_.dirichlet
+    mesh::NodeId node;
+    int component;
+  };
+  std::vector<PrescribedDof> prescribedDofs_; // the constrained dofs of the overlap map
   std::vector<std::array<LO, 24>> elementLids_;         // overlap local ids per local element
   std::vector<std::array<GO, 24>> elementGids_;
   std::vector<int> nodeMultiplicity_;                    // elements sharing each mesh node
