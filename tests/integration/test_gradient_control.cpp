@@ -171,7 +171,10 @@ TEST(ModelParameters, InputDerivativeResponseAndMultipliers) {
       EXPECT_EQ(dv[i], all[3 * nodes[k] + c]);
     }
 
-  // Multipliers as p1: the same residual as the nominal ones; zero ones differ.
+  // Multipliers as p1: the same residual as the nominal ones, to the local contractile solves'
+  // resolution as above (they start from the roots the last evaluation left); zero ones differ by
+  // far more. The displacement above is not zero at the fixed dofs, which the assembly replaces by
+  // their prescribed values, so the warm-started local solves do not land bit for bit.
   auto given = Thyra::createMember(model.get_p_space(assembly::ModelEvaluator::kMultipliers));
   Thyra::assign(given.ptr(), *in.get_p(assembly::ModelEvaluator::kMultipliers));
   MEB::InArgs<double> withP1 = model.getNominalValues();
@@ -179,9 +182,9 @@ TEST(ModelParameters, InputDerivativeResponseAndMultipliers) {
   withP1.set_p(assembly::ModelEvaluator::kMultipliers, given);
   auto same = residual(withP1);
   same->update(-1.0, *f0, 1.0);
-  EXPECT_EQ(same->normInf(), 0.0);
+  EXPECT_LT(same->norm2(), 1e-12 * f0->norm2());
   Thyra::assign(given.ptr(), 0.0);
   auto other = residual(withP1);
   other->update(-1.0, *f0, 1.0);
-  EXPECT_GT(other->normInf(), 0.0);
+  EXPECT_GT(other->norm2(), 1e-3 * f0->norm2());
 }

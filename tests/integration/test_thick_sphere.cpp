@@ -76,7 +76,10 @@ const std::vector<std::string> kCoarseSphere = {"Mesh/Thick sphere/radial cells=
 
 double coarseArcLengthMaximum() {
   static const double tMax = [] {
-    const auto output = test::scratchDirectory("thick_sphere_coarse_arc_length");
+    // One directory per test: ctest runs the tests that call this as separate processes at once,
+    // and a second run into a locked output directory is refused.
+    const auto output = test::scratchDirectory(std::string("thick_sphere_coarse_arc_length_") +
+                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
     const auto s = test::runDeck(test::inputPath("verification/thick_sphere_arc_length.xml"), kCoarseSphere, output);
     EXPECT_TRUE(s.at("converged").get<bool>()) << s.value("failure", "");
     std::vector<std::pair<double, double>> path; // (lambda_a, t)
