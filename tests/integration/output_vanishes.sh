@@ -8,7 +8,9 @@ rm -rf "$out"
 "$@" >"$out.stdout" 2>"$out.stderr" &
 pid=$!
 for _ in $(seq 1 600); do [ -e "$out/summary.json" ] && break; sleep 0.1; done
-rm -rf "$out"
+# The run keeps writing while rm walks the tree: a step file written into results_steps after rm
+# emptied it leaves the directory standing ("Directory not empty"). Delete until it is gone.
+for _ in $(seq 1 100); do rm -rf "$out" 2>/dev/null; [ -e "$out" ] || break; done
 for _ in $(seq 1 300); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 if kill -0 $pid 2>/dev/null; then echo "still running 30 s after its output directory was deleted"; kill -9 $pid; exit 1; fi
 wait $pid
