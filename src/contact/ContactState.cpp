@@ -7,28 +7,36 @@
 
 namespace glossa::contact {
 
-ContactState::ContactState(std::size_t faces)
-    : committed_(faces * kPointsPerFace, 0.0),
-      trial_(faces * kPointsPerFace, 0.0),
+ContactState::ContactState(std::size_t faces, std::size_t pointsPerFace)
+    : pointsPerFace_(pointsPerFace),
+      committed_(faces * pointsPerFace, 0.0),
+      trial_(faces * pointsPerFace, 0.0),
       // Nothing evaluated yet: no point is known to be near the obstacle.
-      gap_(faces * kPointsPerFace, std::numeric_limits<double>::infinity()),
-      pressure_(faces * kPointsPerFace, 0.0) {}
+      gap_(faces * pointsPerFace, std::numeric_limits<double>::infinity()),
+      pressure_(faces * pointsPerFace, 0.0) {
+  if (pointsPerFace == 0) throw std::invalid_argument("contact state: 0 points per face");
+}
 
 FaceMultipliers ContactState::get(const std::vector<double> &values, std::size_t face) const {
   FaceMultipliers lambda;
+  if (pointsPerFace_ != kPointsPerFace)
+    throw std::logic_error("contact state: four multipliers asked of a face with " + std::to_string(pointsPerFace_) +
+                           " points");
   std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(face * kPointsPerFace), kPointsPerFace, lambda.begin());
   return lambda;
 }
 
 void ContactState::record(std::size_t face, const FaceContactPoints &points) {
-  for (std::size_t q = 0; q < kPointsPerFace; ++q) {
-    gap_[face * kPointsPerFace + q] = points[q].gap;
-    pressure_[face * kPointsPerFace + q] = points[q].pressure;
-  }
+  for (std::size_t q = 0; q < kPointsPerFace; ++q) record(face, q, points[q]);
+}
+
+void ContactState::record(std::size_t face, std::size_t q, const ContactPointState &point) {
+  gap_[face * pointsPerFace_ + q] = point.gap;
+  pressure_[face * pointsPerFace_ + q] = point.pressure;
 }
 
 ContactPointState ContactState::point(std::size_t face, std::size_t q) const {
-  return {gap_[face * kPointsPerFace + q], pressure_[face * kPointsPerFace + q]};
+  return {gap_[face * pointsPerFace_ + q], pressure_[face * pointsPerFace_ + q]};
 }
 
 void ContactState::updateMultipliers(double penalty) {
@@ -50,11 +58,12 @@ double ContactState::largestPenetration() const {
 
 void ContactState::restore(const Snapshot &snapshot) {
   const std::size_t n = snapshot.multipliers.size();
-  if (snapshot.gap.size() != n || snapshot.pressure.size() != n || n % kPointsPerFace != 0)
+  if (snapshot.gap.size() != n || snapshot.pressure.size() != n || n % pointsPerFace_ != 0)
     throw std::invalid_argument("contact state: " + std::to_string(n) + " multipliers, " +
                                 std::to_string(snapshot.gap.size()) + " gaps and " +
                                 std::to_string(snapshot.pressure.size()) +
-                                " pressures; expected equal counts, 4 per contact face");
+                                " pressures; expected equal counts, " + std::to_string(pointsPerFace_) +
+                                " per contact face");
   committed_ = trial_ = snapshot.multipliers;
   gap_ = snapshot.gap;
   pressure_ = snapshot.pressure;

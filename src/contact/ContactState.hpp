@@ -5,8 +5,9 @@
 //
 // As the muscle history: a step starts with trial = committed; the Uzawa loop updates the trial
 // multipliers from the gaps recorded at each converged Newton solve; a converged step commits, a
-// failed one rolls back. A plain value type (flat vectors of doubles, 4 per face), so that the run
-// can checkpoint it. Eigen only.
+// failed one rolls back. A plain value type (flat vectors of doubles, pointsPerFace per face: 4
+// for a rigid obstacle, n x n for a deformable pair's slave faces), so that the run can
+// checkpoint it. Eigen only.
 
 #include <cstddef>
 #include <vector>
@@ -17,18 +18,22 @@ namespace glossa::contact {
 
 class ContactState {
 public:
-  static constexpr std::size_t kPointsPerFace = 4;
+  static constexpr std::size_t kPointsPerFace = 4; // a rigid obstacle's faces
 
   ContactState() = default;
-  explicit ContactState(std::size_t faces);
+  explicit ContactState(std::size_t faces, std::size_t pointsPerFace = kPointsPerFace);
 
-  std::size_t faces() const { return committed_.size() / kPointsPerFace; }
+  std::size_t pointsPerFace() const { return pointsPerFace_; }
+  std::size_t faces() const { return committed_.size() / pointsPerFace_; }
+  // A face's four multipliers (pointsPerFace 4).
   FaceMultipliers committedMultipliers(std::size_t face) const { return get(committed_, face); }
   // What the Newton solves of the current step evaluate the face with.
   FaceMultipliers trialMultipliers(std::size_t face) const { return get(trial_, face); }
+  double trialMultiplier(std::size_t face, std::size_t q) const { return trial_[face * pointsPerFace_ + q]; }
 
-  // The gaps and pressures of a face at the last evaluation.
+  // The gaps and pressures of a face (pointsPerFace 4), or of one point, at the last evaluation.
   void record(std::size_t face, const FaceContactPoints &points);
+  void record(std::size_t face, std::size_t q, const ContactPointState &point);
   ContactPointState point(std::size_t face, std::size_t q) const;
 
   // The Uzawa update at the recorded gaps: trial lambda_q <- max(0, trial lambda_q - eps g_q).
@@ -43,7 +48,7 @@ public:
 
   // The committed multipliers and the recorded gaps and pressures, for a checkpoint, and their
   // restoration (trial = committed, as after commit). restore refuses vectors of unequal sizes or
-  // sizes not a multiple of 4.
+  // sizes not a multiple of pointsPerFace.
   struct Snapshot {
     std::vector<double> multipliers, gap, pressure;
   };
@@ -53,6 +58,7 @@ public:
 private:
   FaceMultipliers get(const std::vector<double> &values, std::size_t face) const;
 
+  std::size_t pointsPerFace_ = kPointsPerFace;
   std::vector<double> committed_, trial_, gap_, pressure_;
 };
 

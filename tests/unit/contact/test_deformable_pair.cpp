@@ -1,0 +1,88 @@
+// The pairing of a deformable pair's faces (contact/DeformablePair): candidates by reference
+// distance (search radius + margin), self-contact leaving out a face's own and its neighbours, a
+// face set against itself refused unless self-contact is asked, the coupled nodes, and the search
+// of a point among its candidates (inside, within the radius, facing it, the nearest).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "contact/DeformablePair.hpp"
+#include "mesh/BoxGenerator.hpp"
+
+using namespace glossa;
+using namespace glossa::contact;
+
+namespace {
+
+// Two 1 x 1 boxes of 2 x 2 x 1 cells, the upper 0.1 above the lower, in one mesh (nodes of the
+// upper renumbered after the lower's).
+mesh::HexMesh twoBoxes(double gap) {
+  mesh::HexMesh lower = mesh::generateBox({0, 0, 0}, {1, 1, 1}, {2, 2, 1});
+  const mesh::HexMesh upper = mesh::generateBox({0, 0, 1 + gap}, {1, 1, 1}, {2, 2, 1});
+  const auto offset = static_cast<mesh::NodeId>(lower.nodes.size());
+  const auto elementOffset = static_cast<mesh::ElementId>(lower.elements.size());
+  lower.nodes.insert(lower.nodes.end(), upper.nodes.begin(), upper.nodes.end());
+  for (auto hex : upper.elements) {
+    for (auto &n : hex) n += offset;
+    lower.elements.push_back(hex);
+  }
+  lower.faceSets["lower top"] = lower.faceSets.at("zmax");
+  for (auto f : upper.faceSets.at("zmin")) {
+    f.element += elementOffset;
+    lower.faceSets["upper bottom"].push_back(f);
+  }
+  return lower;
+}
+
+} // namespace
+
+TEST(DeformablePair, CandidatesLieWithinTheSearchRadiusAndMargin) {
+  const mesh::HexMesh m = twoBoxes(0.1);
+  const auto &slave = m.faceSets.at("upper bottom"), &master = m.faceSets.at("lower top");
+  ASSERT_EQ(slave.size(), 4u);
+  // The faces are 0.1 apart: a reach of 0.05 pairs nothing, 0.15 pairs each slave face with the
+  // master face below it and its neighbours (boxes touching at an edge or corner count).
+  const DeformablePair none = pairFaces(m, slave, master, false, 0.02, 0.03, SlaveRule::gauss, 2);
+  for (const auto &c : none.candidates) EXPECT_TRUE(c.empty());
+  const DeformablePair all = pairFaces(m, slave, master, false, 0.05, 0.1, SlaveRule::gauss, 3);
+  EXPECT_EQ(all.pointsPerFace(), 9u);
+  for (const auto &c : all.candidates) EXPECT_EQ(c.size(), 4u);
+  // Coupled: the slave face's 4 nodes and the master top's 9.
+  EXPECT_EQ(coupledNodes(m, slave, all, 0).size(), 13u);
+  EXPECT_THROW(pairFaces(m, master, master, false, 0.05, 0.1, SlaveRule::gauss, 2), std::invalid_argument);
+}
+
+TEST(DeformablePair, SelfContactLeavesOutAFacesOwnAndNeighbours) {
+  const mesh::HexMesh m = twoBoxes(0.1);
+  std::vector<mesh::ElementFace> walls = m.faceSets.at("lower top");
+  const auto &bottom = m.faceSets.at("upper bottom");
+  walls.insert(walls.end(), bottom.begin(), bottom.end());
+  const DeformablePair self = pairFaces(m, walls, walls, true, 0.05, 0.1, SlaveRule::gauss, 2);
+  ASSERT_EQ(self.candidates.size(), 8u);
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    // Every face of its own wall shares a node with it (a 2 x 2 wall): only the other wall's four.
+    EXPECT_EQ(self.candidates[i].size(), 4u) << i;
+    for (std::uint32_t c : self.candidates[i]) EXPECT_NE(c < 4, i < 4) << i;
+  }
+}
+
+TEST(DeformablePair, SearchFindsTheNearestFacingFaceInside) {
+  loads::FaceNodes near, far, away, behind;
+  near << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;  // normal +z, 0.1 below the point
+  far = near;
+  far.col(2).array() -= 0.05;                   // 0.15 below
+  away = near;
+  away.col(0).array() += 2.0;                   // beside: the projection lands outside
+  behind << 0, 0, 0.2, 0, 1, 0.2, 1, 1, 0.2, 1, 0, 0.2; // normal -z, above the point: not facing
+  const std::vector<loads::FaceNodes> faces{far, away, behind, near};
+  const auto at = [&](std::uint32_t m) { return faces[m]; };
+  const Eigen::Vector3d x(0.4, 0.6, 0.1), down(0, 0, -1);
+  const auto match = closestMasterFace(x, down, {0, 1, 2, 3}, at, 0.5);
+  ASSERT_TRUE(match.has_value());
+  EXPECT_EQ(match->master, 3u);
+  EXPECT_NEAR(match->projection.gap, 0.1, 1e-14);
+  EXPECT_FALSE(closestMasterFace(x, down, {0, 1, 2, 3}, at, 0.05).has_value()) << "beyond the search radius";
+  EXPECT_FALSE(closestMasterFace(x, down, {1, 2}, at, 0.5).has_value());
+  EXPECT_FALSE(closestMasterFace(x, Eigen::Vector3d(0, 0, 1), {0, 3}, at, 0.5).has_value()) << "not facing";
+}
