@@ -10,10 +10,12 @@
 #include "contact/FaceContact.hpp"
 #include "contact/PlaneObstacle.hpp"
 #include "contact/SphereObstacle.hpp"
+#include "RandomFaces.hpp"
 
 using namespace glossa::contact;
 using glossa::loads::FaceForces;
 using glossa::loads::FaceNodes;
+using glossa::test::perturbed;
 using glossa::loads::FaceTangent;
 
 namespace {
@@ -65,14 +67,6 @@ int expectTangentMatchesCentralDifferences(const Obstacle &obstacle, const FaceN
   return active;
 }
 
-// The unit square about z = 0 with each coordinate moved by up to `size`.
-FaceNodes perturbed(const FaceNodes &X, std::mt19937 &rng, double size) {
-  std::uniform_real_distribution<double> d(-size, size);
-  FaceNodes Y = X;
-  for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 3; ++i) Y(a, i) += d(rng);
-  return Y;
-}
 
 // Random warped faces near z = 0 or 0.2 below pressed into `obstacle` with random multipliers in
 // [0, lambdaMax], both rules; fails unless the samples exercise faces with every point active

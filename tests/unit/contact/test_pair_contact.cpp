@@ -11,9 +11,11 @@
 
 #include "contact/PairContact.hpp"
 #include "loads/FaceShape.hpp"
+#include "RandomFaces.hpp"
 
 using namespace glossa::contact;
 using glossa::loads::FaceNodes;
+using glossa::test::perturbed;
 
 namespace {
 
@@ -28,13 +30,6 @@ FaceNodes square(double z, bool up) {
   return X;
 }
 
-FaceNodes perturbed(const FaceNodes &X, std::mt19937 &rng, double size) {
-  std::uniform_real_distribution<double> d(-size, size);
-  FaceNodes Y = X;
-  for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 3; ++i) Y(a, i) += d(rng);
-  return Y;
-}
 
 PairForces forcesAt(const FaceNodes &xs, const FaceNodes &xm, const SlavePoint &q, double lambda, double eps,
                     const Eigen::Matrix<double, 24, 1> &du) {
