@@ -4,6 +4,8 @@
 // is not: int N_b^m over the slave face, against the closed-form overlap areas.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <cstdio>
 
