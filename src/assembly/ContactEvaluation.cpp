@@ -13,7 +13,8 @@ namespace glossa::assembly {
 
 namespace {
 
-void evaluateRigid(const LoadTarget &target, const model::RigidContact &contact, const ContactPointVisitor *visit) {
+void evaluateRigid(const LoadTarget &target, const model::RigidContact &contact,
+                   const ContactPointVisitor *visit) {
   const contact::FaceMultipliers none{0.0, 0.0, 0.0, 0.0};
   for (std::size_t i = 0; i < contact.faces.size(); ++i) {
     const mesh::ElementFace &face = contact.faces[i];
@@ -23,16 +24,17 @@ void evaluateRigid(const LoadTarget &target, const model::RigidContact &contact,
         contact.augmented() && contact.state ? contact.state->trialMultipliers(i) : none;
     contact::FaceContactPoints points;
     const bool tangent = target.residual && target.K;
-    loads::FaceTangent Kf; // filled, and read, only with a tangent
-    const loads::FaceForces ff = contact::faceContactForces(*contact.obstacle, f.X, f.u, lambda, contact.settings,
-                                                            &points, tangent ? &Kf : nullptr);
+    loads::FaceTangent Kf;  // filled, and read, only with a tangent
+    const loads::FaceForces ff = contact::faceContactForces(
+        *contact.obstacle, f.X, f.u, lambda, contact.settings, &points, tangent ? &Kf : nullptr);
     if (visit)
       for (std::size_t q = 0; q < points.size(); ++q) (*visit)(i, q, points[q]);
     if (target.residual) target.subtract(f.nodes.data(), 4, ff.data(), tangent ? Kf.data() : nullptr);
   }
 }
 
-void evaluatePair(const LoadTarget &target, const model::RigidContact &contact, const ContactPointVisitor *visit) {
+void evaluatePair(const LoadTarget &target, const model::RigidContact &contact,
+                  const ContactPointVisitor *visit) {
   const contact::DeformablePair &pair = *contact.pair;
   const auto masterAt = [&](std::uint32_t m) { return faceAt(target, pair.masterFaces[m]).current(); };
   const bool tangent = target.residual && target.K;
@@ -44,20 +46,21 @@ void evaluatePair(const LoadTarget &target, const model::RigidContact &contact, 
     for (std::size_t q = 0; q < points.size(); ++q) {
       const loads::FaceShape sh = loads::faceShape(points[q].st(0), points[q].st(1));
       const Eigen::Vector3d x = xs.transpose() * sh.N;
-      const Eigen::Vector3d slaveNormal = (xs.transpose() * sh.dNds).cross(xs.transpose() * sh.dNdt).normalized();
+      const Eigen::Vector3d slaveNormal =
+          (xs.transpose() * sh.dNds).cross(xs.transpose() * sh.dNdt).normalized();
       const auto match = contact::closestMasterFace(x, slaveNormal, pair.candidates[i], masterAt,
                                                     contact.settings.searchRadius);
       const double lambda = contact.augmented() && contact.state ? contact.state->trialMultiplier(i, q) : 0.0;
       contact::ContactPointState state;
       state.gap = std::numeric_limits<double>::infinity();
-      if (!match || points[q].weight == 0.0) { // a padding point carries nothing
+      if (!match || points[q].weight == 0.0) {  // a padding point carries nothing
         if (visit) (*visit)(i, q, state);
         continue;
       }
       const FaceAtTarget master = faceAt(target, pair.masterFaces[match->master]);
-      contact::PairTangent K; // filled, and read, only with a tangent
-      const contact::PairForces f = contact::pairPointForces(xs, points[q], master.current(), lambda,
-                                                             contact.settings.penalty, &state, tangent ? &K : nullptr);
+      contact::PairTangent K;  // filled, and read, only with a tangent
+      const contact::PairForces f = contact::pairPointForces(
+          xs, points[q], master.current(), lambda, contact.settings.penalty, &state, tangent ? &K : nullptr);
       if (visit) (*visit)(i, q, state);
       // A point apart (lambda - eps g < 0) gives nothing; at the kink it gives its tangent.
       if (!target.residual || lambda - contact.settings.penalty * state.gap < 0.0) continue;
@@ -69,9 +72,10 @@ void evaluatePair(const LoadTarget &target, const model::RigidContact &contact, 
   }
 }
 
-} // namespace
+}  // namespace
 
-void evaluateContact(const LoadTarget &target, const model::RigidContact &contact, const ContactPointVisitor *visit) {
+void evaluateContact(const LoadTarget &target, const model::RigidContact &contact,
+                     const ContactPointVisitor *visit) {
   if (contact.pair)
     evaluatePair(target, contact, visit);
   else
@@ -87,4 +91,4 @@ int nearestFaceNode(const model::RigidContact &contact, std::size_t face, std::s
   return tPlus ? (sPlus ? 2 : 3) : (sPlus ? 1 : 0);
 }
 
-} // namespace glossa::assembly
+}  // namespace glossa::assembly

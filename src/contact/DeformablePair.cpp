@@ -27,7 +27,7 @@ Box boxOf(const mesh::HexMesh &mesh, const mesh::ElementFace &face) {
 double distance(const Box &a, const Box &b) {
   return (a.lo - b.hi).cwiseMax(b.lo - a.hi).cwiseMax(0.0).norm();
 }
-} // namespace
+}  // namespace
 
 std::array<mesh::NodeId, 4> faceNodeIds(const mesh::HexMesh &mesh, const mesh::ElementFace &face) {
   std::array<mesh::NodeId, 4> nodes{};
@@ -36,8 +36,8 @@ std::array<mesh::NodeId, 4> faceNodeIds(const mesh::HexMesh &mesh, const mesh::E
 }
 
 DeformablePair pairFaces(const mesh::HexMesh &mesh, const std::vector<mesh::ElementFace> &slaveFaces,
-                         std::vector<mesh::ElementFace> masterFaces, bool self, double searchRadius, double margin,
-                         SlaveRule rule, int pointsPerDirection) {
+                         std::vector<mesh::ElementFace> masterFaces, bool self, double searchRadius,
+                         double margin, SlaveRule rule, int pointsPerDirection) {
   DeformablePair pair;
   pair.self = self;
   pair.margin = margin;
@@ -46,8 +46,8 @@ DeformablePair pairFaces(const mesh::HexMesh &mesh, const std::vector<mesh::Elem
     const std::set<mesh::ElementFace> slave(slaveFaces.begin(), slaveFaces.end());
     for (const mesh::ElementFace &f : pair.masterFaces)
       if (slave.count(f))
-        throw std::invalid_argument("the slave and master face sets share the face " + std::to_string(f.localFace) +
-                                    " of element " + std::to_string(f.element) +
+        throw std::invalid_argument("the slave and master face sets share the face " +
+                                    std::to_string(f.localFace) + " of element " + std::to_string(f.element) +
                                     "; a face set against itself is self-contact");
   }
   std::vector<Box> masterBoxes;
@@ -92,7 +92,8 @@ loads::FaceNodes referenceNodes(const mesh::HexMesh &mesh, const mesh::ElementFa
   return X;
 }
 
-std::vector<mesh::NodeId> coupledNodes(const mesh::HexMesh &mesh, const std::vector<mesh::ElementFace> &slaveFaces,
+std::vector<mesh::NodeId> coupledNodes(const mesh::HexMesh &mesh,
+                                       const std::vector<mesh::ElementFace> &slaveFaces,
                                        const DeformablePair &pair, std::size_t slaveFace) {
   const auto own = faceNodeIds(mesh, slaveFaces[slaveFace]);
   std::vector<mesh::NodeId> nodes(own.begin(), own.end());
@@ -118,4 +119,4 @@ std::optional<PairMatch> closestMasterFace(const Eigen::Vector3d &x, const Eigen
   return best;
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

@@ -24,9 +24,9 @@ namespace glossa::contact {
 enum class SlaveRule { gauss, segments };
 
 struct DeformablePair {
-  std::vector<mesh::ElementFace> masterFaces; // the slave faces themselves for self-contact
+  std::vector<mesh::ElementFace> masterFaces;  // the slave faces themselves for self-contact
   bool self = false;
-  double margin = 0;                          // [m]: how much farther than the search radius candidates reach
+  double margin = 0;  // [m]: how much farther than the search radius candidates reach
   // Per slave face (the contact's `faces`, same index): the indices in masterFaces of the faces
   // whose reference bounding boxes lie within search radius + margin of its own.
   std::vector<std::vector<std::uint32_t>> candidates;
@@ -41,15 +41,16 @@ struct DeformablePair {
 // Gauss rule). Refuses (std::invalid_argument) a slave face set that shares a face with the master
 // set unless `self`.
 DeformablePair pairFaces(const mesh::HexMesh &mesh, const std::vector<mesh::ElementFace> &slaveFaces,
-                         std::vector<mesh::ElementFace> masterFaces, bool self, double searchRadius, double margin,
-                         SlaveRule rule, int pointsPerDirection);
+                         std::vector<mesh::ElementFace> masterFaces, bool self, double searchRadius,
+                         double margin, SlaveRule rule, int pointsPerDirection);
 
 // A face's four nodes, in its outward right-hand order, and their reference positions.
 std::array<mesh::NodeId, 4> faceNodeIds(const mesh::HexMesh &mesh, const mesh::ElementFace &face);
 loads::FaceNodes referenceNodes(const mesh::HexMesh &mesh, const mesh::ElementFace &face);
 
 // The nodes a slave face couples in the tangent: its own and its candidates' (sorted, unique).
-std::vector<mesh::NodeId> coupledNodes(const mesh::HexMesh &mesh, const std::vector<mesh::ElementFace> &slaveFaces,
+std::vector<mesh::NodeId> coupledNodes(const mesh::HexMesh &mesh,
+                                       const std::vector<mesh::ElementFace> &slaveFaces,
                                        const DeformablePair &pair, std::size_t slaveFace);
 
 // The master face a slave point at x (on a slave face of unit normal `slaveNormal`) meets: among
@@ -57,7 +58,7 @@ std::vector<mesh::NodeId> coupledNodes(const mesh::HexMesh &mesh, const std::vec
 // the search radius on either side and facing it (normals opposed), the one with the smallest
 // |gap|; nothing if none.
 struct PairMatch {
-  std::uint32_t master = 0; // index in masterFaces
+  std::uint32_t master = 0;  // index in masterFaces
   FaceProjection projection;
 };
 std::optional<PairMatch> closestMasterFace(const Eigen::Vector3d &x, const Eigen::Vector3d &slaveNormal,
@@ -65,4 +66,4 @@ std::optional<PairMatch> closestMasterFace(const Eigen::Vector3d &x, const Eigen
                                            const std::function<loads::FaceNodes(std::uint32_t)> &masterAt,
                                            double searchRadius);
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

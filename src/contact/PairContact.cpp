@@ -41,10 +41,11 @@ Eigen::Vector3d twist(const loads::FaceNodes &x) {
   return x.transpose() * st;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<SlavePoint> slavePoints(int n) {
-  if (n < 1) throw std::invalid_argument("slavePoints: " + std::to_string(n) + " points per direction; at least 1");
+  if (n < 1)
+    throw std::invalid_argument("slavePoints: " + std::to_string(n) + " points per direction; at least 1");
   const auto rule = gaussLegendre(n);
   std::vector<SlavePoint> points;
   for (const auto &[t, wt] : rule)
@@ -86,8 +87,8 @@ std::optional<FaceProjection> projectOntoFace(const loads::FaceNodes &xm, const 
   return std::nullopt;
 }
 
-PairForces pairPointForces(const loads::FaceNodes &xs, const SlavePoint &q, const loads::FaceNodes &xm, double lambda,
-                           double eps, ContactPointState *point, PairTangent *K) {
+PairForces pairPointForces(const loads::FaceNodes &xs, const SlavePoint &q, const loads::FaceNodes &xm,
+                           double lambda, double eps, ContactPointState *point, PairTangent *K) {
   PairForces f = PairForces::Zero();
   if (K) K->setZero();
   const loads::FaceShape sh = loads::faceShape(q.st(0), q.st(1));
@@ -142,8 +143,8 @@ PairForces pairPointForces(const loads::FaceNodes &xs, const SlavePoint &q, cons
   // The normal's variation, its tangents moving with the nodes and with (s, t): a_1,t = a_2,s = x_,st.
   const Dofs dA1 = Da1 + xst * dst.row(1), dA2 = Da2 + xst * dst.row(0);
   const Eigen::Vector3d c = a1.cross(a2);
-  const Dofs dn = (I - n * n.transpose()) / c.norm() *
-                  (-loads::crossMatrix(a2) * dA1 + loads::crossMatrix(a1) * dA2);
+  const Dofs dn =
+      (I - n * n.transpose()) / c.norm() * (-loads::crossMatrix(a2) * dA1 + loads::crossMatrix(a1) * dA2);
   // dg = n . (dx_s - dx_m): the terms in d(s, t) and dn vanish at the closest point.
   const Eigen::Matrix<double, 1, 24> dt = -eps * n.transpose() * Dd;
   // The slave area element: dj/du_b = m^T (dN_b/dt [x_,s]_x - dN_b/ds [x_,t]_x), m its unit normal.
@@ -161,4 +162,4 @@ PairForces pairPointForces(const loads::FaceNodes &xs, const SlavePoint &q, cons
   return f;
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

@@ -22,8 +22,8 @@
 
 namespace glossa::contact {
 
-using PairForces = Eigen::Matrix<double, 24, 1>;   // slave nodes 0-3, then master nodes 0-3
-using PairTangent = Eigen::Matrix<double, 24, 24>; // K(3a + i, 3b + j) = d f_{a,i} / d u_{b,j}
+using PairForces = Eigen::Matrix<double, 24, 1>;    // slave nodes 0-3, then master nodes 0-3
+using PairTangent = Eigen::Matrix<double, 24, 24>;  // K(3a + i, 3b + j) = d f_{a,i} / d u_{b,j}
 
 // A point of the slave face: its face-local (s, t) and quadrature weight.
 struct SlavePoint {
@@ -41,8 +41,8 @@ std::vector<SlavePoint> slavePoints(int n);
 // so warped that the closest point is not unique).
 struct FaceProjection {
   Eigen::Vector2d st;
-  Eigen::Vector3d normal; // unit, the right-hand normal of the face's node order
-  double gap = 0;         // (x - x_m(s, t)) . normal [m]
+  Eigen::Vector3d normal;  // unit, the right-hand normal of the face's node order
+  double gap = 0;          // (x - x_m(s, t)) . normal [m]
   bool inside = false;
 };
 std::optional<FaceProjection> projectOntoFace(const loads::FaceNodes &xm, const Eigen::Vector3d &x);
@@ -51,7 +51,8 @@ std::optional<FaceProjection> projectOntoFace(const loads::FaceNodes &xm, const 
 // the multiplier lambda [Pa] and penalty eps [Pa/m]; the point's gap, pressure and area in
 // `point`. A point whose projection leaves the master face, or does not converge, carries nothing
 // (gap +infinity). K, if given, is d f / d u.
-PairForces pairPointForces(const loads::FaceNodes &xs, const SlavePoint &q, const loads::FaceNodes &xm, double lambda,
-                           double eps, ContactPointState *point = nullptr, PairTangent *K = nullptr);
+PairForces pairPointForces(const loads::FaceNodes &xs, const SlavePoint &q, const loads::FaceNodes &xm,
+                           double lambda, double eps, ContactPointState *point = nullptr,
+                           PairTangent *K = nullptr);
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

@@ -8,7 +8,7 @@ namespace glossa::contact {
 
 namespace {
 
-using Polygon = std::vector<Eigen::Vector2d>; // convex, in order
+using Polygon = std::vector<Eigen::Vector2d>;  // convex, in order
 
 // A line n . x = c with unit n, the cut along one projected master edge.
 struct Line {
@@ -51,7 +51,8 @@ double area(const Polygon &p) {
 
 // The distinct lines through the projected master edges (a structured master repeats each line
 // along its faces; a line is kept once). Lines that miss the square are kept too: they cut nothing.
-std::vector<Line> masterEdgeLines(const loads::FaceNodes &slaveX, const std::vector<loads::FaceNodes> &masterX) {
+std::vector<Line> masterEdgeLines(const loads::FaceNodes &slaveX,
+                                  const std::vector<loads::FaceNodes> &masterX) {
   std::vector<Line> lines;
   for (const loads::FaceNodes &m : masterX) {
     std::array<Eigen::Vector2d, 4> st;
@@ -69,7 +70,7 @@ std::vector<Line> masterEdgeLines(const loads::FaceNodes &slaveX, const std::vec
       const Eigen::Vector2d d = st[(a + 1) % 4] - st[a];
       if (d.norm() < 1e-12) continue;
       Line line{Eigen::Vector2d(-d(1), d(0)).normalized(), 0.0};
-      if (line.n(0) < 0 || (line.n(0) == 0 && line.n(1) < 0)) line.n = -line.n; // one sign per direction
+      if (line.n(0) < 0 || (line.n(0) == 0 && line.n(1) < 0)) line.n = -line.n;  // one sign per direction
       line.c = line.n.dot(st[a]);
       const bool known = std::any_of(lines.begin(), lines.end(), [&](const Line &l) {
         return (l.n - line.n).norm() < 1e-9 && std::abs(l.c - line.c) < 1e-9;
@@ -80,10 +81,12 @@ std::vector<Line> masterEdgeLines(const loads::FaceNodes &slaveX, const std::vec
   return lines;
 }
 
-} // namespace
+}  // namespace
 
-std::vector<SlavePoint> segmentedSlavePoints(const loads::FaceNodes &slaveX, const std::vector<loads::FaceNodes> &masterX) {
-  std::vector<Polygon> cells{{Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1), Eigen::Vector2d(1, 1), Eigen::Vector2d(-1, 1)}};
+std::vector<SlavePoint> segmentedSlavePoints(const loads::FaceNodes &slaveX,
+                                             const std::vector<loads::FaceNodes> &masterX) {
+  std::vector<Polygon> cells{
+      {Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1), Eigen::Vector2d(1, 1), Eigen::Vector2d(-1, 1)}};
   for (const Line &line : masterEdgeLines(slaveX, masterX)) {
     std::vector<Polygon> next;
     for (const Polygon &cell : cells)
@@ -95,8 +98,12 @@ std::vector<SlavePoint> segmentedSlavePoints(const loads::FaceNodes &slaveX, con
   // Dunavant's 6-point rule of degree 4 on a triangle (barycentric coordinates, weights summing to 1).
   constexpr double a = 0.445948490915965, b = 0.091576213509771;
   constexpr double wa = 0.223381589678011, wb = 0.109951743655322;
-  const std::array<std::array<double, 3>, 6> bary{{{a, a, 1 - 2 * a}, {a, 1 - 2 * a, a}, {1 - 2 * a, a, a},
-                                                   {b, b, 1 - 2 * b}, {b, 1 - 2 * b, b}, {1 - 2 * b, b, b}}};
+  const std::array<std::array<double, 3>, 6> bary{{{a, a, 1 - 2 * a},
+                                                   {a, 1 - 2 * a, a},
+                                                   {1 - 2 * a, a, a},
+                                                   {b, b, 1 - 2 * b},
+                                                   {b, 1 - 2 * b, b},
+                                                   {1 - 2 * b, b, b}}};
   const std::array<double, 6> weight{wa, wa, wa, wb, wb, wb};
   std::vector<SlavePoint> points;
   for (const Polygon &cell : cells)
@@ -105,9 +112,10 @@ std::vector<SlavePoint> segmentedSlavePoints(const loads::FaceNodes &slaveX, con
       const double A = area(triangle);
       if (A <= 1e-24) continue;
       for (std::size_t q = 0; q < 6; ++q)
-        points.push_back({bary[q][0] * triangle[0] + bary[q][1] * triangle[1] + bary[q][2] * triangle[2], weight[q] * A});
+        points.push_back(
+            {bary[q][0] * triangle[0] + bary[q][1] * triangle[1] + bary[q][2] * triangle[2], weight[q] * A});
     }
   return points;
 }
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

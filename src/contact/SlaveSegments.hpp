@@ -18,6 +18,7 @@ namespace glossa::contact {
 // The points of a slave face (reference nodes slaveX) cut by the edges of the faces in masterX
 // (reference nodes), weights summing to 4 (the square's area). A master face whose nodes cannot
 // be projected onto the slave face's plane (Newton fails) cuts nothing.
-std::vector<SlavePoint> segmentedSlavePoints(const loads::FaceNodes &slaveX, const std::vector<loads::FaceNodes> &masterX);
+std::vector<SlavePoint> segmentedSlavePoints(const loads::FaceNodes &slaveX,
+                                             const std::vector<loads::FaceNodes> &masterX);
 
-} // namespace glossa::contact
+}  // namespace glossa::contact

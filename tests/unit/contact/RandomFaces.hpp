@@ -16,4 +16,4 @@ inline loads::FaceNodes perturbed(const loads::FaceNodes &X, std::mt19937 &rng, 
   return Y;
 }
 
-} // namespace glossa::test
+}  // namespace glossa::test

@@ -7,35 +7,18 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "StackedBoxes.hpp"
 #include "contact/DeformablePair.hpp"
-#include "mesh/BoxGenerator.hpp"
 
 using namespace glossa;
 using namespace glossa::contact;
 
 namespace {
 
-// Two 1 x 1 boxes of 2 x 2 x 1 cells, the upper 0.1 above the lower, in one mesh (nodes of the
-// upper renumbered after the lower's).
-mesh::HexMesh twoBoxes(double gap) {
-  mesh::HexMesh lower = mesh::generateBox({0, 0, 0}, {1, 1, 1}, {2, 2, 1});
-  const mesh::HexMesh upper = mesh::generateBox({0, 0, 1 + gap}, {1, 1, 1}, {2, 2, 1});
-  const auto offset = static_cast<mesh::NodeId>(lower.nodes.size());
-  const auto elementOffset = static_cast<mesh::ElementId>(lower.elements.size());
-  lower.nodes.insert(lower.nodes.end(), upper.nodes.begin(), upper.nodes.end());
-  for (auto hex : upper.elements) {
-    for (auto &n : hex) n += offset;
-    lower.elements.push_back(hex);
-  }
-  lower.faceSets["lower top"] = lower.faceSets.at("zmax");
-  for (auto f : upper.faceSets.at("zmin")) {
-    f.element += elementOffset;
-    lower.faceSets["upper bottom"].push_back(f);
-  }
-  return lower;
-}
+// Two 1 x 1 boxes of 2 x 2 x 1 cells, the upper `gap` above the lower.
+mesh::HexMesh twoBoxes(double gap) { return test::stackedBoxes(1.0, {2, 2, 1}, {2, 2, 1}, gap); }
 
-} // namespace
+}  // namespace
 
 TEST(DeformablePair, CandidatesLieWithinTheSearchRadiusAndMargin) {
   const mesh::HexMesh m = twoBoxes(0.1);
@@ -71,10 +54,10 @@ TEST(DeformablePair, SearchFindsTheNearestFacingFaceInside) {
   loads::FaceNodes near, far, away, behind;
   near << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;  // normal +z, 0.1 below the point
   far = near;
-  far.col(2).array() -= 0.05;                   // 0.15 below
+  far.col(2).array() -= 0.05;  // 0.15 below
   away = near;
-  away.col(0).array() += 2.0;                   // beside: the projection lands outside
-  behind << 0, 0, 0.2, 0, 1, 0.2, 1, 1, 0.2, 1, 0, 0.2; // normal -z, above the point: not facing
+  away.col(0).array() += 2.0;                            // beside: the projection lands outside
+  behind << 0, 0, 0.2, 0, 1, 0.2, 1, 1, 0.2, 1, 0, 0.2;  // normal -z, above the point: not facing
   const std::vector<loads::FaceNodes> faces{far, away, behind, near};
   const auto at = [&](std::uint32_t m) { return faces[m]; };
   const Eigen::Vector3d x(0.4, 0.6, 0.1), down(0, 0, -1);

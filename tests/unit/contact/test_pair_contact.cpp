@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <random>
 
+#include "RandomFaces.hpp"
 #include "contact/PairContact.hpp"
 #include "loads/FaceShape.hpp"
-#include "RandomFaces.hpp"
 
 using namespace glossa::contact;
 using glossa::loads::FaceNodes;
@@ -30,7 +30,6 @@ FaceNodes square(double z, bool up) {
   return X;
 }
 
-
 PairForces forcesAt(const FaceNodes &xs, const FaceNodes &xm, const SlavePoint &q, double lambda, double eps,
                     const Eigen::Matrix<double, 24, 1> &du) {
   FaceNodes ys = xs, ym = xm;
@@ -42,7 +41,7 @@ PairForces forcesAt(const FaceNodes &xs, const FaceNodes &xm, const SlavePoint &
   return pairPointForces(ys, q, ym, lambda, eps);
 }
 
-} // namespace
+}  // namespace
 
 TEST(PairContact, SlavePointsIntegrateProductsOfDegreeTwoNMinusOne) {
   for (int n = 1; n <= 6; ++n) {
@@ -111,7 +110,7 @@ TEST(PairContact, FlatFacesCarryTheTractionOnTheSlaveAndItsOppositeOnTheMaster) 
 TEST(PairContact, PointBeyondTheMasterFaceCarriesNothing) {
   const FaceNodes xs = square(-1e-3, false), xm = square(0, true);
   FaceNodes shifted = xm;
-  shifted.col(0).array() += 1.5; // the master face lies beside the slave: no projection inside
+  shifted.col(0).array() += 1.5;  // the master face lies beside the slave: no projection inside
   ContactPointState state;
   PairTangent K;
   const PairForces f = pairPointForces(xs, slavePoints(2)[0], shifted, 10.0, 1e6, &state, &K);
@@ -171,5 +170,6 @@ TEST(PairContact, TangentMatchesCentralDifferencesOnRandomPairs) {
   }
   EXPECT_GT(active, 200);
   EXPECT_GT(inactive, 50);
-  std::printf("pair tangent: %d active, %d inactive points; largest relative error %.2e\n", active, inactive, worst);
+  std::printf("pair tangent: %d active, %d inactive points; largest relative error %.2e\n", active, inactive,
+              worst);
 }

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-
 #include <cmath>
 #include <cstdio>
 
@@ -29,7 +28,8 @@ FaceNodes rectangle(double x0, double x1, double y0, double y1, double z, bool u
 // int over the slave face of the master face's shape function of node b (the master's nodal force
 // of a unit pressure), with the given points; each point is projected onto the master face and
 // counts only inside it.
-double masterLoad(const FaceNodes &slave, const FaceNodes &master, const std::vector<SlavePoint> &points, int b) {
+double masterLoad(const FaceNodes &slave, const FaceNodes &master, const std::vector<SlavePoint> &points,
+                  int b) {
   double sum = 0.0;
   for (const SlavePoint &q : points) {
     const auto sh = glossa::loads::faceShape(q.st(0), q.st(1));
@@ -41,14 +41,15 @@ double masterLoad(const FaceNodes &slave, const FaceNodes &master, const std::ve
   }
   return sum;
 }
-} // namespace
+}  // namespace
 
 TEST(SlaveSegments, CellsCoverTheFaceAndIntegrateTheMastersShapeFunctionsExactly) {
   // A slave face [0, 0.43] x [0.18, 0.71] over a uniform master grid of quarters (both at z = 0).
   const FaceNodes slave = rectangle(0.0, 0.43, 0.18, 0.71, 0.0, false);
   std::vector<FaceNodes> masters;
   for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) masters.push_back(rectangle(0.25 * i, 0.25 * (i + 1), 0.25 * j, 0.25 * (j + 1), 0.0, true));
+    for (int j = 0; j < 4; ++j)
+      masters.push_back(rectangle(0.25 * i, 0.25 * (i + 1), 0.25 * j, 0.25 * (j + 1), 0.0, true));
   const std::vector<SlavePoint> points = segmentedSlavePoints(slave, masters);
   double area = 0.0;
   for (const SlavePoint &q : points) area += q.weight;
@@ -62,6 +63,7 @@ TEST(SlaveSegments, CellsCoverTheFaceAndIntegrateTheMastersShapeFunctionsExactly
   // The 2 x 2 Gauss rule misses it: the master's kinks lie inside the slave face.
   const double gauss = masterLoad(slave, m, slavePoints(2), 0);
   EXPECT_GT(std::abs(gauss - exact), 1e-4 * exact);
-  std::printf("int N_0 of a master face over a slave face: exact %.6e, segments %.3e off, 2x2 Gauss %.3e off\n",
-              exact, std::abs(masterLoad(slave, m, points, 0) - exact), std::abs(gauss - exact));
+  std::printf(
+      "int N_0 of a master face over a slave face: exact %.6e, segments %.3e off, 2x2 Gauss %.3e off\n",
+      exact, std::abs(masterLoad(slave, m, points, 0) - exact), std::abs(gauss - exact));
 }
