@@ -24,15 +24,15 @@ const char *kDeck = "verification/indentation_nearly_incompressible.xml";
 const int kSteps = 4;           // the deck's end time / step size
 const double kGapTolerance = 1e-3 * 1e-3 / 8; // the default: 1e-3 of the bottom faces' edge (1 mm / 8)
 
-struct Run {
+struct IndentationRun {
   nlohmann::json summary;
   double force = 0; // the full block's: 4 x the quarter's far-face reaction [N]
   int uzawa = 0, newton = 0;
 };
 
-Run run(const std::string &method, const std::string &name) {
+IndentationRun indent(const std::string &method, const std::string &name) {
   const auto output = test::scratchDirectory(name);
-  Run r;
+  IndentationRun r;
   r.summary = test::runDeck(test::inputPath(kDeck), {"Incompressibility/method=" + method}, output);
   EXPECT_TRUE(r.summary.at("converged").get<bool>()) << method;
   const auto resultants = test::readKeyedCsv(output / "resultants.csv");
@@ -49,8 +49,8 @@ Run run(const std::string &method, const std::string &name) {
 } // namespace
 
 TEST(ContactNearIncompressible, AugmentedLagrangianMeetsVolumeAndGapInOneLoopAndAgreesWithMixed) {
-  const Run al = run("augmented Lagrangian", "indentation_ni_al");
-  const Run mixed = run("mixed", "indentation_ni_mixed");
+  const IndentationRun al = indent("augmented Lagrangian", "indentation_ni_al");
+  const IndentationRun mixed = indent("mixed", "indentation_ni_mixed");
   // (a) every step in one loop (a cut-back would add steps), both tolerances met at its end.
   const auto &steps = al.summary.at("steps");
   ASSERT_EQ(steps.size(), static_cast<std::size_t>(kSteps));
