@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -59,8 +60,9 @@ HexMesh generateQuarterCylinder(double radius, double height, const QuarterCylin
   if (!(radius > 0.0) || !std::isfinite(radius) || !(height > 0.0) || !std::isfinite(height))
     throw std::invalid_argument("generateQuarterCylinder: radius and height must be positive finite numbers");
   if (!(bandWidth > 0.0) || !(bandWidth < radius * std::sqrt(0.5)))
-    throw std::invalid_argument("generateQuarterCylinder: the band's width must lie in (0, R / sqrt 2), the x of "
-                                "the 45 degree point");
+    throw std::invalid_argument("generateQuarterCylinder: fine band " + std::to_string(bandWidth) +
+                                " m must lie in (0, radius / sqrt 2 = " + std::to_string(radius * std::sqrt(0.5)) +
+                                " m), the x of the arc's 45 degree point");
   if (cells.band < 1 || cells.contact < 1 || cells.side < 1 || cells.radial < 1 || cells.axial < 1)
     throw std::invalid_argument("generateQuarterCylinder: cell counts must be >= 1");
   const int na = cells.band + cells.contact, nb = cells.side, nr = cells.radial, nz = cells.axial;
