@@ -3,7 +3,7 @@
 // cells of the fine band per Hertz half-width), measured as tests/integration/test_hertz.cpp
 // measures them (HertzContact.hpp). One row per run in bench/results/hertz.csv.
 //
-//   cmake --build build --target bench_hertz && build/bench/bench_hertz [--scales 0.25,0.5,1,2]
+//   cmake --build build --target bench_hertz && build/bench_hertz [--scales 0.25,0.5,1,2]
 #include <cstdio>
 #include <fstream>
 #include <iostream>
