@@ -98,7 +98,7 @@ class Xml:
 
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
          reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None,
-         matrix=None, linear=None, face_sets=None, contact=None, neural=None, output=None, nonlinear=None):
+         matrix=None, linear=None, face_sets=None, contact=None, neural=None, output=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
@@ -115,8 +115,7 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     neural: None (the active groups fully activated from t = 0) or {parameter: (type, value)} of
     each active group's neural input time function (the activation then starts at 0 and follows
     u(t) through the activation dynamics).
-    output, nonlinear: None or {parameter: (type, value)} added to the Output or Nonlinear solver
-    section."""
+    output: None or {parameter: (type, value)} added to the Output section."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -273,11 +272,6 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.open("Incompressibility")
     x.add("method", "string", "augmented Lagrangian")
     x.close()
-    if nonlinear is not None:
-        x.open("Nonlinear solver")
-        for key, (typ, value) in nonlinear.items():
-            x.add(key, typ, value)
-        x.close()
     if linear is not None:
         x.open("Linear solver")
         for key, (typ, value) in linear.items():
@@ -485,7 +479,7 @@ Three rigid obstacles, frictionless (inputs/tongue/, same ArtiSynth model and fr
 The bones tolerate 0.05 mm of overlap at the start (the imaged tongue's two free nodes 0.02 mm
 inside the mandible). The attachment nodes stay fixed, so their faces are left out: a point inside
 the bone whose nodes cannot move would never meet the gap tolerance. The tip is left out of the
-jaw's face set because the coarse mandible's facets stall Newton there (doc/tongue.md).
+jaw's face set: where it meets the mandible Newton stalls (doc/tongue.md).
 The resultant of 'palate zone' (the palate side within 12 mm of the midline, where the palate
 pushes and no styloglossus insertion lies) is the force the palate exerts, for the balance check."""
 deck("tongue_palate", "The tongue pressed on the palate by the styloglossus and the transversus.\n" + COMMON + PALATE,
