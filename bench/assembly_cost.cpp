@@ -9,11 +9,11 @@
 // Prints and appends to FILE (default bench/results/assembly_cost.csv) per deck: elements, the
 // median over R repeats of one assembly and of its element work, per element, and their ratio.
 // A deck with contacts is also assembled without them (the same scene, its Contact section
-// dropped): contact_share is (with - without) / without of the fastest repeats, the cost of the
-// search and the contact assembly against the rest of an assembly. --lift adds a rigid lift DZ [m] along +z to the
-// state, so that a body below an obstacle (the tongue under the palate) is pressed into it and
-// its contact points are active, not only searched. --contact keeps only the deck's contact of
-// that name (one obstacle's cost).
+// dropped), the two in turn: contact_share is (with - without) / without of the fastest repeats,
+// the cost of the search and the contact assembly against the rest of an assembly. --lift adds a
+// rigid lift DZ [m] along +z to the state, so that a body below an obstacle (the tongue under the
+// palate) is pressed into it and its contact points are active, not only searched. --contact
+// keeps only the deck's contact of that name (one obstacle's cost).
 #include <algorithm>
 #include <chrono>
 #include <fstream>
@@ -41,7 +41,7 @@ double median(std::vector<double> v) {
 // One scene's assembler at the sheared (and lifted) state: one assembly (residual and tangent) or
 // its element work alone, on demand.
 class Subject {
-public:
+ public:
   Subject(const glossa::model::Scene &scene, const Teuchos::RCP<const Teuchos::Comm<int>> &comm, double lift,
           double time)
       : time_(time) {
@@ -69,7 +69,7 @@ public:
   void assemble() const { assembler_->assemble(*u_, time_, lambda_, nullptr, f_.get(), K_.get()); }
   void elementWork() const { results_->evaluateElementsOnly(*u_, lambda_); }
 
-private:
+ private:
   double time_;
   std::unique_ptr<glossa::model::MuscleHistory> history_;
   std::unique_ptr<glossa::assembly::Assembler> assembler_;
@@ -86,16 +86,16 @@ double seconds(const std::function<void()> &f) {
 }
 
 struct Cost {
-  double assembly = 0.0;      // one assembly (residual and tangent), median [s]
-  double work = 0.0;          // its element work alone, median [s]
-  double fastest = 0.0;       // the fastest assembly: the least disturbed by other work on a shared machine [s]
-  double fastestBare = 0.0;   // the same without the contacts [s]
+  double assembly = 0.0;  // one assembly (residual and tangent), median [s]
+  double work = 0.0;      // its element work alone, median [s]
+  double fastest = 0.0;   // the fastest assembly: the least disturbed by other work on a shared machine [s]
+  double fastestBare = 0.0;  // the same without the contacts [s]
 };
 
 // Assemblies of the scene with and without its contacts, taken in turn (so that a change of the
 // machine's load falls on both alike), and the element work.
-Cost measure(const glossa::model::Scene &scene, const Teuchos::RCP<const Teuchos::Comm<int>> &comm, int repeats,
-             double lift, double time) {
+Cost measure(const glossa::model::Scene &scene, const Teuchos::RCP<const Teuchos::Comm<int>> &comm,
+             int repeats, double lift, double time) {
   const Subject with(scene, comm, lift, time);
   glossa::model::Scene bare = scene;
   bare.contacts.clear();
@@ -139,7 +139,8 @@ int main(int argc, char **argv) {
     csv.open(out, std::ios::app);
     if (fresh)
       csv << "deck,ranks,elements,repeats,assembly_ms,element_work_ms,assembly_us_per_element,"
-             "element_work_us_per_element,ratio,lift_m,contacts,fastest_assembly_ms,fastest_without_contact_ms,"
+             "element_work_us_per_element,ratio,lift_m,contacts,fastest_assembly_ms,fastest_without_contact_"
+             "ms,"
              "contact_share\n";
   }
   const Teuchos::ParameterList schema = app::deckSchema();
@@ -163,15 +164,16 @@ int main(int argc, char **argv) {
     if (root) {
       // Per element of the whole mesh: with several ranks, the wall time of the slowest rank's share.
       std::cout << std::fixed << std::setprecision(3) << label << ": " << elements << " elements, assembly "
-                << 1e3 * c.assembly << " ms, element work " << 1e3 * c.work << " ms, ratio " << c.assembly / c.work;
+                << 1e3 * c.assembly << " ms, element work " << 1e3 * c.work << " ms, ratio "
+                << c.assembly / c.work;
       if (!scene.contacts.empty())
-        std::cout << "; fastest " << 1e3 * c.fastest << " ms, without its " << scene.contacts.size() << " contacts "
-                  << 1e3 * without << " ms: contact share " << share;
+        std::cout << "; fastest " << 1e3 * c.fastest << " ms, without its " << scene.contacts.size()
+                  << " contacts " << 1e3 * without << " ms: contact share " << share;
       std::cout << "\n";
       csv << label << "," << ranks << "," << elements << "," << repeats << "," << 1e3 * c.assembly << ","
-          << 1e3 * c.work << "," << 1e6 * c.assembly * ranks / elements << "," << 1e6 * c.work * ranks / elements
-          << "," << c.assembly / c.work << "," << lift << "," << scene.contacts.size() << "," << 1e3 * c.fastest << ","
-          << 1e3 * without << "," << share << "\n";
+          << 1e3 * c.work << "," << 1e6 * c.assembly * ranks / elements << ","
+          << 1e6 * c.work * ranks / elements << "," << c.assembly / c.work << "," << lift << ","
+          << scene.contacts.size() << "," << 1e3 * c.fastest << "," << 1e3 * without << "," << share << "\n";
     }
   }
   return 0;
