@@ -79,3 +79,32 @@ TEST(MovingContact, PlaneMovedByARampPushesTheBlockByExactlyItsDisplacement) {
     EXPECT_EQ(contact[k].values[5], 0.0);  // frictionless: no tangential force
   }
 }
+
+// Tied contact (friction = tied, penalty 1e10 Pa/m): the plane presses the top down by delta, then
+// pulls it back up to +delta. Each point stays where it touched: at t = 1 every traced top node is
+// at +delta to within the penalty's offset |t| / eps (|t| the mean normal traction), the contact
+// carries tension (a negative normal force) that the rollers balance, and the tied top, kept from
+// shrinking sideways, carries a tangential force.
+TEST(MovingContact, TiedPlanePullsTheBlockUpAfterPressingIt) {
+  const auto output = test::scratchDirectory("moving_plane_block_tied");
+  const double eps = 1e10;
+  const auto s = test::runDeck(test::inputPath("verification/moving_plane_block.xml"),
+                               {"Contact/press/friction=tied", "Contact/press/penalty=1e10", "Contact/press/enforcement=penalty",
+                                "Contact/press/translation z time function/type=table",
+                                "Contact/press/translation z time function/times={0, 0.5, 1}",
+                                "Contact/press/translation z time function/values={0, 1, -1}"},
+                               output);
+  ASSERT_TRUE(s.at("converged").get<bool>());
+  const auto contact = test::readKeyedCsv(output / "contact.csv").at("press");
+  const auto bottom = test::readKeyedCsv(output / "reactions.csv").at("bottom");
+  const auto &last = contact.back().values;
+  ASSERT_EQ(contact.back().time, 1.0);
+  const double N = last[1], area = last[0];
+  EXPECT_LT(N, 0.0);
+  EXPECT_NEAR(bottom.back().values[2], N, 1e-6 * std::abs(N));
+  EXPECT_GT(last[5], 0.0);
+  for (const auto &r : test::readTraces(output / "traces.csv")) {
+    if (r.time != 1.0 || r.point.rfind("top", 0) != 0) continue;
+    EXPECT_NEAR(r.u[2], delta, 3.0 * std::abs(N) / area / eps) << r.point;
+  }
+}
