@@ -18,6 +18,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "doc"))
@@ -35,8 +36,8 @@ def keyed(path, key):
         return [[float(v) for v in row[:1] + row[2:]] for row in csv.reader(f) if row and row[1] == key]
 
 
-def run(glossa, mesh, mu):
-    out = os.path.join(RESULTS, "ironing", f"{mesh}_mu{mu}")
+def run(glossa, mesh, mu, scratch):
+    out = os.path.join(scratch, f"{mesh}_mu{mu}")
     cmd = [glossa, "run", DECK, "--quiet", "--output", out, "--set", f"Contact/die/friction coefficient={mu}"]
     for s in MESHES[mesh]:
         cmd += ["--set", s]
@@ -97,9 +98,11 @@ def main():
             rows = [{k: (v if k == "mesh" else float(v)) for k, v in r.items()} for r in csv.DictReader(f)]
     else:
         rows = []
-        for mesh in a.meshes.split(","):
-            for mu in (0.0, 0.3):
-                rows += run(a.glossa, mesh, mu)
+        # The runs' own files (fields, checkpoints) are not kept: the CSV holds what is measured.
+        with tempfile.TemporaryDirectory(prefix="glossa_ironing_") as scratch:
+            for mesh in a.meshes.split(","):
+                for mu in (0.0, 0.3):
+                    rows += run(a.glossa, mesh, mu, scratch)
         with open(path, "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=COLUMNS)
             w.writeheader()
