@@ -192,6 +192,10 @@ void checkPartValues(const json &part, double time, const CheckpointShape &shape
     const std::string name = "contact[" + std::to_string(c) + "]";
     values(member(contacts[c], name, "multipliers"), name + "/multipliers", shape.contactPoints[c], 0.0, HUGE_VAL,
            "a contact pressure");
+    values(member(contacts[c], name, "anchors"), name + "/anchors", 3 * shape.contactPoints[c], -HUGE_VAL, HUGE_VAL,
+           "a position");
+    values(member(contacts[c], name, "anchored"), name + "/anchored", shape.contactPoints[c], 0.0, 1.0, "0 or 1");
+    values(member(contacts[c], name, "slip"), name + "/slip", shape.contactPoints[c], 0.0, HUGE_VAL, "a slip length");
   }
 }
 

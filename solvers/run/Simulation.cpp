@@ -109,7 +109,7 @@ void Simulation::recordContacts(const UzawaResult &uzawa, nlohmann::json &step) 
   for (std::size_t c = 0; c < uzawa.contacts.size(); ++c) {
     const contact::ContactMeasures &m = uzawa.contacts[c];
     const model::RigidContact &contact = run.scene->contacts[c];
-    contacts[contact.name] = {{"area", m.area}, {"normal_force", m.normalForce},
+    contacts[contact.name] = {{"area", m.area}, {"normal_force", m.normalForce}, {"tangential_force", m.tangentialForce},
                               {"largest_penetration", m.largestPenetration}, {"active_points", m.activePoints},
                               {"largest_gap_error", m.largestGapError}, {"gap_met", m.gapMet()},
                               {"enforcement", contact.augmented() ? "augmented Lagrangian" : "penalty"}};

@@ -30,7 +30,7 @@ StepRecorder::StepRecorder(const assembly::ResultEvaluator &results, const std::
     contacts_ = std::make_unique<io::KeyedCsvWriter>(
         dir / "contact.csv", "contact",
         std::vector<std::string>{"area [m^2]", "normal_force [N]", "largest_penetration [m]", "active_points [-]",
-                                 "largest_gap_error [m]"},
+                                 "largest_gap_error [m]", "tangential_force [N]"},
         resumeAt("contact.csv"));
   const auto &mesh = results.scene().mesh;
   if (fields_ && resume)
@@ -117,7 +117,8 @@ void StepRecorder::recordContacts(double time, const std::vector<contact::Contac
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     const contact::ContactMeasures &m = contacts[c];
     rows.push_back({scene.contacts[c].name,
-                    {m.area, m.normalForce, m.largestPenetration, static_cast<double>(m.activePoints), m.largestGapError}});
+                    {m.area, m.normalForce, m.largestPenetration, static_cast<double>(m.activePoints), m.largestGapError,
+                     m.tangentialForce}});
   }
   contacts_->append(time, rows);
 }
@@ -129,6 +130,7 @@ std::vector<io::Field> StepRecorder::nodeFields(const std::vector<double> &uAll)
   assembly::ContactNodeFields contact = assembly::contactNodeFields(evaluator_);
   fields.push_back({"contact_pressure", 1, std::move(contact.pressure)});
   fields.push_back({"contact_gap", 1, std::move(contact.gap)});
+  fields.push_back({"contact_slip", 1, std::move(contact.slip)});
   return fields;
 }
 

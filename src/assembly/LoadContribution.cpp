@@ -152,15 +152,17 @@ private:
   const model::DirichletCondition &support_;
 };
 
-// Frictionless contact of a face set with a rigid obstacle (contact/FaceContact): a follower
-// load, the obstacle's push on the faces that touch it, with the state's trial multipliers under
-// the augmented Lagrangian (none for the penalty method).
+// Contact of a face set with a rigid obstacle (contact/FaceContact): a follower load, the
+// obstacle's push and friction on the faces that touch it, with the state's trial multipliers
+// under the augmented Lagrangian (none for the penalty method) and its committed anchors. A moving
+// obstacle is put where it is at the evaluation's time first.
 class RigidContactContribution final : public LoadContribution {
 public:
   explicit RigidContactContribution(const model::RigidContact &contact) : contact_(contact) {}
   Kind kind() const override { return Kind::follower; }
   bool onSurface() const override { return true; }
-  bool addTo(const LoadTarget &target, double) const override {
+  bool addTo(const LoadTarget &target, double time) const override {
+    if (contact_.motion) contact_.motion->setTime(time);
     const contact::FaceMultipliers none{0.0, 0.0, 0.0, 0.0};
     for (std::size_t i = 0; i < contact_.faces.size(); ++i) {
       const auto &face = contact_.faces[i];
@@ -168,9 +170,12 @@ public:
       const FaceAtTarget f = faceAt(target, face);
       const contact::FaceMultipliers lambda =
           contact_.augmented() && contact_.state ? contact_.state->trialMultipliers(i) : none;
+      contact::FaceAnchors anchors;
+      if (contact_.state) anchors = contact_.state->committedAnchors(i);
       loads::FaceTangent Kf; // filled, and read, only with a tangent
       const loads::FaceForces ff = contact::faceContactForces(*contact_.obstacle, f.X, f.u, lambda, contact_.settings,
-                                                              nullptr, target.K ? &Kf : nullptr);
+                                                              nullptr, target.K ? &Kf : nullptr,
+                                                              contact_.state ? &anchors : nullptr);
       target.subtract(f.nodes.data(), 4, ff.data(), target.K ? Kf.data() : nullptr);
     }
     return true;

@@ -110,6 +110,13 @@ void ModelEvaluator::acceptSolution(const Thyra::VectorBase<double> &x, Vector &
   for (std::size_t i = 0; i < lambda_.size(); ++i) lambda_[i] = pressure_->sigma[i] * data[i];
 }
 
+void ModelEvaluator::setTime(double t) {
+  time_ = t;
+  tangentCached_ = false;
+  for (const auto &contact : assembler_->scene().contacts)
+    if (contact.motion) contact.motion->setTime(t);
+}
+
 void ModelEvaluator::beginStep(double time, double dt, const std::vector<double> &inputs) {
   TEUCHOS_TEST_FOR_EXCEPTION(!history_ && !inputs.empty(), std::logic_error, "neural inputs without a muscle history");
   setTime(time);

@@ -38,11 +38,9 @@ public:
                  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory,
                  model::MuscleHistory *history = nullptr, std::vector<mesh::NodeId> responseNodes = {});
 
-  // Nominal p0.
-  void setTime(double t) {
-    time_ = t;
-    tangentCached_ = false;
-  }
+  // Nominal p0, and the pose of every moving obstacle (which the contacts' output and Uzawa
+  // updates at a converged state read).
+  void setTime(double t);
   // Nominal p0 and p2 for a step of length dt from the committed state: the time, and the neural
   // inputs of every muscle group over the step (a controller's candidate; empty: the deck's
   // u(t)). The muscle history begins the step at them (its trial activation, eq. 24), which every

@@ -1,6 +1,7 @@
 #pragma once
 // The deck's "Contact" section: one sublist per contact of a face set of the body with a rigid
-// obstacle (plane, sphere, cylinder, or a triangulated surface from an OBJ or STL file), declared
+// obstacle (plane, sphere, cylinder, or a triangulated surface from an OBJ or STL file), at rest
+// or moving, frictionless, with Coulomb friction or tied, declared
 // and parsed into model::RigidContact
 // (doc/contact.md, "In decks").
 
@@ -14,9 +15,11 @@ namespace glossa::input {
 // The parameters of one contact (the section's template sublist).
 Teuchos::ParameterList contactParameters();
 
-// The deck's contacts (validated deck) into scene.contacts; a missing face set, a zero normal or
-// axis, a missing radius, penalty or surface file, and nodes that start inside the obstacle deeper
-// than the deck tolerates are DeckErrors naming the parameter (a bad surface file: SurfaceError).
-void buildContacts(const io::Deck &deck, const mesh::HexMesh &m, model::Scene &scene);
+// The deck's contacts (validated deck) into scene.contacts, moving obstacles with their time
+// functions (`endTime`: the deck's own, a ramp's default duration); a missing face set, a zero
+// normal or axis, a missing radius, penalty or surface file, and nodes that start inside the
+// obstacle deeper than the deck tolerates are DeckErrors naming the parameter (a bad surface
+// file: SurfaceError).
+void buildContacts(const io::Deck &deck, const mesh::HexMesh &m, double endTime, model::Scene &scene);
 
 }  // namespace glossa::input

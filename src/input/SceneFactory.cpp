@@ -324,18 +324,6 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
   return m;
 }
 
-// The time function of the sublist at `path`; an inconsistent table is a DeckError there.
-TimeFunction timeFunction(const io::Deck &deck, const std::vector<std::string> &path, double endTime) {
-  const ParameterList *list = &deck.root();
-  for (const auto &p : path) list = &list->sublist(p);
-  refuseUnreadTimeFunctionParameters(deck, path);
-  try {
-    return parseTimeFunction(*list, endTime);
-  } catch (const std::invalid_argument &e) {
-    throw io::DeckError(deck.where(path) + ": " + e.what());
-  }
-}
-
 // Mesh/reference coordinates file (§8.1): the zero-strain configuration replaces the node
 // positions after everything that selects by geometry (face sets by box and normal, named points,
 // fibre directions from the polylines) has been done on the mesh as read: those are labels of the
@@ -400,7 +388,7 @@ std::vector<DirichletCondition> buildBoundaryConditions(const io::Deck &deck, co
     const std::string comps = b.get<std::string>("components");
     for (int i = 0; i < 3; ++i) bc.fixed[i] = comps.find("xyz"[i]) != std::string::npos;
     bc.value = vec3(b.get<Array<double>>("value"));
-    bc.scale = timeFunction(deck, {"Boundary conditions", name, "time function"}, endTime);
+    bc.scale = timeFunctionAt(deck, {"Boundary conditions", name, "time function"}, endTime);
     for (int c = 0; c < 3; ++c) {
       const char *key = c == 0 ? "ux" : c == 1 ? "uy" : "uz";
       const std::string text = b.get<std::string>(key);
@@ -443,7 +431,7 @@ void buildLoads(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Sc
       FollowerPressureLoad load;
       load.name = name;
       load.faces = faceSetAt(deck, m, {"Loads", name, "face set"});
-      const TimeFunction b = timeFunction(deck, {"Loads", name, "time function"}, endTime);
+      const TimeFunction b = timeFunctionAt(deck, {"Loads", name, "time function"}, endTime);
       const double pMax = l.get<double>("pressure");
       if (l.get<std::string>("profile") == "uniform") {
         load.pressure = loads::PressureField::uniform(pMax, b);
@@ -477,7 +465,7 @@ void buildLoads(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Sc
         body.acceleration = loads::postureGravity(posture, g);
       }
       body.gravity = type == "gravity";
-      body.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
+      body.scale = timeFunctionAt(deck, {"Loads", name, "time function"}, endTime);
       scene.bodyForces.push_back(std::move(body));
       continue;
     }
@@ -485,7 +473,7 @@ void buildLoads(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Sc
     load.name = name;
     load.faces = faceSetAt(deck, m, {"Loads", name, "face set"});
     load.traction = vec3(l.get<Array<double>>("traction"));
-    load.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
+    load.scale = timeFunctionAt(deck, {"Loads", name, "time function"}, endTime);
     scene.tractions.push_back(std::move(load));
   }
 }
@@ -542,7 +530,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
 
   scene.dirichlet = buildBoundaryConditions(deck, m, endTime);
   buildLoads(deck, m, endTime, scene);
-  buildContacts(deck, m, scene);
+  buildContacts(deck, m, endTime, scene);
   traceNamedPoints(deck, scene);
   if (scene.tracedPoints.empty())
     scene.meshNotes.push_back("no named points: traces.csv and final_displacement will be empty; name points "

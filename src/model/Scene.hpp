@@ -13,6 +13,7 @@
 
 #include "contact/ContactState.hpp"
 #include "contact/FaceContact.hpp"
+#include "contact/MovingObstacle.hpp"
 #include "contact/Obstacle.hpp"
 #include "materials/IsochoricMaterial.hpp"
 #include "materials/VolumetricEnergy.hpp"
@@ -82,11 +83,16 @@ struct FollowerPressureLoad {
 // How a contact's condition g >= 0 is enforced (doc/contact.md, "Penalty and augmented Lagrangian").
 enum class ContactEnforcement { penalty, augmentedLagrangian };
 
-// Frictionless contact of a face set with a rigid obstacle (contact/FaceContact, doc/contact.md).
+// Contact of a face set with a rigid obstacle, frictionless, with Coulomb friction or tied
+// (contact/FaceContact, doc/contact.md).
 struct RigidContact {
   std::string name;
   std::vector<mesh::ElementFace> faces;
   std::shared_ptr<const contact::Obstacle> obstacle;
+  // The same obstacle when it moves in time (null: at rest): the run sets its time where the
+  // loads get theirs (the model evaluator's time, each evaluation's). Mutable through a const
+  // scene, as `state`.
+  std::shared_ptr<contact::MovingObstacle> motion;
   contact::ContactSettings settings;
   ContactEnforcement enforcement = ContactEnforcement::augmentedLagrangian;
   double gapTolerance = 0; // [m]: the Uzawa loop's bound on the largest gap error (augmented Lagrangian)
