@@ -54,11 +54,15 @@ double ResultEvaluator::storedEnergy(const Vector &u, const std::vector<double> 
     double energy = r.energy;
     if (scene_.formulation == model::ElementFormulation::Q1P0) {
       // The kernel's volumetric part is the augmented Lagrangian's, V (U_t(theta) + Lambda (theta - 1)):
-      // the physical one is V U(theta) of the tissue's own law (none where it is incompressible,
-      // kappa infinite: there theta = 1 to the Uzawa loop's tolerance).
+      // the physical one is V U(theta_p) of the tissue's own law at the dilatation theta_p it gives
+      // the element pressure p = U_t'(theta) + Lambda (theta itself with a penalty, where U_t = U
+      // and Lambda = 0). At kappa/mu = 5e4, U at theta would turn the Uzawa tolerance's 1e-3 in
+      // theta into an energy 3 times the motion's; an incompressible tissue (kappa infinite)
+      // stores none.
       const materials::VolumetricEnergy &physical = scene_.tissueOf(e).volumetric;
       energy -= r.referenceVolume * (assembler_.volumetricLaw(e).energy(r.theta) + lambda[i] * (r.theta - 1.0));
-      if (std::isfinite(physical.kappa())) energy += r.referenceVolume * physical.energy(r.theta);
+      if (std::isfinite(physical.kappa()))
+        energy += r.referenceVolume * physical.energy(physical.dilatationAtPressure(r.pressure));
     }
     mine += energy;
   }
