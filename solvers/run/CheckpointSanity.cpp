@@ -168,6 +168,11 @@ void checkPartValues(const json &part, double time, const CheckpointShape &shape
     }
     number(member(p, "multiplier_prediction", "last_dt"), "multiplier_prediction/last_dt", 0.0, HUGE_VAL, false, "");
   }
+  if (shape.dynamic) {
+    const json &inertia = member(part, "part", "inertia");
+    for (const char *key : {"u", "v", "a", "g"})
+      values(member(inertia, "inertia", key), std::string("inertia/") + key, shape.displacements, -HUGE_VAL, HUGE_VAL);
+  }
   const json &muscle = member(part, "part", "muscle");
   values(member(muscle, "muscle", "lambda_c"), "muscle/lambda_c", shape.lambdaC, 0.0, HUGE_VAL, "a stretch");
   for (const auto &l : muscle.at("lambda_c"))
