@@ -3,16 +3,19 @@ and 10), with ParaView (Debian's pvpython; its build renders through X, hence xv
 
   xvfb-run -a pvpython doc/render_tongue.py RESULTS_DIR OUT.png [--field fibre_stretch_GGm]
                                             [--time T] [--range MIN MAX] [--cut | --no-cut]
+                                            [--view side | above]
 
 Reads RESULTS_DIR/results.xdmf (the run needs Output/fields on), takes the last step (or the
 one at --time), moves every node by its displacement and colours the mesh by --field: a cell
 field glossa writes (fibre_stretch_<group>, contractile_stretch_<group>, ffmr_<group>, J,
-dilatation, pressure, ...) or 'displacement' (its magnitude, mm; the default). A field of one
+dilatation, pressure, ...), a scalar node field (contact_pressure, drawn in kPa; contact_gap) or
+'displacement' (its magnitude, mm; the default). A field of one
 muscle group is drawn on that group's elements only (muscle_set_<group> = 1), opaque, inside the
 rest of the tongue drawn as a translucent grey shell. --cut cuts the mesh at the midsagittal
 plane (the plane halfway across y, whole elements) and shows the cut face. The colour range is
 the 2nd to 98th percentile of the values drawn (a stretch: symmetric about 1) unless --range.
-The camera faces the sagittal plane (+x posterior to the right, +z superior up). The title
+The camera faces the sagittal plane (+x posterior to the right, +z superior up), or with
+--view above looks down on the dorsum (+x posterior to the right, +y up). The title
 names the run's deck and scene.
 """
 import argparse
@@ -38,6 +41,8 @@ def parse(argv):
     cut.add_argument("--cut", dest="cut", action="store_true", default=None,
                      help="cut at the midsagittal plane (whole elements) and show the cut face")
     cut.add_argument("--no-cut", dest="cut", action="store_false", help="draw the whole mesh (default)")
+    p.add_argument("--view", choices=("side", "above"), default="side",
+                   help="side: the sagittal plane from -y (default); above: the dorsum from +z")
     p.add_argument("--size", nargs=2, type=int, default=(1400, 900), metavar=("W", "H"), help="pixels")
     return p.parse_args(argv)
 
@@ -92,8 +97,9 @@ def main(argv):
     time = times[-1] if args.time is None else min(times, key=lambda t: abs(t - args.time))
     reader.UpdatePipeline(time)
     cell_fields = list(reader.CellData.keys())
-    if args.field != "displacement" and args.field not in cell_fields:
-        sys.exit(f"no cell field '{args.field}' in {xdmf}; it has: displacement, " + ", ".join(cell_fields))
+    point_fields = [f for f in reader.PointData.keys() if f != "displacement"]
+    if args.field != "displacement" and args.field not in cell_fields + point_fields:
+        sys.exit(f"no field '{args.field}' in {xdmf}; it has: displacement, " + ", ".join(cell_fields + point_fields))
     group = group_of(args.field, cell_fields)
     cut = bool(args.cut)
 
@@ -114,6 +120,13 @@ def main(argv):
         coloured = pv.Calculator(Input=coloured, AttributeType="Point Data", ResultArrayName="displacement_mm",
                                  Function="mag(displacement)*1000")
         array, association, bar_title = "displacement_mm", "POINTS", "|u| [mm]"
+    elif args.field == "contact_pressure":
+        # In kPa, the unit tongue-palate pressures are measured and reported in.
+        coloured = pv.Calculator(Input=coloured, AttributeType="Point Data", ResultArrayName="contact_pressure_kPa",
+                                 Function="contact_pressure/1000")
+        array, association, bar_title = "contact_pressure_kPa", "POINTS", "contact pressure [kPa]"
+    elif args.field in point_fields:
+        array, association, bar_title = args.field, "POINTS", args.field
     else:
         array, association, bar_title = args.field, "CELLS", args.field
     coloured.UpdatePipeline(time)
@@ -165,10 +178,15 @@ def main(argv):
     shown.FontSize = 20
     shown.WindowLocation = "Upper Center"
 
-    # Facing the sagittal plane from -y: +x (posterior) to the right, +z (superior) up.
-    view.CameraPosition = [0.0, -1.0, 0.0]
+    if args.view == "above":
+        # Looking down on the dorsum from +z: +x (posterior) to the right, +y (the right side) up.
+        view.CameraPosition = [0.0, 0.0, 1.0]
+        view.CameraViewUp = [0.0, 1.0, 0.0]
+    else:
+        # Facing the sagittal plane from -y: +x (posterior) to the right, +z (superior) up.
+        view.CameraPosition = [0.0, -1.0, 0.0]
+        view.CameraViewUp = [0.0, 0.0, 1.0]
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
-    view.CameraViewUp = [0.0, 0.0, 1.0]
     view.CameraParallelProjection = 1
     view.ResetCamera()
     view.CameraParallelScale *= 0.8

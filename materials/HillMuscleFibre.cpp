@@ -85,7 +85,19 @@ HillFibreResponse HillMuscleFibre::evaluate(const HillFibreInput &in) const {
   // R(lambda_f) = -T_c < 0; R(lambda_lo) >= T0max T0s alpha max(f_cL f_cV) - T_c >= 0.
   // (1 % margin on the bound against round-off in T_s(lambda_lo).)
   const double tensionBound = 1.01 * contractile_.T0max() * in.alpha * contractile_.capacityBound();
-  const double lo = in.lambdaF / series_.stretchAtTension(tensionBound);
+  const double lambdaSBound = series_.stretchAtTension(tensionBound);
+  // Vanishing activation (alpha ~ 1e-16 a step after a neural input starts from 0): the series
+  // stretch at the largest contractile tension is then within round-off of 1, lambda_lo rounds
+  // onto lambda_f (or lambda_f / lambda_lo - 1 is too coarse for the 1 % margin) and the bracket
+  // is lost. Below kRigidSeriesStretch the series element is rigid beside the contractile
+  // element: lambda_c = lambda_f, T_s = T_c(lambda_f), dT_s/dlambda_f = dT_c/dlambda_c +
+  // (1/dt) dT_c/drate, the limit of the taut branch (errors of order kRigidSeriesStretch
+  // relative to T_c), which tends to the passive response as alpha -> 0.
+  if (lambdaSBound - 1.0 < kRigidSeriesStretch) {
+    const SeriesTension rigid{atFibre.T, 0.0, 0.0, 0.0};  // psi_s ~ T_s^2 / (2 T0max c1 c2) ~ 0
+    return finish(in.lambdaF, rigid, atFibre.dLambdaC + atFibre.dRate / in.dt, HillSolveStatus::Taut);
+  }
+  const double lo = in.lambdaF / lambdaSBound;
   auto residual = [&](double lambdaC) {
     const SeriesTension s = series_.evaluate(in.lambdaF, lambdaC);
     const ContractileTension c = contractile_.evaluate(lambdaC, (lambdaC - in.lambdaCOld) / in.dt, in.alpha);

@@ -76,6 +76,10 @@ class HillMuscleFibre {
   static HillMuscleFibre tableI(double T0s, ContractileCurves curves);
   // residualTolerance 1e-9 Pa (T0max ~ 1e5..1e6 Pa), xTolerance 1e-14.
   static ScalarSolveOptions defaultSolverOptions();
+  // Below this series stretch at the largest contractile tension (alpha <~ 2e-11 with Table I)
+  // the series element is taken as rigid: lambda_f / lambda_lo - 1 is then resolved to better
+  // than 1 % (its round-off is ~2 ulp), so the bracket's 1 % margin holds above it.
+  static constexpr double kRigidSeriesStretch = 1e4 * std::numeric_limits<double>::epsilon();
 
   HillFibreResponse evaluate(const HillFibreInput &in) const;
 

@@ -98,7 +98,7 @@ class Xml:
 
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
          reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None,
-         matrix=None, linear=None):
+         matrix=None, linear=None, face_sets=None, contact=None, neural=None, output=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
@@ -109,7 +109,13 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     control: None or {parameter: (type, value)} of the Control section (neural control, §6.1).
     matrix: None (the Fung muscle matrix of Table I, exactly incompressible) or
     {parameter: (type, value)} of the Material section's matrix law.
-    linear: None or {parameter: (type, value)} of the Linear solver section."""
+    linear: None or {parameter: (type, value)} of the Linear solver section.
+    face_sets: None or {name: {parameter: (type, value)}}, face sets beside 'airway'.
+    contact: None or {name: {parameter: (type, value)}} of the Contact section (doc/contact.md).
+    neural: None (the active groups fully activated from t = 0) or {parameter: (type, value)} of
+    each active group's neural input time function (the activation then starts at 0 and follows
+    u(t) through the activation dynamics).
+    output: None or {parameter: (type, value)} added to the Output section."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -152,6 +158,11 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.add("box min", "Array(double)", "{-1, -1, 0.065}")
     x.add("box max", "Array(double)", "{1, 1, 1}")
     x.close()
+    for fname, params in (face_sets or {}).items():
+        x.open(fname)
+        for key, (typ, value) in params.items():
+            x.add(key, typ, value)
+        x.close()
     x.close()
     if reference is not None:
         x.add("reference coordinates file", "string", reference)
@@ -163,7 +174,14 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     for g in GROUPS:
         x.open(g)
         x.add("T0s", "double", active.get(g, 0.1))
-        if g in active:
+        if g in active and neural is not None:
+            # Activation from rest: alpha follows u(t) through the activation dynamics (eq. 24).
+            x.add("neural input scale", "double", 1)
+            x.open("neural input")
+            for key, (typ, value) in neural.items():
+                x.add(key, typ, value)
+            x.close()
+        elif g in active:
             # Fully activated from the start: alpha = 1 throughout, so FFMR = T0s alpha = T0s.
             x.add("initial activation", "double", 1)
             x.add("neural input scale", "double", 1)
@@ -233,6 +251,14 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.close()
         x.close()
     x.close()
+    if contact is not None:
+        x.open("Contact")
+        for cname, params in contact.items():
+            x.open(cname)
+            for key, (typ, value) in params.items():
+                x.add(key, typ, value)
+            x.close()
+        x.close()
     x.open("Named points")
     for pname, _, pos in POINTS:
         x.open(pname)
@@ -264,6 +290,8 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.open("Output")
     x.add("directory", "string", f"results/{name}")
     x.add("every", "int", output_every)
+    for key, (typ, value) in (output or {}).items():
+        x.add(key, typ, value)
     x.close()
     x.close()
     with open(os.path.join(HERE, name + ".xml"), "w") as f:
@@ -429,3 +457,53 @@ for posture, g in POSTURES:
              "maintenance by neural control.\n" + COMMON + BREATHING + CONTROLLED + text + gravity,
              {}, gravity=g, pressure=-350.0, end_time=8.75, step=0.3125, breathing_start=1.25,
              reference="s8_1/reference_inverse.txt", control=control, linear=linear)
+
+PALATE = """
+The tongue against the palate (doc/tongue.md, "The tongue against the palate"): upright gravity
+ramped over [0, 1] s on the zero-strain configuration of s8_1 (s8_1/reference_inverse.txt), which
+brings the tongue to its imaged shape, clear of the palate by 1.62 mm at the nearest; then the
+styloglossus (SG) and the transversus (TV), the muscles of a velar /k/ or a high /i/, at FFMR
+10 %, their neural input ramped from 0 at t = 0.99 s to 1 at t = 1.49 s (the activation dynamics,
+eq. 24, behind it) and held to 2 s: the dorsum rises into the palatal vault and the velum and
+the tongue base is drawn back to the pharyngeal wall. (The ramp starts 0.01 s before the gravity
+ramp ends so that no step ends on the knee itself, where round-off in the step's time gives an
+activation of about 1e-16, too small for the Hill fibre's contractile solve; doc/tongue.md.)
+Three rigid obstacles, frictionless (inputs/tongue/, same ArtiSynth model and frame):
+- palate8.obj, the hard palate, velum and posterior pharyngeal wall, against the face set
+  'palate side' (the boundary faces above the hyoid attachment, z >= 0.065 m, facing up or
+  back), by the augmented Lagrangian, penalty 1e8 Pa/m, to the default gap tolerance (1e-3 of
+  the faces' mean edge);
+- ICPJaw3.obj (mandible) against 'jaw side': the boundary faces above its attachment box
+  (z >= 0.085 m) and behind the tip (x >= 0.07 m), so no attachment node is in it;
+- ICPHyoid3.obj against 'hyoid side': the faces between the hyoid's attachment box and z = 0.085 m.
+The bones tolerate 0.05 mm of overlap at the start (the imaged tongue's two free nodes 0.02 mm
+inside the mandible). The attachment nodes stay fixed, so their faces are left out: a point inside
+the bone whose nodes cannot move would never meet the gap tolerance. The tip is left out of the
+jaw's face set: where it meets the mandible Newton stalls (doc/tongue.md).
+The resultant of 'palate zone' (the palate side within 12 mm of the midline, where the palate
+pushes and no styloglossus insertion lies) is the force the palate exerts, for the balance check."""
+deck("tongue_palate", "The tongue pressed on the palate by the styloglossus and the transversus.\n" + COMMON + PALATE,
+     {"SG": 0.1, "TV": 0.1}, gravity=(0, 0, -1), end_time=2.0, step=0.05, reference="s8_1/reference_inverse.txt",
+     neural={"type": ("string", "table"), "times": ("Array(double)", "{0, 0.99, 1.49}"),
+             "values": ("Array(double)", "{0, 0, 1}")},
+     face_sets={"palate side": {"outward normal": ("Array(double)", "{1, 0, 2}"),
+                                "minimum cosine": ("double", 0.0),
+                                "box min": ("Array(double)", "{-1, -1, 0.065}"),
+                                "box max": ("Array(double)", "{1, 1, 1}")},
+                "jaw side": {"box min": ("Array(double)", "{0.07, -1, 0.085}"),
+                             "box max": ("Array(double)", "{0.107, 1, 1}")},
+                "palate zone": {"from": ("string", "palate side"),
+                                "box min": ("Array(double)", "{-1, -0.012, -1}"),
+                                "box max": ("Array(double)", "{1, 0.012, 1}")},
+                "hyoid side": {"box min": ("Array(double)", "{0.1, -1, 0.0655}"),
+                               "box max": ("Array(double)", "{1, 1, 0.085}")}},
+     contact={"palate": {"face set": ("string", "palate side"), "obstacle": ("string", "surface"),
+                         "file": ("string", "../tongue/palate8.obj"), "penalty": ("double", 1e8),
+                         "search radius": ("double", 5e-3)},
+              "jaw": {"face set": ("string", "jaw side"), "obstacle": ("string", "surface"),
+                      "file": ("string", "../tongue/ICPJaw3.obj"), "penalty": ("double", 1e8),
+                      "search radius": ("double", 5e-3), "start overlap tolerance": ("double", 0.05e-3)},
+              "hyoid": {"face set": ("string", "hyoid side"), "obstacle": ("string", "surface"),
+                        "file": ("string", "../tongue/ICPHyoid3.obj"), "penalty": ("double", 1e8),
+                        "search radius": ("double", 5e-3), "start overlap tolerance": ("double", 0.05e-3)}},
+     output={"resultant face sets": ("string", "palate side, palate zone")})

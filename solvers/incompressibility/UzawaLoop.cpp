@@ -15,8 +15,8 @@ namespace glossa::solvers {
 
 UzawaLoop::UzawaLoop(const assembly::ResultEvaluator &results, const NewtonSolver &newton,
                      const IncompressibilityParameters &s, Augmentation &augmentation)
-    : results_(results), newton_(newton), augmentation_(augmentation), augmented_(s.method == IncompressibilityMethod::augmentedLagrangian),
-      mixed_(s.method == IncompressibilityMethod::mixed), tolerance_(s.dilatationTolerance),
+    : results_(results), newton_(newton), augmented_(s.method == IncompressibilityMethod::augmentedLagrangian),
+      mixed_(s.method == IncompressibilityMethod::mixed), augmentation_(augmentation), tolerance_(s.dilatationTolerance),
       maxIterations_(s.maximumUzawaIterations), inexact_(augmented_ && s.inexactUzawa),
       innerTolerance_(s.innerTolerance), innerLinearTolerance_(s.innerLinearTolerance) {
   const model::Scene &scene = results.scene();
@@ -146,7 +146,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     // one is within its gap tolerance: the loop ends when both the volume and the contacts are.
     result.contacts = assembly::updateContactStates(results_, u);
     const bool gapMet = result.gapMet();
-    if (onUzawa) onUzawa(k, result.newton.back(), result.dilatation);
+    if (onUzawa) onUzawa(k, result.newton.back(), result.dilatation, result.contacts);
     const bool volumeMet = !measuresPhysicalLaw() || result.dilatation.max < tolerance_;
     if (volumeMet && gapMet) {
       if (tight) {

@@ -35,7 +35,10 @@ public:
   // Solves at fixed time; u and lambda are updated in place (the caller keeps copies to roll
   // back). `residualTolerance` is absolute, or given by the norm of the first Newton solve's
   // initial residual (the rule is asked once; every solve of the loop uses its answer).
-  using UzawaCallback = std::function<void(int, const NewtonResult &, const DilatationError &)>;
+  // `onUzawa` sees, after each converged Newton solve k, that solve, the dilatation error and the
+  // contacts' measures (their gap errors) at it.
+  using UzawaCallback = std::function<void(int, const NewtonResult &, const DilatationError &,
+                                           const std::vector<contact::ContactMeasures> &)>;
   UzawaResult solve(assembly::Vector &u, std::vector<double> &lambda, double residualTolerance,
                     const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const;
   UzawaResult solve(assembly::Vector &u, std::vector<double> &lambda, const NewtonSolver::ToleranceRule &residualTolerance,

@@ -68,6 +68,19 @@ void checkRunConfiguration(const io::Deck &deck, const RunConfiguration &config,
   if (config.incompressibility.method == IncompressibilityMethod::mixed)
     requireMixedCompatible(config.linear, config.controlled, scene);
   const bool onPath = config.time.pathFollowing == PathFollowing::arcLength;
+  if (config.time.dynamics.dynamic()) {
+    // Inertia enters the condensed displacement system's residual and tangent; the mixed block
+    // system and a load path parametrised by the time have no place for it.
+    if (config.incompressibility.method == IncompressibilityMethod::mixed)
+      throw io::DeckError(deck.where({"Time", "analysis"}) + " = dynamic needs the displacement formulation: " +
+                          deck.where({"Incompressibility", "method"}) + " is mixed; allowed with dynamic: penalty or "
+                          "augmented Lagrangian");
+    if (onPath || config.time.atLimitPoint == AtLimitPoint::follow)
+      throw io::DeckError(deck.where({"Time", "analysis"}) + " = dynamic steps in time: " +
+                          deck.where({"Time", onPath ? "path following" : "at a limit point"}) +
+                          " asks for arc-length continuation; allowed with dynamic: path following = load control, "
+                          "at a limit point = stop or ignore");
+  }
   if (onPath || config.time.atLimitPoint == AtLimitPoint::follow)
     requireArcLengthCompatible(deck, config, scene, context.restart, onPath ? "path following" : "at a limit point");
   for (const auto &[key, sets] : {std::make_pair("resultant face sets", &config.output.resultantFaceSets),

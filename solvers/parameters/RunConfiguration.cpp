@@ -70,6 +70,7 @@ RunConfiguration parseRunConfiguration(const io::Deck &deck) {
   c.deckFile = deck.file();
   c.time = parseTimeParameters(D.sublist("Time"));
   c.time.rampEndTime = deckEndTime(deck);
+  checkDynamicsParameters(deck, c.time.dynamics);
   c.incompressibility = parseIncompressibilityParameters(D.sublist("Incompressibility"));
   c.newton = parseNewtonParameters(D.sublist("Nonlinear solver"));
   c.linear = parseLinearSolverParameters(D.sublist("Linear solver"));

@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
+#include "io/deck/SpaceTimeExpression.hpp"
 
 namespace glossa::solvers {
 
@@ -54,6 +56,29 @@ Teuchos::ParameterList timeParameters() {
   io::declareDouble(p, "limit point tolerance", 0.01, "",
                     "a limit point is located once the bracket's step is below this fraction of the nominal "
                     "step size", io::Range::open(0.0, 1.0));
+  io::declareString(p, "analysis", "static",
+                    "static: quasi-static steps, no inertia; dynamic: M a + C v + f_int = f_ext by generalized-alpha "
+                    "(Chung-Hulbert), velocities and accelerations in the state, the fields and the checkpoint, "
+                    "energy.csv (doc/dynamics.md)",
+                    {"static", "dynamic"});
+  io::declareDouble(p, "spectral radius", 1.0, "",
+                    "dynamic: generalized-alpha's spectral radius at infinite frequency rho_inf; 1 is Newmark's "
+                    "trapezoidal rule (no numerical dissipation, energy conserved in linear problems), smaller "
+                    "values damp the modes a step does not resolve while staying second order",
+                    io::Range::closed(0.0, 1.0));
+  io::declareString(p, "mass matrix", "consistent",
+                    "dynamic: consistent (int rho N_a N_b dV) or lumped (its row sums on the diagonal); each "
+                    "element at its tissue's density",
+                    {"consistent", "lumped"});
+  io::declareDouble(p, "Rayleigh mass coefficient", 0.0, "1/s",
+                    "dynamic: alpha of the damping C = alpha M + beta K_0", io::Range::atLeast(0.0));
+  io::declareDouble(p, "Rayleigh stiffness coefficient", 0.0, "s",
+                    "dynamic: beta of the damping C = alpha M + beta K_0 (K_0 the tangent at the initial state)",
+                    io::Range::atLeast(0.0));
+  for (const char *name : {"initial vx", "initial vy", "initial vz"})
+    io::declareString(p, name, "0",
+                      "dynamic: the velocity component at t = 0 [m/s] as an expression of the reference position "
+                      "X, Y, Z [m] (e.g. \"0.01 * X / 0.05\"); at supported components the support's own rate");
   return p;
 }
 
@@ -71,7 +96,37 @@ TimeParameters parseTimeParameters(const Teuchos::ParameterList &s) {
   t.pathFollowing = s.get<std::string>("path following") == "arc length" ? PathFollowing::arcLength : PathFollowing::loadControl;
   t.arcLengthSteps = s.get<int>("arc length steps");
   t.stopAtDisplacement = s.get<double>("stop at displacement");
+  DynamicsParameters &d = t.dynamics;
+  d.analysis = s.get<std::string>("analysis") == "dynamic" ? Analysis::dynamic : Analysis::quasiStatic;
+  d.spectralRadius = s.get<double>("spectral radius");
+  d.mass = s.get<std::string>("mass matrix") == "lumped" ? fem::MassLumping::lumped : fem::MassLumping::consistent;
+  d.rayleighMass = s.get<double>("Rayleigh mass coefficient");
+  d.rayleighStiffness = s.get<double>("Rayleigh stiffness coefficient");
+  d.initialVelocity = {s.get<std::string>("initial vx"), s.get<std::string>("initial vy"),
+                       s.get<std::string>("initial vz")};
   return t;
+}
+
+void checkDynamicsParameters(const io::Deck &deck, const DynamicsParameters &dynamics) {
+  static const char *const kDynamicOnly[] = {"spectral radius", "mass matrix", "Rayleigh mass coefficient",
+                                              "Rayleigh stiffness coefficient", "initial vx", "initial vy",
+                                              "initial vz"};
+  if (!dynamics.dynamic()) {
+    for (const char *name : kDynamicOnly)
+      if (deck.given({"Time", name}))
+        throw io::DeckError(deck.where({"Time", name}) + ": only a dynamic run reads it, and Time/analysis is "
+                            "static; set Time/analysis = dynamic or remove it");
+    return;
+  }
+  const char *const names[3] = {"initial vx", "initial vy", "initial vz"};
+  for (int c = 0; c < 3; ++c) {
+    try {
+      io::SpaceTimeExpression check(dynamics.initialVelocity[c]);
+    } catch (const std::invalid_argument &e) {
+      throw io::DeckError(deck.where({"Time", names[c]}) + ": " + e.what() +
+                          " (an initial velocity is read at t = 0)");
+    }
+  }
 }
 
 double deckEndTime(const io::Deck &deck) {

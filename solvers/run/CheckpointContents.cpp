@@ -1,5 +1,6 @@
 #include "solvers/run/CheckpointContents.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "io/output/CheckpointError.hpp"
@@ -47,13 +48,28 @@ model::MuscleHistory::Snapshot muscleSnapshotFromJson(const nlohmann::json &j) {
   return h;
 }
 
-nlohmann::json toJson(const contact::ContactState::Snapshot &state) { return {{"multipliers", state.multipliers}}; }
+// JSON has no NaN: a point without an anchor is written as anchored 0 with zero coordinates.
+nlohmann::json toJson(const contact::ContactState::Snapshot &state) {
+  std::vector<double> anchors(state.anchors.size(), 0.0), anchored(state.slip.size(), 0.0);
+  for (std::size_t i = 0; i < anchored.size(); ++i) {
+    if (!std::isfinite(state.anchors[3 * i])) continue;
+    anchored[i] = 1.0;
+    for (std::size_t k = 0; k < 3; ++k) anchors[3 * i + k] = state.anchors[3 * i + k];
+  }
+  return {{"multipliers", state.multipliers}, {"anchors", anchors}, {"anchored", anchored}, {"slip", state.slip}};
+}
 
 contact::ContactState::Snapshot contactSnapshotFromJson(const nlohmann::json &j) {
   contact::ContactState::Snapshot state;
   state.multipliers = j.at("multipliers").get<std::vector<double>>();
   state.gap.assign(state.multipliers.size(), std::numeric_limits<double>::infinity());
   state.pressure.assign(state.multipliers.size(), 0.0);
+  state.anchors = j.at("anchors").get<std::vector<double>>();
+  state.slip = j.at("slip").get<std::vector<double>>();
+  const auto anchored = j.at("anchored").get<std::vector<double>>();
+  for (std::size_t i = 0; i < anchored.size() && 3 * i + 2 < state.anchors.size(); ++i)
+    if (anchored[i] == 0.0)
+      for (std::size_t k = 0; k < 3; ++k) state.anchors[3 * i + k] = std::numeric_limits<double>::quiet_NaN();
   return state;
 }
 

@@ -168,6 +168,11 @@ void checkPartValues(const json &part, double time, const CheckpointShape &shape
     }
     number(member(p, "multiplier_prediction", "last_dt"), "multiplier_prediction/last_dt", 0.0, HUGE_VAL, false, "");
   }
+  if (shape.dynamic) {
+    const json &inertia = member(part, "part", "inertia");
+    for (const char *key : {"u", "v", "a", "g"})
+      values(member(inertia, "inertia", key), std::string("inertia/") + key, shape.displacements, -HUGE_VAL, HUGE_VAL);
+  }
   const json &muscle = member(part, "part", "muscle");
   values(member(muscle, "muscle", "lambda_c"), "muscle/lambda_c", shape.lambdaC, 0.0, HUGE_VAL, "a stretch");
   for (const auto &l : muscle.at("lambda_c"))
@@ -192,6 +197,10 @@ void checkPartValues(const json &part, double time, const CheckpointShape &shape
     const std::string name = "contact[" + std::to_string(c) + "]";
     values(member(contacts[c], name, "multipliers"), name + "/multipliers", shape.contactPoints[c], 0.0, HUGE_VAL,
            "a contact pressure");
+    values(member(contacts[c], name, "anchors"), name + "/anchors", 3 * shape.contactPoints[c], -HUGE_VAL, HUGE_VAL,
+           "a position");
+    values(member(contacts[c], name, "anchored"), name + "/anchored", shape.contactPoints[c], 0.0, 1.0, "0 or 1");
+    values(member(contacts[c], name, "slip"), name + "/slip", shape.contactPoints[c], 0.0, HUGE_VAL, "a slip length");
   }
 }
 

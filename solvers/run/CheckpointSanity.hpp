@@ -29,6 +29,7 @@ struct CheckpointShape {
   std::size_t lambdaC = 0;                     // contractile stretches on this rank
   std::vector<std::size_t> externalLambdaC;    // per external muscle
   std::vector<std::size_t> contactPoints;      // per contact: its multipliers (4 per face)
+  bool dynamic = false;                        // Time/analysis = dynamic: the inertia's vectors
   std::filesystem::path outputDirectory;       // where the CSV files it records the lengths of are
 };
 

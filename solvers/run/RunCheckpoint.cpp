@@ -145,6 +145,7 @@ CheckpointShape checkpointShape(const RunParts &run) {
   shape.displacements = run.assembler->layout().ownedMap()->getNodeNumElements();
   shape.elements = run.assembler->layout().numLocalElements();
   shape.tissues = run.uzawa->penaltyRatios().size();
+  shape.dynamic = run.config.time.dynamics.dynamic();
   const model::MuscleHistory::Snapshot history = run.history->snapshot();
   shape.groups = history.alpha.size();
   shape.lambdaC = history.lambdaC.size();
@@ -158,6 +159,7 @@ void writeCheckpoint(RunParts &run) {
   nlohmann::json part, state;
   run.stepper->save(part, state);
   part["muscle"] = toJson(run.history->snapshot());
+  if (run.inertia) run.inertia->save(part);
   if (!run.scene->contacts.empty()) {
     nlohmann::json contacts = nlohmann::json::array();
     for (const auto &contact : run.scene->contacts)
@@ -188,6 +190,7 @@ void restoreRun(RunParts &run, const Restart &restart) {
   try {
     run.stepper->restore(restart.part, restart.run);
     run.history->restore(muscleSnapshotFromJson(restart.part.at("muscle")));
+    if (run.inertia) run.inertia->restore(restart.part);
     for (std::size_t c = 0; c < run.scene->contacts.size(); ++c)
       if (run.scene->contacts[c].state)
         run.scene->contacts[c].state->restore(contactSnapshotFromJson(restart.part.at("contact").at(c)));

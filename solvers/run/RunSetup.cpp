@@ -93,7 +93,10 @@ void buildSolvers(RunParts &run) {
   if (onPath || config.time.atLimitPoint == AtLimitPoint::follow)
     run.arcLength = std::make_unique<ArcLengthSettings>(arcLengthSettings(config, *run.assembler));
   run.solver = std::make_unique<StepSolver>(run.stepSolverParts(), scene, run.linearPlan.keptScope, run.detail, run.talk);
-  if (mixedPressure.is_null() && !onPath && config.time.atLimitPoint != AtLimitPoint::ignore)
+  // A dynamic step's tangent carries the mass: its stiffness along the path says nothing of a
+  // limit point of the static load path.
+  if (mixedPressure.is_null() && !onPath && config.time.atLimitPoint != AtLimitPoint::ignore &&
+      !config.time.dynamics.dynamic())
     run.watch = std::make_unique<PathWatch>(
         *run.assembler, *run.model, *run.newton, config.time.steps.nominal, config.time.limitPointTolerance, run.talk,
         config.incompressibility.method == IncompressibilityMethod::augmentedLagrangian ? run.augmentation.get() : nullptr);
@@ -215,7 +218,8 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
   run->report->recordingOutputFailure([&] {
     run->recorder = std::make_unique<StepRecorder>(assembly::ResultEvaluator(*run->assembler), dir, output.fields, run->root,
                                                    output.resultantFaceSets, output.volumeFaceSets,
-                                                   run->restart ? &run->restart->outputs : nullptr);
+                                                   run->restart ? &run->restart->outputs : nullptr,
+                                                   run->config.time.dynamics.dynamic());
   });
   // None on an arc-length path (its direction and step are LOCA's own state).
   run->checkpoints = std::make_unique<RunCheckpoint>(dir, comm, output.checkpointEvery);
@@ -229,6 +233,11 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
                             run->config.incompressibility.method != IncompressibilityMethod::penalty);
   run->stepper = std::make_unique<LoadStepper>(
       run->config.time.steps, extrapolate, StepState(run->assembler->layout().ownedMap(), run->assembler->layout().numLocalElements()));
+  if (run->config.time.dynamics.dynamic()) {
+    run->inertia = std::make_unique<Inertia>(*run->assembler, run->config.time.dynamics, run->stepper->committed());
+    run->model->setInertia(run->inertia.get());
+    run->recorder->showInertia(run->inertia.get());
+  }
   if (run->control.enabled) {
     std::optional<std::uintmax_t> resumeAt;
     if (run->restart && run->restart->outputs.csvBytes.count("controls.csv"))

@@ -17,6 +17,7 @@
 #include "solvers/parameters/ControlSection.hpp"
 #include "solvers/parameters/RunConfiguration.hpp"
 #include "solvers/run/ControlledSteps.hpp"
+#include "solvers/run/Inertia.hpp"
 #include "solvers/run/LoadStepper.hpp"
 #include "solvers/run/PathWatch.hpp"
 #include "solvers/run/RunCheckpoint.hpp"
@@ -67,6 +68,7 @@ struct RunParts {
   std::unique_ptr<RunCheckpoint> checkpoints;
   std::unique_ptr<StepRecorder> recorder;
   std::unique_ptr<LoadStepper> stepper;
+  std::unique_ptr<Inertia> inertia;              // Time/analysis = dynamic; else null
   std::unique_ptr<ControlledSteps> controlled;   // a controlled deck's; else null
 
   StepSolverParts stepSolverParts() const;

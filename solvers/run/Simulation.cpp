@@ -32,6 +32,7 @@ Simulation::Simulation(const io::Deck &deck, const RunConfiguration &config,
       const auto contacts = assembly::updateContactStates(assembly::ResultEvaluator(*run.assembler), state.u);
       run.recorder->record(0.0, state.u, state.lambda, true, initial, inputs);
       run.recorder->recordContacts(0.0, contacts);
+      recordEnergy(nullptr);
       run.report->write(assemblyCounters(*run.model));
     });
   if (run.controlled) run.controlled->setCommittedStretch(initial.groupMeanStretch);
@@ -59,6 +60,9 @@ void Simulation::commit() {
         assembly::ResultEvaluator(*run.assembler).elementDilatations(trial.state.u, trial.state.lambda)));
   else run.stepper->commit(trial.attempt.uzawa.nextMultipliers);
   const double t = run.stepper->time();
+  // At the converged state, before the muscle history is committed: the quasi-static forces it
+  // keeps are those the step was solved with.
+  if (run.inertia) run.inertia->commit(run.stepper->committed(), t);
   if (run.watch && !onPath_) run.watch->accepted(t, trial.attempt.pathStiffness);
   // The muscle history is committed after the output, whose stresses are those of the converged
   // state: this step's activation with the committed lambda_c it was solved with.
@@ -93,6 +97,7 @@ void Simulation::record(const StepTrial &trial) {
     step["activation"] = activation;
   }
   recordContacts(trial.attempt.uzawa, step);
+  recordEnergy(&step);
   if (trial.attempt.uzawa.augmentationRaises > 0) step["penalty_ratios"] = run.uzawa->penaltyRatios();
   if (run.controlled) step["control"] = run.controlled->record(trial, run.stepper->time());
   run.report->addStep(trial, run.stepper->time(), onPath_, run.model->assemblySeconds(), step);
@@ -109,7 +114,7 @@ void Simulation::recordContacts(const UzawaResult &uzawa, nlohmann::json &step) 
   for (std::size_t c = 0; c < uzawa.contacts.size(); ++c) {
     const contact::ContactMeasures &m = uzawa.contacts[c];
     const model::RigidContact &contact = run.scene->contacts[c];
-    contacts[contact.name] = {{"area", m.area}, {"normal_force", m.normalForce},
+    contacts[contact.name] = {{"area", m.area}, {"normal_force", m.normalForce}, {"tangential_force", m.tangentialForce},
                               {"largest_penetration", m.largestPenetration}, {"active_points", m.activePoints},
                               {"largest_gap_error", m.largestGapError}, {"gap_met", m.gapMet()},
                               {"enforcement", contact.augmented() ? "augmented Lagrangian" : "penalty"}};
@@ -123,6 +128,17 @@ void Simulation::recordContacts(const UzawaResult &uzawa, nlohmann::json &step) 
   // Over the run: every step's augmented contacts within their gap tolerance, and the largest
   // gap error any of them ended a step with.
   overall = {{"gap_tolerance_met", met}, {"largest_gap_error", largest}};
+}
+
+void Simulation::recordEnergy(nlohmann::json *step) {
+  RunParts &run = *run_;
+  if (!run.inertia) return;
+  const StepState &state = run.stepper->committed();
+  StepEnergy energy;
+  energy.kinetic = run.inertia->kineticEnergy();
+  energy.stored = assembly::ResultEvaluator(*run.assembler).storedEnergy(state.u, state.lambda);
+  run.recorder->recordEnergy(run.stepper->time(), energy);
+  if (step) (*step)["energy"] = {{"kinetic", energy.kinetic}, {"strain", energy.stored}, {"total", energy.total()}};
 }
 
 bool Simulation::rollBack() {

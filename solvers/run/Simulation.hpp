@@ -45,6 +45,8 @@ private:
   // The contacts of a converged step into its summary entry, and the run's gap verdict
   // (summary.json: contact).
   void recordContacts(const UzawaResult &uzawa, nlohmann::json &step);
+  // A dynamic run's energies at the committed state, to energy.csv and into the step's record.
+  void recordEnergy(nlohmann::json *step);
   void followPath(); // by arc length from the committed state to the path's end
   void finish();
   // The fields' time in results.xdmf on the path, where t may fall: the path's start plus the

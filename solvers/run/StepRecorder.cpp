@@ -3,12 +3,13 @@
 #include "assembly/ContactResponse.hpp"
 #include "io/output/OutputError.hpp"
 #include "materials/ActivationDynamics.hpp"
+#include "solvers/run/Inertia.hpp"
 
 namespace glossa::solvers {
 
 StepRecorder::StepRecorder(const assembly::ResultEvaluator &results, const std::filesystem::path &dir, bool fields,
                            bool writer, std::vector<std::string> resultantSets, std::vector<std::string> volumeSets,
-                           const OutputMark *resume)
+                           const OutputMark *resume, bool dynamic)
     : evaluator_(results), root_(writer), fields_(fields), resultantSets_(std::move(resultantSets)),
       volumeSets_(std::move(volumeSets)) {
   if (!root_) return;
@@ -30,8 +31,12 @@ StepRecorder::StepRecorder(const assembly::ResultEvaluator &results, const std::
     contacts_ = std::make_unique<io::KeyedCsvWriter>(
         dir / "contact.csv", "contact",
         std::vector<std::string>{"area [m^2]", "normal_force [N]", "largest_penetration [m]", "active_points [-]",
-                                 "largest_gap_error [m]"},
+                                 "largest_gap_error [m]", "tangential_force [N]"},
         resumeAt("contact.csv"));
+  if (dynamic)
+    energy_ = std::make_unique<io::KeyedCsvWriter>(
+        dir / "energy.csv", "body",
+        std::vector<std::string>{"kinetic_energy [J]", "strain_energy [J]", "total_energy [J]"}, resumeAt("energy.csv"));
   const auto &mesh = results.scene().mesh;
   if (fields_ && resume)
     results_ = std::make_unique<io::ResultWriter>(dir, "results", mesh.numNodes(), mesh.numElements(), resume->fieldSteps);
@@ -72,7 +77,8 @@ OutputMark StepRecorder::mark() const {
   OutputMark m;
   if (!root_) return m;
   m.csvBytes["traces.csv"] = traces_->bytes();
-  for (const auto *csv : {resultants_.get(), volumes_.get(), reactions_.get(), activation_.get(), contacts_.get()})
+  for (const auto *csv : {resultants_.get(), volumes_.get(), reactions_.get(), activation_.get(), contacts_.get(),
+                          energy_.get()})
     if (csv) m.csvBytes[csv->file().filename().string()] = csv->bytes();
   if (results_) m.fieldSteps = results_->steps();
   return m;
@@ -117,18 +123,28 @@ void StepRecorder::recordContacts(double time, const std::vector<contact::Contac
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     const contact::ContactMeasures &m = contacts[c];
     rows.push_back({scene.contacts[c].name,
-                    {m.area, m.normalForce, m.largestPenetration, static_cast<double>(m.activePoints), m.largestGapError}});
+                    {m.area, m.normalForce, m.largestPenetration, static_cast<double>(m.activePoints), m.largestGapError,
+                     m.tangentialForce}});
   }
   contacts_->append(time, rows);
 }
 
+void StepRecorder::recordEnergy(double time, const StepEnergy &energy) {
+  if (root_ && energy_) energy_->append(time, {{"all", {energy.kinetic, energy.stored, energy.total()}}});
+}
+
 std::vector<io::Field> StepRecorder::nodeFields(const std::vector<double> &uAll) const {
   std::vector<io::Field> fields{{"displacement", 3, uAll}};
+  if (inertia_) { // collective gathers
+    fields.push_back({"velocity", 3, evaluator_.gatherDisplacement(inertia_->velocity())});
+    fields.push_back({"acceleration", 3, evaluator_.gatherDisplacement(inertia_->acceleration())});
+  }
   if (evaluator_.scene().contacts.empty()) return fields;
   // Collective; as the Uzawa loop's last solve recorded them at this state.
   assembly::ContactNodeFields contact = assembly::contactNodeFields(evaluator_);
   fields.push_back({"contact_pressure", 1, std::move(contact.pressure)});
   fields.push_back({"contact_gap", 1, std::move(contact.gap)});
+  fields.push_back({"contact_slip", 1, std::move(contact.slip)});
   return fields;
 }
 

@@ -3,8 +3,9 @@
 // reactions of the Dirichlet conditions (reactions.csv), the muscle groups' input, activation,
 // FFMR and mean fibre and contractile stretch (activation.csv), the contacts (contact.csv), and, every `Output/every` steps, the fields for
 // ParaView (results.h5 and results_steps/ + XDMF: displacement, element pressure, dilatation, J, Cauchy stress and,
-// with muscles, fibre stress, directions, stretches and muscle sets). Every rank gathers; the
-// writer rank writes.
+// with muscles, fibre stress, directions, stretches and muscle sets; in a dynamic run velocity and
+// acceleration) and a dynamic run's energies (energy.csv). Every rank gathers; the writer rank
+// writes.
 
 #include <filesystem>
 #include <map>
@@ -25,6 +26,14 @@
 
 namespace glossa::solvers {
 
+class Inertia;
+
+// A dynamic step's energies [J]: kinetic (1/2) v.M v and stored (assembly::ResultEvaluator::storedEnergy).
+struct StepEnergy {
+  double kinetic = 0.0, stored = 0.0;
+  double total() const { return kinetic + stored; }
+};
+
 // How far every file had got when a checkpoint was made (the writer rank's): a restart cuts each
 // back to it, so the files end as an uninterrupted run's would.
 struct OutputMark {
@@ -41,7 +50,12 @@ public:
   // are written every step to resultants.csv and volumes.csv.
   StepRecorder(const assembly::ResultEvaluator &results, const std::filesystem::path &dir, bool fields, bool writer,
                std::vector<std::string> resultantSets = {}, std::vector<std::string> volumeSets = {},
-               const OutputMark *resume = nullptr);
+               const OutputMark *resume = nullptr, bool dynamic = false);
+  // A dynamic run's inertia (outliving this recorder), whose velocity and acceleration every
+  // field step then carries.
+  void showInertia(const Inertia *inertia) { inertia_ = inertia; }
+  // One row of energy.csv (dynamic runs; writer rank only).
+  void recordEnergy(double time, const StepEnergy &energy);
 
   // Where the files are now (empty on the ranks that do not write).
   OutputMark mark() const;
@@ -81,7 +95,8 @@ private:
   bool root_, fields_;
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;
-  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_, resultants_, volumes_, contacts_;
+  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_, resultants_, volumes_, contacts_, energy_;
+  const Inertia *inertia_ = nullptr;
   std::vector<std::string> resultantSets_, volumeSets_;
   std::map<std::string, std::vector<double>> fibreDirections_; // rank 0, per family
   std::vector<std::pair<std::string, std::vector<double>>> groupMembership_; // per group, per element

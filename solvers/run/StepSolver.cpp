@@ -58,10 +58,17 @@ StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool qui
   auto onNewton = [&](int k, double normF, int krylov) {
     if (progress) std::printf("    newton %2d  |f| = %.3e  krylov %d\n", k, normF, krylov);
   };
-  auto onUzawa = [&](int k, const NewtonResult &n, const DilatationError &e) {
-    if (progress)
-      std::printf("  uzawa %d: newton %d  krylov %d  dilatation error max %.2e  mean %.2e  max|theta-1| %.2e\n", k,
-                  n.iterations, n.linearIterations, e.max, e.mean, e.maxVolumeChange);
+  auto onUzawa = [&](int k, const NewtonResult &n, const DilatationError &e,
+                     const std::vector<contact::ContactMeasures> &contacts) {
+    if (!progress) return;
+    std::printf("  uzawa %d: newton %d  krylov %d  dilatation error max %.2e  mean %.2e  max|theta-1| %.2e", k,
+                n.iterations, n.linearIterations, e.max, e.mean, e.maxVolumeChange);
+    // The gap error beside the dilatation error: the loop ends when both are within tolerance.
+    for (std::size_t c = 0; c < contacts.size(); ++c)
+      if (contacts[c].augmented)
+        std::printf("  %s gap error %.2e (%ld points)", scene_.contacts[c].name.c_str(), contacts[c].largestGapError,
+                    contacts[c].activePoints);
+    std::printf("\n");
   };
   const std::vector<double> ratios = parts_.uzawa.penaltyRatios();
   out.uzawa = parts_.uzawa.solve(state.u, state.lambda, tolerance, onNewton, onUzawa);

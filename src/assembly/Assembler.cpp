@@ -302,6 +302,33 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
   return status;
 }
 
+void Assembler::assembleMass(FEMatrix &M, fem::MassLumping lumping, ConstrainedDofs constrained) const {
+  const mesh::HexMesh &mesh = scene_.mesh;
+  M.beginAssembly();
+  M.setAllToScalar(0.0);
+  auto local = M.getLocalMatrixHost();
+  const ElementScatter &scatter = elementScatter(M, local);
+  int localValid = 1;
+  for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+    const auto e = layout_.localElements[i];
+    fem::ElementMass me;
+    if (!fem::hexMass(mesh.elementCoordinates(e), scene_.tissueOf(static_cast<std::size_t>(e)).density, lumping, me))
+      localValid = 0;
+    if (constrained == ConstrainedDofs::zeroed)
+      for (int l = 0; l < 24; ++l)
+        if (constrained_[3 * mesh.elements[e][l / 3] + l % 3]) {
+          me.row(l).setZero();
+          me.col(l).setZero();
+        }
+    scatter.add(i, me, local.values.data());
+  }
+  M.endAssembly();
+  int globalValid = 0;
+  Teuchos::reduceAll(*layout_.comm(), Teuchos::REDUCE_MIN, localValid, Teuchos::outArg(globalValid));
+  // The constructor refused non-positive Jacobians already, so this is a broken invariant.
+  if (globalValid != 1) throw std::logic_error("Assembler::assembleMass: a degenerate element");
+}
+
 Vector Assembler::loadResidual(const Vector &u, double time) const {
   Vector uOverlap(layout_.overlapMap()), fOverlap(layout_.overlapMap()), f(layout_.ownedMap());
   importPrescribed(u, time, uOverlap);

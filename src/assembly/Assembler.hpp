@@ -27,6 +27,7 @@
 #include "assembly/ElementScatter.hpp"
 #include "assembly/LoadContribution.hpp"
 #include "assembly/TpetraTypes.hpp"
+#include "fem/HexMass.hpp"
 #include "fem/Q1P0Element.hpp"
 #include "model/MuscleHistory.hpp"
 #include "model/Scene.hpp"
@@ -96,6 +97,14 @@ public:
   AssemblyStatus assemble(const Vector &u, double time, const std::vector<double> &lambda,
                           const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K,
                           BasePoint point = BasePoint::byRequest) const;
+
+  // The mass matrix into M (a createMatrix matrix): fem::hexMass of every element at its
+  // tissue's density, the reference configuration's mass, constant in a Lagrangian run.
+  // `keep`: every entry, for the products M a that carry a prescribed motion's inertia to the
+  // free dofs; `zeroed`: the rows and columns of constrained dofs empty, for the tangent (whose
+  // own diagonal holds those rows). Collective.
+  enum class ConstrainedDofs { keep, zeroed };
+  void assembleMass(FEMatrix &M, fem::MassLumping lumping, ConstrainedDofs constrained) const;
 
   // The three-field linearisation at u for every local element (see fem::MixedBase);
   // `previous` carries the dilatation iterates forward. Collective (imports u).

@@ -23,10 +23,13 @@ void evaluateRigid(const LoadTarget &target, const model::RigidContact &contact,
     const contact::FaceMultipliers lambda =
         contact.augmented() && contact.state ? contact.state->trialMultipliers(i) : none;
     contact::FaceContactPoints points;
+    contact::FaceAnchors anchors;
+    if (contact.state) anchors = contact.state->committedAnchors(i);
     const bool tangent = target.residual && target.K;
     loads::FaceTangent Kf;  // filled, and read, only with a tangent
-    const loads::FaceForces ff = contact::faceContactForces(
-        *contact.obstacle, f.X, f.u, lambda, contact.settings, &points, tangent ? &Kf : nullptr);
+    const loads::FaceForces ff =
+        contact::faceContactForces(*contact.obstacle, f.X, f.u, lambda, contact.settings, &points,
+                                   tangent ? &Kf : nullptr, contact.state ? &anchors : nullptr);
     if (visit)
       for (std::size_t q = 0; q < points.size(); ++q) (*visit)(i, q, points[q]);
     if (target.residual) target.subtract(f.nodes.data(), 4, ff.data(), tangent ? Kf.data() : nullptr);

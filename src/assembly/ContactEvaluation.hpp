@@ -1,7 +1,7 @@
 #pragma once
 // One contact's faces of this rank evaluated at a load target's displacement, for the assembly
 // (forces and tangent subtracted) and for the state at a converged solve (each point's gap and
-// pressure): a rigid obstacle's faces through contact/FaceContact, a deformable pair's slave
+// pressure, and friction state): a rigid obstacle's faces through contact/FaceContact, a deformable pair's slave
 // faces through the search among their candidate master faces (contact/DeformablePair) and
 // contact/PairContact. The one place that gathers a contact's faces.
 
@@ -17,7 +17,8 @@ using ContactPointVisitor =
     std::function<void(std::size_t face, std::size_t q, const contact::ContactPointState &)>;
 
 // Evaluates `contact` on this rank's faces at the target's displacement with the state's trial
-// multipliers (augmented Lagrangian) or none (penalty): subtracts the forces, and with the
+// multipliers (augmented Lagrangian) or none (penalty), and a rigid obstacle's committed friction
+// anchors: subtracts the forces, and with the
 // target's K the tangent, if the target has a residual; passes every point to `visit` if given.
 // A deformable pair's forces on master nodes of other ranks go to this rank's ghosts of them (the
 // layout's couplings), which the export adds to their owners.

@@ -57,8 +57,10 @@ std::vector<ContactMeasures> updateContactStates(const ResultEvaluator &results,
   Vector uOverlap(results.overlapMap());
   results.importToOverlap(u, uOverlap);
   const LoadTarget target = results.loadTarget(uOverlap.getData(0), nullptr, nullptr, false);
-  // Per contact: sums (area, force, active points) and maxima (penetration, gap error).
-  std::vector<double> sums(3 * out.size(), 0.0), maxima(2 * out.size(), 0.0);
+  // Per contact: sums (area, normal force, active points, tangential force) and maxima
+  // (penetration, gap error).
+  constexpr std::size_t kSums = 4;
+  std::vector<double> sums(kSums * out.size(), 0.0), maxima(2 * out.size(), 0.0);
   for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
     const model::RigidContact &contact = scene.contacts[c];
     if (contact.pair) checkPairingMargin(contact, target, *layout.comm());
@@ -66,9 +68,10 @@ std::vector<ContactMeasures> updateContactStates(const ResultEvaluator &results,
       if (contact.state) contact.state->record(face, q, p);
       maxima[2 * c + 1] = std::max(maxima[2 * c + 1], contact::gapError(p));
       if (!p.active()) return;
-      sums[3 * c] += p.area;
-      sums[3 * c + 1] += p.pressure * p.area;
-      sums[3 * c + 2] += 1.0;
+      sums[kSums * c] += p.area;
+      sums[kSums * c + 1] += p.pressure * p.area;
+      sums[kSums * c + 2] += 1.0;
+      sums[kSums * c + 3] += p.tangential * p.area;
       maxima[2 * c] = std::max(maxima[2 * c], -p.gap);
     };
     evaluateContact(target, contact, &record);
@@ -78,9 +81,10 @@ std::vector<ContactMeasures> updateContactStates(const ResultEvaluator &results,
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(sums.size()), sums.data(), sumAll.data());
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, static_cast<int>(maxima.size()), maxima.data(), maxAll.data());
   for (std::size_t c = 0; c < out.size(); ++c) {
-    out[c].area = sumAll[3 * c];
-    out[c].normalForce = sumAll[3 * c + 1];
-    out[c].activePoints = static_cast<long>(sumAll[3 * c + 2]);
+    out[c].area = sumAll[kSums * c];
+    out[c].normalForce = sumAll[kSums * c + 1];
+    out[c].activePoints = static_cast<long>(sumAll[kSums * c + 2]);
+    out[c].tangentialForce = sumAll[kSums * c + 3];
     out[c].largestPenetration = maxAll[2 * c];
     out[c].largestGapError = maxAll[2 * c + 1];
     out[c].augmented = scene.contacts[c].augmented();
@@ -104,8 +108,9 @@ ContactNodeFields contactNodeFields(const ResultEvaluator &results) {
   const model::Scene &scene = results.scene();
   const DistributedLayout &layout = results.assembler().layout();
   const std::size_t nodes = scene.mesh.numNodes();
-  // Per node: pressure sum, its count, finite gap sum, its count.
-  std::vector<double> local(4 * nodes, 0.0), all(4 * nodes, 0.0);
+  // Per node: pressure sum, its count, finite gap sum, its count, slip sum.
+  constexpr std::size_t kPer = 5;
+  std::vector<double> local(kPer * nodes, 0.0), all(kPer * nodes, 0.0);
   for (const model::RigidContact &contact : scene.contacts) {
     if (!contact.state) continue;
     for (std::size_t i = 0; i < contact.faces.size(); ++i) {
@@ -115,19 +120,22 @@ ContactNodeFields contactNodeFields(const ResultEvaluator &results) {
         const int a = nearestFaceNode(contact, i, q);
         const auto node = static_cast<std::size_t>(scene.mesh.elements[face.element][mesh::kHexFaceNodes[face.localFace][a]]);
         const contact::ContactPointState point = contact.state->point(i, q);
-        local[4 * node] += point.pressure;
-        local[4 * node + 1] += 1.0;
+        local[kPer * node] += point.pressure;
+        local[kPer * node + 1] += 1.0;
+        local[kPer * node + 4] += point.slip;
         if (!std::isfinite(point.gap)) continue;
-        local[4 * node + 2] += point.gap;
-        local[4 * node + 3] += 1.0;
+        local[kPer * node + 2] += point.gap;
+        local[kPer * node + 3] += 1.0;
       }
     }
   }
   Teuchos::reduceAll(*layout.comm(), Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), all.data());
-  ContactNodeFields out{std::vector<double>(nodes, 0.0), std::vector<double>(nodes, std::nan(""))};
+  ContactNodeFields out{std::vector<double>(nodes, 0.0), std::vector<double>(nodes, std::nan("")),
+                        std::vector<double>(nodes, 0.0)};
   for (std::size_t n = 0; n < nodes; ++n) {
-    if (all[4 * n + 1] > 0) out.pressure[n] = all[4 * n] / all[4 * n + 1];
-    if (all[4 * n + 3] > 0) out.gap[n] = all[4 * n + 2] / all[4 * n + 3];
+    if (all[kPer * n + 1] > 0) out.pressure[n] = all[kPer * n] / all[kPer * n + 1];
+    if (all[kPer * n + 1] > 0) out.slip[n] = all[kPer * n + 4] / all[kPer * n + 1];
+    if (all[kPer * n + 3] > 0) out.gap[n] = all[kPer * n + 2] / all[kPer * n + 3];
   }
   return out;
 }

@@ -22,14 +22,14 @@ std::vector<ContactMeasures> updateContactStates(const ResultEvaluator &results,
 // met (measures from updateContactStates at the same u); true if any was updated.
 bool updateContactMultipliers(const model::Scene &scene, const std::vector<ContactMeasures> &measures);
 
-// The contact pressure [Pa] and gap [m] at every mesh node (on every rank), for ParaView: the
-// mean, over the contact faces holding the node, of the recorded values of the contact points
-// nearest it (point q of a rigid contact's face is nearest its node q, under both rules; a
-// pair's n x n points go to the node of their quadrant); a node on no contact
-// face has pressure 0 and, like one that no obstacle is within the search radius of, gap NaN.
+// The contact pressure [Pa], gap [m] and accumulated slip [m] at every mesh node (on every rank),
+// for ParaView: the mean, over the contact faces holding the node, of the recorded values of the
+// contact points nearest it (point q of a rigid contact's face is nearest its node q, under both
+// rules; a pair's n x n points go to the node of their quadrant); a node on no contact face has
+// pressure and slip 0 and, like one that no obstacle is within the search radius of, gap NaN.
 // From the states as updateContactStates last recorded them. Collective.
 struct ContactNodeFields {
-  std::vector<double> pressure, gap;
+  std::vector<double> pressure, gap, slip;
 };
 ContactNodeFields contactNodeFields(const ResultEvaluator &results);
 

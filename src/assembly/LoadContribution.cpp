@@ -141,15 +141,17 @@ private:
   const model::DirichletCondition &support_;
 };
 
-// Frictionless contact of a face set with a rigid obstacle or another face set
-// (assembly/ContactEvaluation): a follower load, with the state's trial multipliers under the
-// augmented Lagrangian (none for the penalty method).
+// Contact of a face set with a rigid obstacle or another face set (assembly/ContactEvaluation): a
+// follower load, the obstacle's push and friction on the faces that touch it, with the state's
+// trial multipliers under the augmented Lagrangian (none for the penalty method) and its committed
+// anchors. A moving obstacle is put where it is at the evaluation's time first.
 class ContactContribution final : public LoadContribution {
 public:
   explicit ContactContribution(const model::RigidContact &contact) : contact_(contact) {}
   Kind kind() const override { return Kind::follower; }
   bool onSurface() const override { return true; }
-  bool addTo(const LoadTarget &target, double) const override {
+  bool addTo(const LoadTarget &target, double time) const override {
+    if (contact_.motion) contact_.motion->setTime(time);
     evaluateContact(target, contact_, nullptr);
     return true;
   }

@@ -110,10 +110,18 @@ void ModelEvaluator::acceptSolution(const Thyra::VectorBase<double> &x, Vector &
   for (std::size_t i = 0; i < lambda_.size(); ++i) lambda_[i] = pressure_->sigma[i] * data[i];
 }
 
+void ModelEvaluator::setTime(double t) {
+  time_ = t;
+  tangentCached_ = false;
+  for (const auto &contact : assembler_->scene().contacts)
+    if (contact.motion) contact.motion->setTime(t);
+}
+
 void ModelEvaluator::beginStep(double time, double dt, const std::vector<double> &inputs) {
   TEUCHOS_TEST_FOR_EXCEPTION(!history_ && !inputs.empty(), std::logic_error, "neural inputs without a muscle history");
   setTime(time);
   if (history_) history_->beginStep(time, dt, inputs);
+  if (inertia_) inertia_->beginStep(dt);
   // As lambda_c: a step's solves start from the committed contact multipliers.
   for (const auto &contact : assembler_->scene().contacts)
     if (contact.state) contact.state->rollBack();
@@ -238,6 +246,8 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
   if (!pressure_.is_null()) {
     TEUCHOS_TEST_FOR_EXCEPTION(lambdaGiven || !inputs.is_null(), std::logic_error,
                                "with pressure unknowns the multipliers and inputs are the nominal ones");
+    TEUCHOS_TEST_FOR_EXCEPTION(inertia_ != nullptr, std::logic_error,
+                               "inertia with pressure unknowns is refused by the run's checks");
     evaluateMixed(in, out, time);
     assemblySeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return;
@@ -271,6 +281,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
   if (withTangent) {
     lastStatus_ = assembler_->assemble(*x, time, lambda, mixed_ ? &bases_ : nullptr, f.get(), matrix_.get(),
                                        Assembler::BasePoint::trial);
+    if (inertia_ && lastStatus_.valid) inertia_->addTo(*x, f.get(), matrix_.get());
     tangentCached_ = lastStatus_.valid;
     if (tangentCached_) {
       if (tangentPoint_.is_null() || !tangentPoint_->getMap()->isSameAs(*x->getMap()))
@@ -284,6 +295,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
     tangentCached_ = false;
     lastStatus_ = assembler_->assemble(*x, time, lambda, mixed_ ? &bases_ : nullptr,
                                        f.is_null() ? (K ? &fScratch : nullptr) : f.get(), K);
+    if (inertia_ && lastStatus_.valid) inertia_->addTo(*x, f.get(), K);
   }
   if (!lastStatus_.valid && !f.is_null()) f->putScalar(std::numeric_limits<double>::quiet_NaN());
   if (!f.is_null()) ++residualEvaluations_;

@@ -22,6 +22,7 @@
 #include <functional>
 
 #include "assembly/Assembler.hpp"
+#include "assembly/InertiaTerm.hpp"
 #include "assembly/MixedPressureState.hpp"
 #include "assembly/ResultEvaluator.hpp"
 
@@ -38,16 +39,20 @@ public:
                  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory,
                  model::MuscleHistory *history = nullptr, std::vector<mesh::NodeId> responseNodes = {});
 
-  // Nominal p0.
-  void setTime(double t) {
-    time_ = t;
-    tangentCached_ = false;
-  }
+  // Nominal p0, and the pose of every moving obstacle (which the contacts' output and Uzawa
+  // updates at a converged state read).
+  void setTime(double t);
   // Nominal p0 and p2 for a step of length dt from the committed state: the time, and the neural
   // inputs of every muscle group over the step (a controller's candidate; empty: the deck's
   // u(t)). The muscle history begins the step at them (its trial activation, eq. 24), which every
   // evaluation at the nominal p2 reads. Needs the history (the constructor's) when inputs are given.
   void beginStep(double time, double dt, const std::vector<double> &inputs = {});
+  // A dynamic run's inertia (owned by the caller, outliving this model): every residual and
+  // tangent then carries it, and beginStep begins its step. Null: quasi-static.
+  void setInertia(InertiaTerm *inertia) {
+    inertia_ = inertia;
+    tangentCached_ = false;
+  }
   // Nominal p1, per local element (zero until set). With element pressures as unknowns
   // (setMixedPressure) they are those pressures, which every accepted Newton iterate updates:
   // read them back after a solve.
@@ -113,6 +118,7 @@ private:
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> inputSpace_;    // p2, locally replicated
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> responseSpace_; // g0, locally replicated
   model::MuscleHistory *history_ = nullptr;
+  InertiaTerm *inertia_ = nullptr;
   std::vector<mesh::NodeId> responseNodes_;
   int groups_ = 0;
   Teuchos::RCP<FEMatrix> matrix_;

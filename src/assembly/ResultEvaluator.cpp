@@ -1,6 +1,7 @@
 #include "assembly/ResultEvaluator.hpp"
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -38,6 +39,35 @@ ElementFields ResultEvaluator::elementFields(const Vector &u, const std::vector<
     out.referenceVolume[i] = r.referenceVolume;
   }
   return out;
+}
+
+double ResultEvaluator::storedEnergy(const Vector &u, const std::vector<double> &lambda) const {
+  Vector uOverlap(layout_.overlapMap());
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  double mine = 0.0, all = 0.0;
+  for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+    const auto e = static_cast<std::size_t>(layout_.localElements[i]);
+    const fem::NodeMatrix X = scene_.mesh.elementCoordinates(layout_.localElements[i]);
+    const fem::Q1P0Result r = assembler_.evaluateElement(i, X, elementDisplacement(i, uData), lambda[i], nullptr,
+                                                         false, fem::Q1P0Output::ResidualOnly);
+    double energy = r.energy;
+    if (scene_.formulation == model::ElementFormulation::Q1P0) {
+      // The kernel's volumetric part is the augmented Lagrangian's, V (U_t(theta) + Lambda (theta - 1)):
+      // the physical one is V U(theta_p) of the tissue's own law at the dilatation theta_p it gives
+      // the element pressure p = U_t'(theta) + Lambda (theta itself with a penalty, where U_t = U
+      // and Lambda = 0). At kappa/mu = 5e4, U at theta would turn the Uzawa tolerance's 1e-3 in
+      // theta into an energy 3 times the motion's; an incompressible tissue (kappa infinite)
+      // stores none.
+      const materials::VolumetricEnergy &physical = scene_.tissueOf(e).volumetric;
+      energy -= r.referenceVolume * (assembler_.volumetricLaw(e).energy(r.theta) + lambda[i] * (r.theta - 1.0));
+      if (std::isfinite(physical.kappa()))
+        energy += r.referenceVolume * physical.energy(physical.dilatationAtPressure(r.pressure));
+    }
+    mine += energy;
+  }
+  Teuchos::reduceAll(*layout_.comm(), Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
+  return all;
 }
 
 ElementFields ResultEvaluator::elementDilatations(const Vector &u, const std::vector<double> &lambda) const {

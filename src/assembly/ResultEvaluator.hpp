@@ -54,6 +54,13 @@ public:
   // the full pass): what the Uzawa loop needs after every solve.
   ElementFields elementDilatations(const Vector &u, const std::vector<double> &lambda) const;
 
+  // The stored energy of the whole mesh at u [J]: every element's int psi_iso dV + V U(theta_p),
+  // U the tissue's physical volumetric law at the dilatation it gives the element pressure (not
+  // the augmented Lagrangian's U_t(theta) + Lambda (theta - 1) the kernel carries; none where
+  // kappa is infinite); a muscle's active stress stores none, so with activation it is the
+  // passive part. Collective.
+  double storedEnergy(const Vector &u, const std::vector<double> &lambda) const;
+
   // The element of the whole mesh with the smallest corner det F at u (fem::minCornerJacobian),
   // for the check after each converged step that Gauss-point J cannot make. Collective.
   struct WorstCorner {

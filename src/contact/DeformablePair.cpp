@@ -1,5 +1,8 @@
 #include "contact/DeformablePair.hpp"
 
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/box_intersection_d.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -27,6 +30,31 @@ Box boxOf(const mesh::HexMesh &mesh, const mesh::ElementFace &face) {
 double distance(const Box &a, const Box &b) {
   return (a.lo - b.hi).cwiseMax(b.lo - a.hi).cwiseMax(0.0).norm();
 }
+
+// The pairs (slave i, master m) whose boxes lie within `reach` of each other, by CGAL's box
+// intersection (a sweep over sorted boxes, O(n log n + pairs)): each box grown by reach / 2 on every
+// side meets another exactly when their per-axis gaps are all at most reach, a superset of the
+// Euclidean test, which then decides. Each slave's list comes out sorted by master index.
+std::vector<std::vector<std::uint32_t>> boxesWithinReach(const std::vector<Box> &slave, const std::vector<Box> &master,
+                                                         double reach) {
+  using CgalBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+  const auto grown = [&](const std::vector<Box> &boxes) {
+    std::vector<CgalBox> out;
+    out.reserve(boxes.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      Eigen::Vector3d lo = boxes[k].lo.array() - 0.5 * reach, hi = boxes[k].hi.array() + 0.5 * reach;
+      out.emplace_back(lo.data(), hi.data(), static_cast<std::uint32_t>(k));
+    }
+    return out;
+  };
+  std::vector<CgalBox> s = grown(slave), m = grown(master);
+  std::vector<std::vector<std::uint32_t>> within(slave.size());
+  CGAL::box_intersection_d(s.begin(), s.end(), m.begin(), m.end(), [&](const CgalBox &a, const CgalBox &b) {
+    if (distance(slave[a.info()], master[b.info()]) <= reach) within[a.info()].push_back(b.info());
+  });
+  for (auto &list : within) std::sort(list.begin(), list.end());
+  return within;
+}
 }  // namespace
 
 std::array<mesh::NodeId, 4> faceNodeIds(const mesh::HexMesh &mesh, const mesh::ElementFace &face) {
@@ -50,25 +78,23 @@ DeformablePair pairFaces(const mesh::HexMesh &mesh, const std::vector<mesh::Elem
                                     std::to_string(f.localFace) + " of element " + std::to_string(f.element) +
                                     "; a face set against itself is self-contact");
   }
-  std::vector<Box> masterBoxes;
+  std::vector<Box> slaveBoxes, masterBoxes;
+  for (const auto &f : slaveFaces) slaveBoxes.push_back(boxOf(mesh, f));
   for (const auto &f : pair.masterFaces) masterBoxes.push_back(boxOf(mesh, f));
-  const double reach = searchRadius + margin;
-  pair.candidates.resize(slaveFaces.size());
-  for (std::size_t i = 0; i < slaveFaces.size(); ++i) {
-    const Box b = boxOf(mesh, slaveFaces[i]);
-    const auto own = faceNodeIds(mesh, slaveFaces[i]);
-    for (std::size_t m = 0; m < pair.masterFaces.size(); ++m) {
-      if (distance(b, masterBoxes[m]) > reach) continue;
-      if (self) {
-        const auto other = faceNodeIds(mesh, pair.masterFaces[m]);
-        const bool touches = std::any_of(other.begin(), other.end(), [&](mesh::NodeId n) {
-          return std::find(own.begin(), own.end(), n) != own.end();
-        });
-        if (touches) continue;
-      }
-      pair.candidates[i].push_back(static_cast<std::uint32_t>(m));
+  pair.candidates = boxesWithinReach(slaveBoxes, masterBoxes, searchRadius + margin);
+  if (self)  // a face never meets one it shares a node with (they touch along their common edge)
+    for (std::size_t i = 0; i < slaveFaces.size(); ++i) {
+      const auto own = faceNodeIds(mesh, slaveFaces[i]);
+      auto &list = pair.candidates[i];
+      list.erase(std::remove_if(list.begin(), list.end(),
+                                [&](std::uint32_t m) {
+                                  const auto other = faceNodeIds(mesh, pair.masterFaces[m]);
+                                  return std::any_of(other.begin(), other.end(), [&](mesh::NodeId n) {
+                                    return std::find(own.begin(), own.end(), n) != own.end();
+                                  });
+                                }),
+                 list.end());
     }
-  }
   pair.points.resize(slaveFaces.size());
   std::size_t most = 0;
   for (std::size_t i = 0; i < slaveFaces.size(); ++i) {

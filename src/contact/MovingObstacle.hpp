@@ -20,6 +20,8 @@ class MovingObstacle : public Obstacle {
   const RigidPose &pose() const { return pose_; }
 
   std::optional<ClosestPoint> closest(const Eigen::Vector3d &x, double searchRadius) const override;
+  Eigen::Vector3d toWorld(const Eigen::Vector3d &X) const override { return pose_.toWorld(X); }
+  Eigen::Vector3d toBody(const Eigen::Vector3d &x) const override { return pose_.toBody(x); }
 
  private:
   std::shared_ptr<const Obstacle> obstacle_;

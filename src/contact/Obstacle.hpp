@@ -29,6 +29,11 @@ public:
   // The closest point to x if the obstacle's surface lies within searchRadius of x [m];
   // nothing otherwise (the point cannot touch in this step).
   virtual std::optional<ClosestPoint> closest(const Eigen::Vector3d &x, double searchRadius) const = 0;
+  // Where a material point of the obstacle, given in its own frame, is now, and back: the
+  // identity for an obstacle at rest. Friction and tied contact keep the obstacle's point a contact
+  // point sticks to in this frame, so that it moves with a moving obstacle.
+  virtual Eigen::Vector3d toWorld(const Eigen::Vector3d &X) const { return X; }
+  virtual Eigen::Vector3d toBody(const Eigen::Vector3d &x) const { return x; }
 };
 
 } // namespace glossa::contact

@@ -9,12 +9,15 @@
 
 #include "contact/CylinderObstacle.hpp"
 #include "contact/DeformablePair.hpp"
+#include "contact/MovingObstacle.hpp"
 #include "contact/PlaneObstacle.hpp"
 #include "contact/SphereObstacle.hpp"
 #include "contact/SurfaceFile.hpp"
 #include "contact/SurfaceOrientation.hpp"
 #include "contact/TriangulatedObstacle.hpp"
 #include "input/DeckSets.hpp"
+#include "input/TimeFunctionParameters.hpp"
+#include "input/UnreadParameters.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 
@@ -106,6 +109,49 @@ std::shared_ptr<const contact::Obstacle> buildObstacle(const io::Deck &deck, con
     throw io::DeckError(deck.where({"Contact", name, vectorName}) + ": " + e.what());
   }
 }
+// The obstacle's rigid motion, if the deck gives one (a translation or a rotation angle not 0):
+// each translation component and the angle scaled by its own time function.
+std::shared_ptr<contact::MovingObstacle> buildMotion(const io::Deck &deck, const std::string &name, double endTime,
+                                                     std::shared_ptr<const contact::Obstacle> obstacle) {
+  const ParameterList &c = deck.root().sublist("Contact").sublist(name);
+  const Eigen::Vector3d translation = vec3(c.get<Array<double>>("translation"));
+  const double angle = c.get<double>("rotation angle");
+  if (translation.isZero(0.0) && angle == 0.0) return nullptr;
+  std::array<contact::TimeFunctionOfT, 3> c_t;
+  const char *axes[3] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    if (translation(k) == 0.0) continue;
+    const model::TimeFunction f =
+        timeFunctionAt(deck, {"Contact", name, std::string("translation ") + axes[k] + " time function"}, endTime);
+    const double amplitude = translation(k);
+    c_t[static_cast<std::size_t>(k)] = [f, amplitude](double t) { return amplitude * f(t); };
+  }
+  std::vector<contact::AxisRotation> rotations;
+  if (angle != 0.0) {
+    const model::TimeFunction f = timeFunctionAt(deck, {"Contact", name, "rotation time function"}, endTime);
+    const Eigen::Vector3d axis = vec3(c.get<Array<double>>("rotation axis"));
+    if (axis.isZero(0.0))
+      throw io::DeckError(deck.where({"Contact", name, "rotation axis"}) + ": the axis is zero; a rotation needs a direction");
+    rotations.push_back({axis, [f, angle](double t) { return angle * f(t); }});
+  }
+  return std::make_shared<contact::MovingObstacle>(
+      std::move(obstacle), contact::RigidMotion(c_t, rotations, vec3(c.get<Array<double>>("pivot"))));
+}
+
+// Coulomb friction (coefficient 0: frictionless) or tied contact; the tangential penalty
+// defaults to the normal one.
+contact::FrictionSettings buildFriction(const io::Deck &deck, const std::string &name, double penalty) {
+  const ParameterList &c = deck.root().sublist("Contact").sublist(name);
+  refuseUnreadParameters(deck, {"Contact", name}, "friction",
+                         {{"friction coefficient", {"Coulomb"}}, {"tangential penalty", {"Coulomb"}}});
+  contact::FrictionSettings friction;
+  friction.law = c.get<std::string>("friction") == "tied" ? contact::FrictionLaw::tied : contact::FrictionLaw::coulomb;
+  friction.coefficient = c.get<double>("friction coefficient");
+  const double epsT = c.get<double>("tangential penalty");
+  friction.penalty = epsT > 0.0 ? epsT : penalty;
+  return friction;
+}
+
 // The mean reference length of the faces' edges (each face's four, shared edges counted per
 // face): the element size h of the default gap tolerance, 1e-3 h, a penetration far below what
 // the elements resolve.
@@ -153,6 +199,23 @@ std::shared_ptr<const contact::DeformablePair> buildPair(const io::Deck &deck, c
   } catch (const std::invalid_argument &e) {
     throw io::DeckError(deck.where({"Contact", name, "master face set"}) + ": " + e.what());
   }
+}
+
+// Friction, tied contact and motion are built for rigid obstacles only: a pair that asks for them
+// is refused rather than run frictionless and at rest.
+void refuseRigidOnlyParameters(const io::Deck &deck, const std::string &name) {
+  const ParameterList &c = deck.root().sublist("Contact").sublist(name);
+  if (c.get<std::string>("friction") == "tied")
+    throw io::DeckError(deck.where({"Contact", name, "friction"}) +
+                        ": tied contact on a pair of face sets; it is built for rigid obstacles only: a pair is "
+                        "frictionless (Coulomb with friction coefficient 0)");
+  if (c.get<double>("friction coefficient") != 0.0)
+    throw io::DeckError(deck.where({"Contact", name, "friction coefficient"}) +
+                        ": friction on a pair of face sets; it is built for rigid obstacles only: allowed 0");
+  if (!vec3(c.get<Array<double>>("translation")).isZero(0.0) || c.get<double>("rotation angle") != 0.0)
+    throw io::DeckError(deck.where({"Contact", name}) +
+                        ": a translation or rotation on a pair of face sets; only a rigid obstacle moves by the deck "
+                        "(the faces of a pair move with the body)");
 }
 }  // namespace
 
@@ -212,13 +275,33 @@ ParameterList contactParameters() {
                     "triangle of the cells the master faces' edges cut them into (segments: the patch test to "
                     "round-off on non-matching meshes; doc/contact.md)",
                     {"gauss", "nodal", "segments"});
+  io::declareString(p, "friction", "Coulomb",
+                    "Coulomb: regularised Coulomb friction, |t_T| <= mu t_N, with 'friction coefficient' mu "
+                    "(0, the default: frictionless); tied: a point sticks, normally and tangentially, tension "
+                    "allowed, to the obstacle's point where it first touched (doc/contact.md)",
+                    {"Coulomb", "tied"});
+  io::declareDouble(p, "friction coefficient", 0.0, "", "Coulomb: mu; 0 is frictionless", io::Range::nonNegative());
+  io::declareDouble(p, "tangential penalty", 0.0, "Pa/m",
+                    "Coulomb: eps_T, the sticking traction per unit of tangential slip since the last converged "
+                    "step; 0: the penalty",
+                    io::Range::nonNegative());
+  io::declareDoubleArray(p, "translation", Array<double>(3, 0.0), "m",
+                         "the obstacle's translation; each component times its own time function", 3);
+  for (const char *axis : {"x", "y", "z"})
+    p.set(std::string("translation ") + axis + " time function", timeFunctionParameters(),
+          std::string("scales the translation's ") + axis + " component in time");
+  io::declareDoubleArray(p, "rotation axis", unitZ(), "", "the axis of the obstacle's rotation (through 'pivot')", 3);
+  io::declareDouble(p, "rotation angle", 0.0, "rad", "the obstacle's rotation angle, times the rotation time function");
+  p.set("rotation time function", timeFunctionParameters(), "scales the rotation angle in time");
+  io::declareDoubleArray(p, "pivot", Array<double>(3, 0.0), "m",
+                         "the point the rotation turns about, in the obstacle's frame at rest", 3);
   io::declareDouble(p, "start overlap tolerance", 0.0, "m",
                     "how deep a node of the face set may start inside the obstacle; deeper is refused, naming the nodes",
                     io::Range::nonNegative());
   return p;
 }
 
-void buildContacts(const io::Deck &deck, const mesh::HexMesh &m, model::Scene &scene) {
+void buildContacts(const io::Deck &deck, const mesh::HexMesh &m, double endTime, model::Scene &scene) {
   const ParameterList &contacts = deck.root().sublist("Contact");
   for (auto it = contacts.begin(); it != contacts.end(); ++it) {
     const std::string &name = contacts.name(it);
@@ -227,11 +310,16 @@ void buildContacts(const io::Deck &deck, const mesh::HexMesh &m, model::Scene &s
     contact.name = name;
     contact.faces = faceSetAt(deck, m, {"Contact", name, "face set"});
     const std::string shape = c.get<std::string>("obstacle");
-    if (shape == "face set" || shape == "self")
+    if (shape == "face set" || shape == "self") {
       contact.pair = buildPair(deck, m, name, contact.faces);
-    else
+      refuseRigidOnlyParameters(deck, name);
+    } else {
       contact.obstacle = buildObstacle(deck, name);
+      contact.motion = buildMotion(deck, name, endTime, contact.obstacle);
+      if (contact.motion) contact.obstacle = contact.motion;
+    }
     contact.settings.penalty = positiveAt(deck, {"Contact", name, "penalty"}, "the penalty method");
+    contact.settings.friction = buildFriction(deck, name, contact.settings.penalty);
     contact.settings.searchRadius = c.get<double>("search radius");
     if (!contact.pair && c.get<std::string>("contact points") == "segments")
       throw io::DeckError(deck.where({"Contact", name, "contact points"}) +

@@ -17,6 +17,7 @@
 #include "mesh/MeshFile.hpp"
 #include "mesh/MeshRefinement.hpp"
 #include "mesh/ReferenceCoordinates.hpp"
+#include "mesh/QuarterCylinderGenerator.hpp"
 #include "mesh/ThickCylinderGenerator.hpp"
 #include "mesh/ThickSphereGenerator.hpp"
 #include "input/TimeFunctionParameters.hpp"
@@ -39,7 +40,7 @@ Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 ParameterList meshParameters() {
   ParameterList p;
   io::declareString(p, "type", "box", "a built-in generator, or file (doc/meshes.md)",
-                    {"box", "cook-membrane", "thick cylinder", "thick sphere", "file"});
+                    {"box", "cook-membrane", "thick cylinder", "thick sphere", "quarter cylinder", "file"});
   io::declareString(p, "partitioner", "auto",
                     "how elements are shared out among MPI ranks: auto (Zoltan2 multijagged for a mesh file, "
                     "the built-in coordinate bisection for the generated meshes), or named",
@@ -96,6 +97,21 @@ ParameterList meshParameters() {
   io::declareInt(sphere, "radial cells", 4, "element layers through the wall", io::Range::closed(1, 1000));
   io::declareInt(sphere, "cells per patch side", 4, "elements along each edge of each of the three patches "
                  "(3 n^2 per layer)", io::Range::closed(1, 1000));
+  ParameterList &quarter = p.sublist("Quarter cylinder", false,
+                                     "a quarter of a solid cylinder on the plane y = 0 (type = quarter cylinder): "
+                                     "axis through (0, R, 0) along z, x >= 0, y <= R, graded towards the lowest line "
+                                     "x = y = 0 (Hertz contact, doc/contact.md); sets arc, top, x0, zmin, zmax; named "
+                                     "points lowest, axis");
+  io::declareDouble(quarter, "radius", 1e-2, "m", "the cylinder's radius R", io::Range::positive());
+  io::declareDouble(quarter, "height", 1e-3, "m", "extent along z", io::Range::positive());
+  io::declareIntArray(quarter, "cells", Array<int>(std::vector<int>{8, 8, 4, 12, 1}),
+                      "along the arc: in the fine band (equal), from it to 45 degrees (growing), from 45 to 90 "
+                      "degrees (equal); along each ray from the inner square to the arc (growing from the arc); "
+                      "along z",
+                      5, io::Range::closed(1, 1000));
+  io::declareDouble(quarter, "fine band", 1e-3, "m",
+                    "the band x in [0, this] of the arc meshed with equal cells, where contact is expected; "
+                    "below R / sqrt 2", io::Range::positive());
   ParameterList &faces = p.sublist("Face sets", false,
                                    "derived face sets: the faces of an existing set (or of the whole "
                                    "boundary) whose centroid lies in a box and whose outward normal "
@@ -250,6 +266,11 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
       const auto &n = c.get<Array<int>>("cells");
       m = mesh::generateThickCylinder(c.get<double>("inner radius"), c.get<double>("outer radius"),
                                       c.get<double>("height"), {n[0], n[1], n[2]});
+    } else if (p.get<std::string>("type") == "quarter cylinder") {
+      const auto &c = p.sublist("Quarter cylinder");
+      const auto &n = c.get<Array<int>>("cells");
+      m = mesh::generateQuarterCylinder(c.get<double>("radius"), c.get<double>("height"),
+                                        {n[0], n[1], n[2], n[3], n[4]}, c.get<double>("fine band"));
     } else if (p.get<std::string>("type") == "thick sphere") {
       const auto &c = p.sublist("Thick sphere");
       m = mesh::generateThickSphere(c.get<double>("inner radius"), c.get<double>("outer radius"),
@@ -301,18 +322,6 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
     m.elementSets[name] = std::move(selected);
   }
   return m;
-}
-
-// The time function of the sublist at `path`; an inconsistent table is a DeckError there.
-TimeFunction timeFunction(const io::Deck &deck, const std::vector<std::string> &path, double endTime) {
-  const ParameterList *list = &deck.root();
-  for (const auto &p : path) list = &list->sublist(p);
-  refuseUnreadTimeFunctionParameters(deck, path);
-  try {
-    return parseTimeFunction(*list, endTime);
-  } catch (const std::invalid_argument &e) {
-    throw io::DeckError(deck.where(path) + ": " + e.what());
-  }
 }
 
 // Mesh/reference coordinates file (§8.1): the zero-strain configuration replaces the node
@@ -380,7 +389,7 @@ std::vector<DirichletCondition> buildBoundaryConditions(const io::Deck &deck, co
     const std::string comps = b.get<std::string>("components");
     for (int i = 0; i < 3; ++i) bc.fixed[i] = comps.find("xyz"[i]) != std::string::npos;
     bc.value = vec3(b.get<Array<double>>("value"));
-    bc.scale = timeFunction(deck, {"Boundary conditions", name, "time function"}, endTime);
+    bc.scale = timeFunctionAt(deck, {"Boundary conditions", name, "time function"}, endTime);
     for (int c = 0; c < 3; ++c) {
       const char *key = c == 0 ? "ux" : c == 1 ? "uy" : "uz";
       const std::string text = b.get<std::string>(key);
@@ -423,7 +432,7 @@ void buildLoads(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Sc
       FollowerPressureLoad load;
       load.name = name;
       load.faces = faceSetAt(deck, m, {"Loads", name, "face set"});
-      const TimeFunction b = timeFunction(deck, {"Loads", name, "time function"}, endTime);
+      const TimeFunction b = timeFunctionAt(deck, {"Loads", name, "time function"}, endTime);
       const double pMax = l.get<double>("pressure");
       if (l.get<std::string>("profile") == "uniform") {
         load.pressure = loads::PressureField::uniform(pMax, b);
@@ -457,7 +466,7 @@ void buildLoads(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Sc
         body.acceleration = loads::postureGravity(posture, g);
       }
       body.gravity = type == "gravity";
-      body.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
+      body.scale = timeFunctionAt(deck, {"Loads", name, "time function"}, endTime);
       scene.bodyForces.push_back(std::move(body));
       continue;
     }
@@ -465,7 +474,7 @@ void buildLoads(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Sc
     load.name = name;
     load.faces = faceSetAt(deck, m, {"Loads", name, "face set"});
     load.traction = vec3(l.get<Array<double>>("traction"));
-    load.scale = timeFunction(deck, {"Loads", name, "time function"}, endTime);
+    load.scale = timeFunctionAt(deck, {"Loads", name, "time function"}, endTime);
     scene.tractions.push_back(std::move(load));
   }
 }
@@ -522,7 +531,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
 
   scene.dirichlet = buildBoundaryConditions(deck, m, endTime);
   buildLoads(deck, m, endTime, scene);
-  buildContacts(deck, m, scene);
+  buildContacts(deck, m, endTime, scene);
   traceNamedPoints(deck, scene);
   if (scene.tracedPoints.empty())
     scene.meshNotes.push_back("no named points: traces.csv and final_displacement will be empty; name points "

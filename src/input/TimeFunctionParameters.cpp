@@ -1,6 +1,9 @@
 #include "input/TimeFunctionParameters.hpp"
 
+#include <stdexcept>
+
 #include "input/UnreadParameters.hpp"
+#include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 
 namespace glossa::input {
@@ -50,6 +53,17 @@ model::TimeFunction parseTimeFunction(const Teuchos::ParameterList &list, double
   const auto &v = list.get<Teuchos::Array<double>>("values");
   std::vector<double> times(t.begin(), t.end()), values(v.begin(), v.end());
   return type == "steps" ? TimeFunction::steps(std::move(times), std::move(values)) : TimeFunction::table(std::move(times), std::move(values));
+}
+
+model::TimeFunction timeFunctionAt(const io::Deck &deck, const std::vector<std::string> &path, double endTime) {
+  const Teuchos::ParameterList *list = &deck.root();
+  for (const auto &p : path) list = &list->sublist(p);
+  refuseUnreadTimeFunctionParameters(deck, path);
+  try {
+    return parseTimeFunction(*list, endTime);
+  } catch (const std::invalid_argument &e) {
+    throw io::DeckError(deck.where(path) + ": " + e.what());
+  }
 }
 
 void refuseUnreadTimeFunctionParameters(const io::Deck &deck, const std::vector<std::string> &path) {

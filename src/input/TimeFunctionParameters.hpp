@@ -17,6 +17,9 @@ Teuchos::ParameterList timeFunctionParameters(const std::string &defaultType = "
 // which --set "Time/end time=..." does not change), so a shortened run shows the first part of the
 // deck's load history rather than the whole history compressed.
 model::TimeFunction parseTimeFunction(const Teuchos::ParameterList &list, double endTime);
+// The time function of the deck's sublist at `path`, its unread parameters refused; an
+// inconsistent table is a DeckError there.
+model::TimeFunction timeFunctionAt(const io::Deck &deck, const std::vector<std::string> &path, double endTime);
 // Refuses (DeckError) a parameter the sublist at `path` gives that its type does not read (a
 // ramp duration of a table, breathing parameters of a ramp).
 void refuseUnreadTimeFunctionParameters(const io::Deck &deck, const std::vector<std::string> &path);

@@ -14,6 +14,7 @@
 #include "contact/ContactState.hpp"
 #include "contact/DeformablePair.hpp"
 #include "contact/FaceContact.hpp"
+#include "contact/MovingObstacle.hpp"
 #include "contact/Obstacle.hpp"
 #include "materials/IsochoricMaterial.hpp"
 #include "materials/VolumetricEnergy.hpp"
@@ -83,15 +84,19 @@ struct FollowerPressureLoad {
 // How a contact's condition g >= 0 is enforced (doc/contact.md, "Penalty and augmented Lagrangian").
 enum class ContactEnforcement { penalty, augmentedLagrangian };
 
-// Frictionless contact of a face set with a rigid obstacle (contact/FaceContact, doc/contact.md)
-// or, when `pair` is set, with a face set of the body (contact/PairContact: a deformable pair, or
-// the face set itself, self-contact); `faces` are then the slave faces, whose contact points are
-// searched against the master faces.
+// Contact of a face set with a rigid obstacle, frictionless, with Coulomb friction or tied
+// (contact/FaceContact, doc/contact.md) or, when `pair` is set, frictionless with a face set of the
+// body (contact/PairContact: a deformable pair, or the face set itself, self-contact); `faces` are
+// then the slave faces, whose contact points are searched against the master faces.
 struct RigidContact {
   std::string name;
   std::vector<mesh::ElementFace> faces;
   std::shared_ptr<const contact::Obstacle> obstacle; // null for a deformable pair
   std::shared_ptr<const contact::DeformablePair> pair;
+  // The same obstacle when it moves in time (null: at rest): the run sets its time where the
+  // loads get theirs (the model evaluator's time, each evaluation's). Mutable through a const
+  // scene, as `state`.
+  std::shared_ptr<contact::MovingObstacle> motion;
   contact::ContactSettings settings;
   ContactEnforcement enforcement = ContactEnforcement::augmentedLagrangian;
   double gapTolerance = 0; // [m]: the Uzawa loop's bound on the largest gap error (augmented Lagrangian)

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "app/CurvesCommand.hpp"
@@ -34,15 +36,25 @@ Table readTable(const std::filesystem::path &file) {
   return t;
 }
 
+// The tables, written once per process into a directory of its own (ctest runs each test in its
+// own process, two at once: with a shared directory one removed the other's tables while it read
+// them), removed when the process ends.
+struct CurveTables {
+  std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) / ("curves-" + std::to_string(::getpid()));
+  CurveTables() {
+    std::filesystem::remove_all(dir);
+    EXPECT_EQ(writeCurveTables(dir).size(), 3u);
+  }
+  ~CurveTables() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir, ignored);
+  }
+};
+
 const std::filesystem::path &tables() {
-  static const std::filesystem::path dir = [] {
-    const auto d = std::filesystem::path(::testing::TempDir()) / "curves";
-    std::filesystem::remove_all(d);
-    const auto written = writeCurveTables(d);
-    EXPECT_EQ(written.size(), 3u);
-    return d;
-  }();
-  return dir;
+  static const CurveTables written;
+  return written.dir;
 }
 
 TEST(CurvesCommand, ForceLengthOverItsRangeIsBothCurveSets) {

@@ -92,3 +92,33 @@ TEST(ContactState, NinePointsPerFace) {
   EXPECT_THROW(restored.restore(bad), std::invalid_argument);
   EXPECT_THROW(ContactState(1, 0), std::invalid_argument);
 }
+
+// Friction history: a record writes the trial anchors and adds each point's slip to the committed
+// total; commit keeps them, roll back returns to them; a snapshot carries them (NaN: no anchor).
+// A tied point is active but has no gap error (the penalty alone holds it).
+TEST(ContactState, AnchorsAndSlipAreCommittedAndRolledBack) {
+  ContactState state(1);
+  FaceContactPoints points = samplePoints();
+  points[0].anchor = Eigen::Vector3d(1, 2, 3);
+  points[0].slip = 0.25;
+  points[1].tied = true;
+  state.record(0, points);
+  EXPECT_TRUE(state.point(0, 1).active());
+  EXPECT_DOUBLE_EQ(state.largestGapError(), 2e-3);  // point 1 (1 mm clear) is tied: not tested
+  EXPECT_FALSE(state.committedAnchors(0)[0].allFinite());
+  state.commit();
+  EXPECT_EQ(state.committedAnchors(0)[0], Eigen::Vector3d(1, 2, 3));
+  EXPECT_FALSE(state.committedAnchors(0)[2].allFinite());
+  state.record(0, points);  // another 0.25 in the next step
+  EXPECT_DOUBLE_EQ(state.point(0, 0).slip, 0.5);
+  state.rollBack();
+  state.record(0, samplePoints());  // no slip this time: the committed total
+  EXPECT_DOUBLE_EQ(state.point(0, 0).slip, 0.25);
+  ContactState restored;
+  restored.restore(state.snapshot());
+  EXPECT_EQ(restored.committedAnchors(0)[0], Eigen::Vector3d(1, 2, 3));
+  EXPECT_FALSE(restored.committedAnchors(0)[1].allFinite());
+  ContactState::Snapshot bad = state.snapshot();
+  bad.anchors.pop_back();
+  EXPECT_THROW(restored.restore(bad), std::invalid_argument);
+}

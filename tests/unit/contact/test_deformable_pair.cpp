@@ -4,6 +4,7 @@
 // of a point among its candidates (inside, within the radius, facing it, the nearest).
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <stdexcept>
 
@@ -34,6 +35,37 @@ TEST(DeformablePair, CandidatesLieWithinTheSearchRadiusAndMargin) {
   // Coupled: the slave face's 4 nodes and the master top's 9.
   EXPECT_EQ(coupledNodes(m, slave, all, 0).size(), 13u);
   EXPECT_THROW(pairFaces(m, master, master, false, 0.05, 0.1, SlaveRule::gauss, 2), std::invalid_argument);
+}
+
+// The box sweep finds exactly the pairs an all-pairs test of the boxes' Euclidean distance finds,
+// sorted: non-matching grids (7 x 5 over 4 x 6), the upper one tilted so that the reach cuts
+// through it, and reaches from none to every pair.
+TEST(DeformablePair, CandidatesAreThoseOfAnAllPairsTest) {
+  mesh::HexMesh m = test::stackedBoxes(1.0, {4, 6, 1}, {7, 5, 1}, 0.05);
+  for (auto &x : m.nodes)
+    if (x(2) > 1.0) x(2) += 0.3 * x(0) + 0.1 * x(1);
+  const auto &slave = m.faceSets.at("upper bottom"), &master = m.faceSets.at("lower top");
+  const auto box = [&](const mesh::ElementFace &f) {
+    Eigen::AlignedBox3d b;
+    for (mesh::NodeId n : faceNodeIds(m, f)) b.extend(m.nodes[n]);
+    return b;
+  };
+  for (double reach : {0.01, 0.1, 0.2, 0.4, 2.0}) {
+    const DeformablePair pair = pairFaces(m, slave, master, false, 0.5 * reach, 0.5 * reach, SlaveRule::gauss, 2);
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < slave.size(); ++i) {
+      std::vector<std::uint32_t> expected;
+      for (std::size_t j = 0; j < master.size(); ++j) {
+        const Eigen::AlignedBox3d a = box(slave[i]), b = box(master[j]);
+        const Eigen::Vector3d apart = (a.min() - b.max()).cwiseMax(b.min() - a.max()).cwiseMax(0.0);
+        if (apart.norm() <= reach) expected.push_back(static_cast<std::uint32_t>(j));
+      }
+      EXPECT_EQ(pair.candidates[i], expected) << "reach " << reach << ", slave face " << i;
+      found += expected.size();
+    }
+    if (reach == 0.01) EXPECT_EQ(found, 0u);
+    if (reach == 2.0) EXPECT_EQ(found, slave.size() * master.size());
+  }
 }
 
 TEST(DeformablePair, SelfContactLeavesOutAFacesOwnAndNeighbours) {

@@ -6,67 +6,22 @@
 #include <random>
 #include <string>
 
+#include "FaceContactChecks.hpp"
 #include "contact/CylinderObstacle.hpp"
 #include "contact/FaceContact.hpp"
 #include "contact/PlaneObstacle.hpp"
 #include "contact/SphereObstacle.hpp"
-#include "RandomFaces.hpp"
 
 using namespace glossa::contact;
+using namespace glossa::contact::test;
 using glossa::loads::FaceForces;
 using glossa::loads::FaceNodes;
-using glossa::test::perturbed;
 using glossa::loads::FaceTangent;
 
 namespace {
 
 constexpr ContactQuadrature kRules[] = {ContactQuadrature::gauss, ContactQuadrature::nodal};
 const char *name(ContactQuadrature rule) { return rule == ContactQuadrature::gauss ? "gauss" : "nodal"; }
-
-// The bottom face of a body resting on z = 0, in the outward (downward) right-hand node order.
-FaceNodes rectangle(double a, double b) {
-  FaceNodes X;
-  X << 0, 0, 0, 0, b, 0, a, b, 0, a, 0, 0;
-  return X;
-}
-FaceNodes uniform(const Eigen::Vector3d &v) {
-  FaceNodes u;
-  for (int a = 0; a < 4; ++a) u.row(a) = v.transpose();
-  return u;
-}
-Eigen::Vector3d total(const FaceForces &f) {
-  return f.segment<3>(0) + f.segment<3>(3) + f.segment<3>(6) + f.segment<3>(9);
-}
-
-// K against central differences of f. Returns how many points are active.
-int expectTangentMatchesCentralDifferences(const Obstacle &obstacle, const FaceNodes &X, const FaceNodes &u,
-                                           const FaceMultipliers &lambda, const ContactSettings &settings,
-                                           const std::string &where) {
-  FaceContactPoints points;
-  FaceTangent K;
-  faceContactForces(obstacle, X, u, lambda, settings, &points, &K);
-  const int active = static_cast<int>(
-      std::count_if(points.begin(), points.end(), [](const ContactPointState &p) { return p.active(); }));
-  const double h = 1e-6;
-  FaceTangent Kfd;
-  for (int b = 0; b < 4; ++b)
-    for (int j = 0; j < 3; ++j) {
-      FaceNodes up = u, um = u;
-      up(b, j) += h;
-      um(b, j) -= h;
-      Kfd.col(3 * b + j) = (faceContactForces(obstacle, X, up, lambda, settings) -
-                            faceContactForces(obstacle, X, um, lambda, settings)) /
-                           (2 * h);
-    }
-  if (active > 0) {
-    EXPECT_LT((K - Kfd).norm(), 1e-6 * K.norm()) << where;
-  } else {
-    EXPECT_EQ(K.norm(), 0.0) << where;
-    EXPECT_EQ(Kfd.norm(), 0.0) << where;
-  }
-  return active;
-}
-
 
 // Random warped faces near z = 0 or 0.2 below pressed into `obstacle` with random multipliers in
 // [0, lambdaMax], both rules; fails unless the samples exercise faces with every point active
@@ -75,7 +30,7 @@ void checkTangents(const Obstacle &obstacle, double lambdaMax, const std::string
   for (ContactQuadrature rule : kRules) {
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> multiplier(0.0, lambdaMax);
-    const ContactSettings settings{2.0e5, 1.0, rule};
+    const ContactSettings settings{2.0e5, 1.0, rule, {}};
     int allActive = 0, mixed = 0;
     for (int sample = 0; sample < 40; ++sample) {
       // Every other face pressed 0.2 deeper, so that both full and partial contact occur.
@@ -131,7 +86,7 @@ TEST(FaceContact, FlatFaceInAPlaneCarriesPenaltyTimesDepthTimesArea) {
   const double eps = 1.0e6, delta = 0.01;
   const FaceNodes X = rectangle(2.0, 1.5);
   for (ContactQuadrature rule : kRules) {
-    const ContactSettings settings{eps, 0.1, rule};
+    const ContactSettings settings{eps, 0.1, rule, {}};
     FaceContactPoints points;
     const FaceForces f = faceContactForces(plane, X, uniform(Eigen::Vector3d(0, 0, -delta)), {0, 0, 0, 0},
                                            settings, &points);
@@ -162,8 +117,8 @@ TEST(FaceContact, GaussRuleGivesTheConsistentNodalForcesOfAUniformPressure) {
   const PlaneObstacle above(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, -1));
   const double eps = 1.0e5, delta = 0.002, p = eps * delta;
   const FaceNodes u = uniform(Eigen::Vector3d(0, 0, delta));
-  const FaceForces gauss = faceContactForces(above, X, u, {0, 0, 0, 0}, {eps, 0.1, ContactQuadrature::gauss});
-  const FaceForces nodal = faceContactForces(above, X, u, {0, 0, 0, 0}, {eps, 0.1, ContactQuadrature::nodal});
+  const FaceForces gauss = faceContactForces(above, X, u, {0, 0, 0, 0}, {eps, 0.1, ContactQuadrature::gauss, {}});
+  const FaceForces nodal = faceContactForces(above, X, u, {0, 0, 0, 0}, {eps, 0.1, ContactQuadrature::nodal, {}});
   const double consistent[4] = {5.0 / 12, 5.0 / 12, 1.0 / 3, 1.0 / 3}, lumped[4] = {0.5, 0.5, 0.25, 0.25};
   for (int a = 0; a < 4; ++a) {
     EXPECT_TRUE(gauss.segment<3>(3 * a).isApprox(Eigen::Vector3d(0, 0, -p * consistent[a]), 1e-14)) << a;
@@ -179,7 +134,7 @@ TEST(FaceContact, MultiplierIsThePressureAtZeroGap) {
   const PlaneObstacle plane(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 1));
   const double L = 3.0e3, eps = 1.0e6;
   for (ContactQuadrature rule : kRules) {
-    const ContactSettings settings{eps, 0.1, rule};
+    const ContactSettings settings{eps, 0.1, rule, {}};
     FaceContactPoints points;
     const FaceForces f = faceContactForces(plane, rectangle(2.0, 1.5), FaceNodes::Zero(), {L, L, L, L}, settings,
                                            &points);
@@ -199,7 +154,7 @@ TEST(FaceContact, MultiplierIsThePressureAtZeroGap) {
 // point the search did not reach is +infinity.
 TEST(FaceContact, FaceClearOfTheObstacleCarriesNothing) {
   const PlaneObstacle plane(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 1));
-  const ContactSettings settings{1.0e6, 0.5, ContactQuadrature::gauss};
+  const ContactSettings settings{1.0e6, 0.5, ContactQuadrature::gauss, {}};
   FaceContactPoints points;
   FaceTangent K;
   const FaceForces f = faceContactForces(plane, rectangle(1, 1), uniform(Eigen::Vector3d(0, 0, 0.1)),
@@ -220,7 +175,7 @@ TEST(FaceContact, FaceClearOfTheObstacleCarriesNothing) {
 TEST(FaceContact, RestingFaceHasTheContactSidesTangent) {
   const PlaneObstacle plane(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 1));
   for (ContactQuadrature rule : kRules) {
-    const ContactSettings settings{1.0e6, 0.1, rule};
+    const ContactSettings settings{1.0e6, 0.1, rule, {}};
     FaceTangent K;
     const FaceForces f0 = faceContactForces(plane, rectangle(2.0, 1.5), FaceNodes::Zero(), {0, 0, 0, 0}, settings,
                                             nullptr, &K);
@@ -255,7 +210,7 @@ TEST(FaceContact, OneUzawaUpdateClosesTheGapOfARigidFace) {
   const PlaneObstacle plane(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 1));
   const double eps = 1.0e5, F = 600.0, A = 3.0;
   const FaceNodes X = rectangle(2.0, 1.5);
-  const ContactSettings settings{eps, 1.0, ContactQuadrature::gauss};
+  const ContactSettings settings{eps, 1.0, ContactQuadrature::gauss, {}};
   FaceMultipliers lambda{0, 0, 0, 0};
   auto solve = [&] {
     double w = 0.0;

@@ -24,10 +24,13 @@ Teuchos::ParameterList schema() {
 
 const mesh::HexMesh kBox = mesh::generateBox(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), {2, 2, 2});
 
+// The deck's own end time, a ramp's default duration.
+constexpr double kEndTime = 2.0;
+
 model::Scene sceneOf(const std::string &file, const std::string &contacts) {
   model::Scene scene;
   buildContacts(test::deckOnFile(file, "<ParameterList name=\"Contact\">\n" + contacts + "</ParameterList>\n", schema()),
-                kBox, scene);
+                kBox, kEndTime, scene);
   return scene;
 }
 
@@ -178,4 +181,45 @@ TEST(ContactParameters, NodesStartingInsideTheObstacleAreRefusedByName) {
 }
 
 }  // namespace
+// Friction from the deck (the tangential penalty defaults to the penalty; tied), and a moving
+// plane: the floor 0.5 below the origin rises by 0.4 along a ramp over the end time (2 s) and turns
+// by 0.1 rad about y through the origin along a table reaching 1 at t = 1. At t = 1 the plane's
+// point is R (0, 0, -0.5) + (0, 0, 0.2) and its normal R e_z = (sin 0.1, 0, cos 0.1), so the
+// origin's gap is 0.5 - 0.2 cos 0.1.
+TEST(ContactParameters, FrictionAndAMovingPlaneFromTheDeck) {
+  const model::Scene scene = sceneOf("contact_motion.xml", R"X(  <ParameterList name="floor">
+    <Parameter name="face set" type="string" value="zmin"/>
+    <Parameter name="point" type="Array(double)" value="{0, 0, -0.5}"/>
+    <Parameter name="penalty" type="double" value="1e9"/>
+    <Parameter name="friction coefficient" type="double" value="0.3"/>
+    <Parameter name="translation" type="Array(double)" value="{0, 0, 0.4}"/>
+    <Parameter name="rotation axis" type="Array(double)" value="{0, 1, 0}"/>
+    <Parameter name="rotation angle" type="double" value="0.1"/>
+    <ParameterList name="rotation time function">
+      <Parameter name="type" type="string" value="table"/>
+      <Parameter name="times" type="Array(double)" value="{0, 1}"/>
+      <Parameter name="values" type="Array(double)" value="{0, 1}"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="glue">
+    <Parameter name="face set" type="string" value="zmax"/>
+    <Parameter name="point" type="Array(double)" value="{0, 0, 2}"/>
+    <Parameter name="normal" type="Array(double)" value="{0, 0, -1}"/>
+    <Parameter name="penalty" type="double" value="1e8"/>
+    <Parameter name="friction" type="string" value="tied"/>
+  </ParameterList>
+)X");
+  ASSERT_EQ(scene.contacts.size(), 2u);
+  const auto &floor = scene.contacts[0], &glue = scene.contacts[1];
+  EXPECT_EQ(floor.settings.friction.law, contact::FrictionLaw::coulomb);
+  EXPECT_EQ(floor.settings.friction.coefficient, 0.3);
+  EXPECT_EQ(floor.settings.friction.penalty, 1e9);
+  EXPECT_EQ(glue.settings.friction.law, contact::FrictionLaw::tied);
+  EXPECT_EQ(glue.motion, nullptr);
+  ASSERT_NE(floor.motion, nullptr);
+  EXPECT_DOUBLE_EQ(floor.obstacle->closest(Eigen::Vector3d::Zero(), 1.0)->gap, 0.5);
+  floor.motion->setTime(1.0);
+  EXPECT_NEAR(floor.obstacle->closest(Eigen::Vector3d::Zero(), 1.0)->gap, 0.5 - 0.2 * std::cos(0.1), 1e-15);
+}
+
 }  // namespace glossa::input

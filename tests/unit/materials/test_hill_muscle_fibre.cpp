@@ -296,3 +296,41 @@ TEST(HillMuscleFibre, InvalidInputIsReported) {
   EXPECT_THROW(ContractileElement(kT0max, 1.5, physiologicalCurves()), std::invalid_argument);
   EXPECT_THROW(ContractileElement(kT0max, 0.5, ContractileCurves{}), std::invalid_argument);
 }
+
+// Vanishing activation (a step ending just past the start of a neural-input ramp: alpha ~ 1e-16,
+// or underflowed to 1e-300, a denormal or 0): the local solve succeeds and the fibre tends to its
+// parallel element continuously, T_s <= T0s T0max alpha max(f_cL f_cV) and dT_s/dlambda_f bounded
+// by the contractile element's stiffness, both -> 0 with alpha, at every stretch and stretch rate.
+TEST(HillMuscleFibre, VanishingActivationGivesThePassiveResponse) {
+  const ParallelElement p = ParallelElement::tableI();
+  int taut = 0;
+  for (const ContractileCurves &curves : {paperTableIICurves(), physiologicalCurves()})
+    for (double T0s : {0.1, 1.0}) {
+      const HillMuscleFibre f = fibre(T0s, curves);
+      for (double alpha : {1e-16, 1e-300, 4.9e-324, 1e-310, 0.0})
+        for (double lambdaF : {0.7, 1.0, 1.3})
+          for (double dt : {1e-6, 1e-3})
+            for (double oldOverF : {0.999, 1.0, 1.001, 1.02}) {
+              const HillFibreInput in{lambdaF, alpha, dt, lambdaF * oldOverF};
+              const HillFibreResponse r = f.evaluate(in);
+              ASSERT_TRUE(succeeded(r.status)) << describe(r.status) << " alpha " << alpha << " lambda_f "
+                                               << lambdaF << " dt " << dt << " lambda_c_old " << in.lambdaCOld;
+              if (r.status == HillSolveStatus::Taut) ++taut;
+              const FibreTension passive = p.evaluate(lambdaF);
+              EXPECT_GE(r.Ts, 0.0);
+              EXPECT_LE(r.Ts, 1.01 * kT0max * alpha * f.contractile().capacityBound());
+              EXPECT_NEAR(r.T, passive.T + r.Ts, 1e-12 * kT0max);
+              // dT_s/dlambda_f <= |dT_c/dlambda_c| + |dT_c/drate| / dt at the root (series in series
+              // with the contractile element); at alpha <= 1e-16 below 1e-9 T0max for dt >= 1e-6.
+              EXPECT_NEAR(r.dTdLambdaF, passive.dTdLambda, 1e-9 * kT0max);
+              if (r.status == HillSolveStatus::Taut) {
+                EXPECT_LE(r.lambdaC, lambdaF);
+                EXPECT_GE(r.lambdaC, lambdaF * (1 - 1e-11));  // the series element barely stretches
+              } else {  // slack: shortening faster than v_max, or alpha T0s rounds to 0
+                EXPECT_EQ(r.Ts, 0.0);
+                EXPECT_GE(r.lambdaC, lambdaF);
+              }
+            }
+    }
+  EXPECT_GT(taut, 0);
+}

@@ -169,3 +169,20 @@ TEST(MuscleMaterial, InvalidInputIsReported) {
   EXPECT_THROW(MuscleMaterial(matrix(), tooMany), std::invalid_argument);
   EXPECT_THROW(MuscleMaterial(nullptr, {}), std::invalid_argument);
 }
+
+// The same at vanishing activation (a step just past the start of a neural-input ramp): every
+// point solves and its tangent is the finite-difference one.
+TEST(MuscleMaterial, TangentMatchesFiniteDifferencesAtVanishingActivation) {
+  const MuscleMaterial m = muscle();
+  std::mt19937 rng(43);
+  for (double alpha : {1e-16, 1e-300, 4.9e-324, 0.0})
+    for (int sample = 0; sample < 10; ++sample) {
+      MusclePointInput in = randomInput(m, rng);
+      in.alpha.setConstant(alpha);
+      const MusclePointResponse r = m.evaluate(in);
+      ASSERT_TRUE(r.ok()) << describe(r.status) << " family " << r.failedFamily << " alpha " << alpha;
+      const Tangent9 fd = glossa::test::centralDifferenceTangent(
+          [&](const Eigen::Matrix3d &G) { return m.evaluate(withF(in, G)).P; }, in.F, 1e-7);
+      EXPECT_LT((fd - r.dPdF).norm(), 1e-6 * r.dPdF.norm() + 1e-3) << "alpha " << alpha << " sample " << sample;
+    }
+}

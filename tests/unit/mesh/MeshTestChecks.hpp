@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "mesh/HexMesh.hpp"
+#include "mesh/MeshChecks.hpp"
+#include "mesh/MeshQuality.hpp"
 
 namespace glossa::mesh::testing {
 
@@ -54,6 +56,18 @@ inline void expectNodeSetMatchesFaces(const HexMesh &mesh, const std::string &na
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   EXPECT_EQ(mesh.nodeSet(name), touched) << name;
+}
+
+// A generator's mesh passes every check before a run (its blocks' shared nodes merged), is one
+// part, and no corner's scaled Jacobian is below `minScaledJacobian`.
+inline void expectValidConformingMesh(const HexMesh &mesh, double minScaledJacobian) {
+  const MeshCheckReport report = checkMesh(mesh);
+  EXPECT_TRUE(report.unusedNodes.empty());
+  EXPECT_TRUE(report.coincidentNodes.empty());
+  EXPECT_TRUE(report.duplicateElements.empty());
+  EXPECT_TRUE(report.invertedCorners.empty());
+  EXPECT_EQ(meshParts(mesh).second, 1);
+  EXPECT_GT(scaledJacobianRange(mesh).first, minScaledJacobian);
 }
 
 }  // namespace glossa::mesh::testing

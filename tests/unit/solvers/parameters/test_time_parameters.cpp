@@ -68,3 +68,58 @@ TEST(TimeParameters, RampsSpanTheDecksOwnEndTime) {
 
 } // namespace
 } // namespace glossa::solvers
+
+namespace glossa::solvers {
+namespace {
+
+// The dynamic analysis' parameters: defaults (static, rho_inf = 1, consistent mass, no damping,
+// at rest), given values, and what a deck is refused for: a value out of its range, a dynamic
+// parameter in a static deck, an initial velocity that is not an expression of X, Y, Z.
+TEST(TimeParameters, DynamicsDefaultsAndGivenValues) {
+  const DynamicsParameters d0 = parsed({}).dynamics;
+  EXPECT_FALSE(d0.dynamic());
+  EXPECT_EQ(d0.spectralRadius, 1.0);
+  EXPECT_EQ(d0.mass, fem::MassLumping::consistent);
+  EXPECT_EQ(d0.rayleighMass, 0.0);
+  EXPECT_EQ(d0.rayleighStiffness, 0.0);
+  EXPECT_EQ(d0.initialVelocity[1], "0");
+  const DynamicsParameters d = parsed({"Time/analysis=dynamic", "Time/spectral radius=0.6", "Time/mass matrix=lumped",
+                                       "Time/Rayleigh mass coefficient=0.5", "Time/Rayleigh stiffness coefficient=1e-3",
+                                       "Time/initial vy=2 * X"})
+                                   .dynamics;
+  EXPECT_TRUE(d.dynamic());
+  EXPECT_EQ(d.spectralRadius, 0.6);
+  EXPECT_EQ(d.mass, fem::MassLumping::lumped);
+  EXPECT_EQ(d.rayleighMass, 0.5);
+  EXPECT_EQ(d.rayleighStiffness, 1e-3);
+  EXPECT_EQ(d.initialVelocity[1], "2 * X");
+}
+
+TEST(TimeParameters, BadDynamicsParametersAreRefusedWithWhereAndWhatIsAllowed) {
+  Teuchos::ParameterList schema("Glossa");
+  schema.set("Time", timeParameters());
+  const std::string out = test::deckErrorOf([&] { parsed({"Time/spectral radius=1.5"}); });
+  EXPECT_NE(out.find("spectral radius"), std::string::npos) << out;
+  EXPECT_THROW(parsed({"Time/analysis=implicit"}), std::exception);
+  const auto check = [&](const std::string &sections) {
+    return test::deckErrorOf([&] {
+      const io::Deck deck = test::deckOnFile("dynamics.xml", sections, schema);
+      checkDynamicsParameters(deck, parseTimeParameters(deck.root().sublist("Time")).dynamics);
+    });
+  };
+  const std::string staticDeck = check("  <ParameterList name=\"Time\">\n    <Parameter name=\"spectral radius\" "
+                                       "type=\"double\" value=\"0.5\"/>\n  </ParameterList>\n");
+  EXPECT_NE(staticDeck.find("dynamics.xml:3"), std::string::npos) << staticDeck;
+  EXPECT_NE(staticDeck.find("Time/analysis = dynamic"), std::string::npos) << staticDeck;
+  const std::string badVelocity =
+      check("  <ParameterList name=\"Time\">\n    <Parameter name=\"analysis\" type=\"string\" value=\"dynamic\"/>\n"
+            "    <Parameter name=\"initial vz\" type=\"string\" value=\"2 * Q\"/>\n  </ParameterList>\n");
+  EXPECT_NE(badVelocity.find("dynamics.xml:4"), std::string::npos) << badVelocity;
+  EXPECT_NE(badVelocity.find("X, Y, Z"), std::string::npos) << badVelocity;
+  EXPECT_EQ(check("  <ParameterList name=\"Time\">\n    <Parameter name=\"analysis\" type=\"string\" value=\"dynamic\"/>\n"
+                  "    <Parameter name=\"initial vz\" type=\"string\" value=\"2 * Y + X\"/>\n  </ParameterList>\n"),
+            "");
+}
+
+} // namespace
+} // namespace glossa::solvers

@@ -43,3 +43,24 @@ TEST(CheckpointContents, ContactMultipliersSurviveARoundTrip) {
   }
   EXPECT_EQ(restored.largestGapError(), 0.0);
 }
+
+// The friction anchors and slips come back bit-identical, and a point without an anchor (NaN,
+// which JSON cannot hold) comes back without one.
+TEST(CheckpointContents, ContactAnchorsSurviveARoundTrip) {
+  ContactState state(1);
+  glossa::contact::FaceContactPoints points{};
+  points[0].anchor = Eigen::Vector3d(1.0 / 3, -2e-3, 0.7);
+  points[0].slip = 1e-4 / 3;
+  points[2].anchor = Eigen::Vector3d(0.0, 0.0, 0.0);
+  state.record(0, points);
+  state.commit();
+  const std::vector<std::uint8_t> bytes = nlohmann::json::to_cbor(glossa::solvers::toJson(state.snapshot()));
+  ContactState restored(1);
+  restored.restore(glossa::solvers::contactSnapshotFromJson(nlohmann::json::from_cbor(bytes)));
+  const auto anchors = restored.committedAnchors(0);
+  EXPECT_EQ(anchors[0], points[0].anchor);
+  EXPECT_EQ(anchors[2], Eigen::Vector3d::Zero());
+  EXPECT_FALSE(anchors[1].allFinite());
+  EXPECT_FALSE(anchors[3].allFinite());
+  EXPECT_EQ(restored.snapshot().slip, state.snapshot().slip);
+}

@@ -200,12 +200,25 @@ TEST_F(CheckpointSanity, TimesThatDisagreeAcrossTheCheckpointAreRefused) {
 } // namespace
 
 // The contacts' multipliers: one entry per contact, 4 per contact face, each a contact pressure
-// (finite, >= 0).
+// (finite, >= 0); with them the friction anchors (3 coordinates per point), whether each point
+// has one (0 or 1) and the slips (>= 0).
 TEST_F(CheckpointSanity, ContactMultipliersOfAnotherMeshOrNegativeAreRefused) {
   shape.contactPoints = {8};
   EXPECT_REFUSED("part has no 'contact'");
-  part["contact"] = json::array({{{"multipliers", {0.0, 0.0, 1e3, 1e3, 0.0, 0.0, 1e3, 1e3}}}});
+  part["contact"] = json::array({{{"multipliers", {0.0, 0.0, 1e3, 1e3, 0.0, 0.0, 1e3, 1e3}},
+                                  {"anchors", std::vector<double>(24, 0.5)},
+                                  {"anchored", {0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 1.0}},
+                                  {"slip", std::vector<double>(8, 1e-3)}}});
   EXPECT_EQ(refusal(), "");
+  part["contact"][0]["slip"][1] = -1.0;
+  EXPECT_REFUSED("contact[0]/slip[1] = -1; it must be finite and in [0, inf] (a slip length)");
+  part["contact"][0]["slip"][1] = 0.0;
+  part["contact"][0]["anchored"][3] = 2.0;
+  EXPECT_REFUSED("contact[0]/anchored[3] = 2");
+  part["contact"][0]["anchored"][3] = 1.0;
+  part["contact"][0]["anchors"] = std::vector<double>(8, 0.5);
+  EXPECT_REFUSED("contact[0]/anchors has 8 values, this run has 24 here");
+  part["contact"][0]["anchors"] = std::vector<double>(24, 0.5);
   part["contact"][0]["multipliers"][2] = -1.0;
   EXPECT_REFUSED("contact[0]/multipliers[2] = -1; it must be finite and in [0, inf] (a contact pressure)");
   part["contact"][0]["multipliers"][2] = kNaN;
