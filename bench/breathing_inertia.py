@@ -14,6 +14,12 @@ Prints, per point, the largest |u_dynamic - u_static| over the breaths, the larg
 displacement |u_static(t) - u_static(1.25 s)| it compares with, their ratio (the quasi-static
 assumption's error), the dynamic run's largest kinetic energy, the steps, Newton iterations and
 run times.
+
+    /usr/bin/python3 bench/breathing_inertia.py --estimate [TRACES.csv] [--period 0.16]
+
+runs nothing: the single-mode estimate of the same error from a quasi-static trace (default
+tests/regression/s8_5_passive_supine.csv): one undamped mode of the given period driven through
+the breaths' quasi-static history, u_d'' = -w^2 (u_d - u_s), u_s proportional to eq. 27.
 """
 import argparse
 import csv
@@ -44,13 +50,52 @@ def distance(a, b):
     return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)))
 
 
+def breath(t):
+    """Eq. 27's profile, max(sin(2 pi (t - t0)/T), 0)^1.75, T = 2.5 s, t0 = 1.25 s."""
+    return max(math.sin(2 * math.pi * (t - BREATHS_START) / 2.5), 0.0) ** 1.75 if t >= BREATHS_START else 0.0
+
+
+def single_mode_lag(period, breaths=3, dt=1e-4):
+    """The largest |u_d - u_s| / swing of one undamped mode driven through u_s = breath(t) from rest
+    (velocity Verlet at a step of period/1600: exact to far below the figures printed)."""
+    w2 = (2 * math.pi / period) ** 2
+    t, u, v, worst = BREATHS_START, 0.0, 0.0, 0.0
+    while t < BREATHS_START + 2.5 * breaths:
+        a = -w2 * (u - breath(t))
+        u += v * dt + 0.5 * a * dt * dt
+        t += dt
+        v += 0.5 * (a - w2 * (u - breath(t))) * dt
+        worst = max(worst, abs(u - breath(t)))
+    return worst
+
+
+def estimate(traces_path, periods):
+    with open(traces_path) as f:
+        rows = [r for r in csv.DictReader(f) if r["point"] in POINTS]
+    for point in POINTS:
+        u = {round(float(r["time [s]"]), 6): tuple(float(r[k]) for k in ("ux [m]", "uy [m]", "uz [m]"))
+             for r in rows if r["point"] == point}
+        swing = max(distance(u[t], u[BREATHS_START]) for t in u if t >= BREATHS_START)
+        print(f"{point}: quasi-static breathing displacement up to {1e3 * swing:.4g} mm")
+        for period in periods:
+            lag = single_mode_lag(period)
+            print(f"  single mode of period {1e3 * period:g} ms: lags by up to {100 * lag:.3g} % of it, "
+                  f"{1e6 * lag * swing:.3g} um")
+    return 0
+
+
 def main(argv):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
     p.add_argument("--runs", default=os.path.join(ROOT, "build", "bench", "breathing_inertia"))
     p.add_argument("--table", default=os.path.join(ROOT, "bench", "results", "breathing_inertia.csv"))
     p.add_argument("--set", action="append", default=[], help="path=value, for the dynamic run")
+    p.add_argument("--estimate", nargs="?", const=os.path.join(ROOT, "tests", "regression", "s8_5_passive_supine.csv"),
+                   help="run nothing: the single-mode estimate from this quasi-static trace")
+    p.add_argument("--period", type=float, action="append", help="the mode's period [s] for --estimate (0.16)")
     args = p.parse_args(argv)
+    if args.estimate:
+        return estimate(args.estimate, args.period or [0.16])
     outs, walls, summaries = {}, {}, {}
     for analysis, deck in DECKS.items():
         outs[analysis] = os.path.join(args.runs, analysis)
