@@ -1,8 +1,9 @@
 #pragma once
 // A run of a validated deck from start to end, as `glossa run` makes it: what its callers (the
 // command, glossa zero-strain, the integration tests) need, without the Simulation's parts. The
-// Simulation's header carries Tpetra's vectors and the Assembler (about 19 s of compiling per
-// file that includes it); this one only Teuchos' communicator.
+// Simulation's header carries Tpetra's vectors and the Assembler, Kokkos with them; this one only
+// Teuchos' communicator (test_step44_block.cpp, cold: 13.1 s and 685 MB with the Simulation's
+// header, 8.6 s and 464 MB with this one).
 
 #include <nlohmann/json.hpp>
 #include <Teuchos_Comm.hpp>
