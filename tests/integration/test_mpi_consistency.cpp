@@ -25,7 +25,7 @@ namespace {
 std::vector<double> finalField(const std::filesystem::path &dir) { return test::lastStepField(dir, "displacement"); }
 
 void expectSameOnOneAndTwoRanks(const std::vector<std::string> &overrides, const std::string &tag) {
-  auto world = Tpetra::getDefaultComm();
+  auto world = test::worldComm();
   ASSERT_EQ(world->getSize(), 2) << "run this test with mpiexec -np 2";
   const int rank = world->getRank();
   auto single = world->split(rank, 0); // each rank alone
@@ -90,7 +90,7 @@ TEST(MpiConsistency, VertexPatchIsRefusedOnTwoRanks) {
   EXPECT_THROW(test::runDeck(test::inputPath("verification/step44_block.xml"),
                              {"Mesh/Box/cells=2,2,2", "Linear solver/type=iterative",
                               "Linear solver/MueLu smoother=vertex-patch"},
-                             test::scratchDirectory("mpi_patch_refused"), Tpetra::getDefaultComm()),
+                             test::scratchDirectory("mpi_patch_refused"), test::worldComm()),
                io::DeckError);
 }
 
@@ -102,7 +102,7 @@ TEST(MpiConsistency, VertexPatchIsRefusedOnTwoRanks) {
 // ~1e-9 m there moved the supports (uy = -3e-9 m at the bottom edge), the field differed by 3.5e-4
 // and the contact pressure by 1.7e-5.
 TEST(MpiConsistency, ContactPatchHoldsFixedComponentsExactlyOnTwoRanks) {
-  auto world = Tpetra::getDefaultComm();
+  auto world = test::worldComm();
   ASSERT_EQ(world->getSize(), 2) << "run this test with mpiexec -np 2";
   const int rank = world->getRank();
   auto single = world->split(rank, 0);
@@ -189,7 +189,7 @@ TEST(MpiConsistency, TwoBlockPatchAgreesWithTheBlocksOnDifferentRanks) {
 // period): displacement, velocity and acceleration fields and the last step's energies the same
 // on one rank and on two to 1e-8 relative.
 TEST(MpiConsistency, DynamicOneAndTwoRanksAgree) {
-  auto world = Tpetra::getDefaultComm();
+  auto world = test::worldComm();
   ASSERT_EQ(world->getSize(), 2) << "run this test with mpiexec -np 2";
   const int rank = world->getRank();
   auto single = world->split(rank, 0);
