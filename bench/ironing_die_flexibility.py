@@ -19,7 +19,8 @@ frictionless press, d = 1.4 t), the deformable die's press ends where N(d) = (1.
 
   /usr/bin/python3 bench/ironing_die_flexibility.py [--mesh fine]
 
-Prints c for both load cases and the press depth and normal force the deformable die would reach
+Prints c for both load cases (and, as a check, the point load's c from beam elements that also
+stretch) and the press depth and normal force the deformable die would reach
 against the rigid die's.
 """
 import argparse
@@ -48,6 +49,31 @@ def crown_deflection(loads, n=4001):
     return np.trapz(total * (-x), phi)  # the virtual unit load at the crown: half on each side
 
 
+def frame_crown_deflection(radius, ei, ea, n=400):
+    """The same arch's c for a point load at the crown from straight Euler-Bernoulli beam elements
+    that also stretch (EA): a check of the bending-only value that owes nothing to Castigliano."""
+    phi = np.linspace(-np.pi / 2, np.pi / 2, n + 1)
+    x, y = radius * np.sin(phi), -radius * np.cos(phi)
+    k = np.zeros((3 * (n + 1), 3 * (n + 1)))
+    for e in range(n):
+        dx, dy = x[e + 1] - x[e], y[e + 1] - y[e]
+        length = np.hypot(dx, dy)
+        c, s = dx / length, dy / length
+        local = np.zeros((6, 6))
+        local[np.ix_([0, 3], [0, 3])] = ea / length * np.array([[1, -1], [-1, 1]])
+        bend = [[12, 6 * length, -12, 6 * length], [6 * length, 4 * length ** 2, -6 * length, 2 * length ** 2],
+                [-12, -6 * length, 12, -6 * length], [6 * length, 2 * length ** 2, -6 * length, 4 * length ** 2]]
+        local[np.ix_([1, 2, 4, 5], [1, 2, 4, 5])] = ei / length ** 3 * np.array(bend)
+        rotation = np.kron(np.eye(2), np.array([[c, s, 0], [-s, c, 0], [0, 0, 1]]))
+        dofs = list(range(3 * e, 3 * e + 6))
+        k[np.ix_(dofs, dofs)] += rotation.T @ local @ rotation
+    free = np.arange(3, 3 * n)  # both ends clamped
+    load = np.zeros(3 * (n + 1))
+    load[3 * (n // 2) + 1] = 1.0
+    u = np.linalg.solve(k[np.ix_(free, free)], load[free])
+    return u[3 * (n // 2) + 1 - 3] * ei / radius ** 3
+
+
 def elliptical(half_width, n=400):
     """A radial pressure elliptical in x over |x| < half_width (in units of R), total upward 1."""
     psi = np.linspace(0.0, np.arcsin(min(half_width, 1.0)), n)[1:]
@@ -69,6 +95,8 @@ def main():
     n_rigid, area = press[-1][1], press[-1][2]
     cases = {"point load at the crown": crown_deflection([(0.0, 0.0, 0.5)]),
              f"elliptical over a = {area / (2 * WIDTH):.2f}": crown_deflection(elliptical(area / (2 * WIDTH) / radius))}
+    print(f"check: point load from beam elements with axial strain, c = "
+          f"{frame_crown_deflection(radius, ei, E_DIE * THICKNESS):.5f}")
     print(f"rigid die, {a.mesh} mesh: pressed {PRESS}, N = {n_rigid:.3f}, contact half-width {area / (2 * WIDTH):.2f}")
     for name, c in cases.items():
         stiffness = WIDTH * ei / (c * radius ** 3)  # die force per unit crown deflection
