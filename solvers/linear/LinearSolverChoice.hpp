@@ -1,9 +1,10 @@
 #pragma once
 // Which linear solve a run gets: the deck's `Linear solver/type`, and for `type = auto` the rule
-// that picks a direct or an iterative solve from the problem (its unknowns, the ranks that solve
-// it, whether its tangent is symmetric) by the measured cost of each (doc/incompressibility.md,
-// "Choosing direct or iterative"); and where a direct solve runs on several ranks. No Trilinos:
-// the rule is unit-tested on its own.
+// that picks a direct or an iterative solve from the problem (its unknowns and the ranks that
+// solve it) by the measured cost of each (doc/incompressibility.md, "Choosing direct or
+// iterative"); and where a direct solve runs on several ranks. A symmetric or nonsymmetric tangent,
+// a nearly incompressible or a controlled scene moved no measured crossover past the problem
+// sizes on either side of it, so the rule does not read them. No Trilinos: unit-tested alone.
 
 #include "solvers/parameters/LinearSolverParameters.hpp"
 
@@ -13,7 +14,6 @@ namespace glossa::solvers {
 struct LinearProblem {
   long long unknowns = 0; // global rows of the tangent
   int ranks = 1;          // the ranks that solve it (a control group's, with --control-groups)
-  bool symmetric = true;  // a symmetric tangent (CG, LDL^T); otherwise GMRES and LU
 };
 
 struct LinearSolveChoice {

@@ -175,7 +175,7 @@ ParameterList ifpack2Parameters(const LinearSolverParameters &s, const LinearSol
 
 bool usesDirectSolve(const LinearSolverParameters &s, const LinearSolverContext &c) {
   if (c.direct) return *c.direct; // the plan's
-  return chooseLinearSolve(s, {c.globalRows, c.ranks, c.symmetric}).direct;
+  return chooseLinearSolve(s, {c.globalRows, c.ranks}).direct;
 }
 
 LinearSolverPlan planLinearSolver(const LinearSolverParameters &s, const LinearSolverContext &c, bool mixedBlockSolve) {
@@ -221,7 +221,7 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &
     auto &mumps = p->sublist("Preconditioner Types").sublist("MUMPS");
     mumps.set("symmetric", c.symmetric);
     mumps.set("reuse iterations", s.directReuseIterations);
-    mumps.set("gathered", chooseLinearSolve(s, {c.globalRows, c.ranks, c.symmetric}).gathered);
+    mumps.set("gathered", chooseLinearSolve(s, {c.globalRows, c.ranks}).gathered);
   } else if (s.preconditioner == Preconditioner::mueLu) {
     p->set("Preconditioner Type", "MueLu");
     p->sublist("Preconditioner Types").set("MueLu", mueluParameters(s, c));

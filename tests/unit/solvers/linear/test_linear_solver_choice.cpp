@@ -16,8 +16,8 @@ LinearSolverParameters section(LinearSolverType type) {
 TEST(LinearSolverChoice, ExplicitTypesAreKeptWhateverTheProblem) {
   for (const long long n : {486LL, 20097LL, 151167LL})
     for (const int ranks : {1, 2, 4}) {
-      EXPECT_TRUE(chooseLinearSolve(section(LinearSolverType::direct), {n, ranks, true}).direct);
-      EXPECT_FALSE(chooseLinearSolve(section(LinearSolverType::iterative), {n, ranks, true}).direct);
+      EXPECT_TRUE(chooseLinearSolve(section(LinearSolverType::direct), {n, ranks}).direct);
+      EXPECT_FALSE(chooseLinearSolve(section(LinearSolverType::iterative), {n, ranks}).direct);
     }
 }
 
@@ -26,8 +26,7 @@ TEST(LinearSolverChoice, AutoSolvesSmallProblemsDirectlyOnOneAndTwoRanks) {
   // Cook's membrane (486 unknowns), the §7.1 blocks (2,187), the coarse tongue (2,838).
   for (const long long n : {486LL, 2187LL, 2838LL})
     for (const int ranks : {1, 2}) {
-      EXPECT_TRUE(chooseLinearSolve(s, {n, ranks, true}).direct) << n << " unknowns on " << ranks;
-      EXPECT_TRUE(chooseLinearSolve(s, {n, ranks, false}).direct) << n << " unknowns on " << ranks;
+      EXPECT_TRUE(chooseLinearSolve(s, {n, ranks}).direct) << n << " unknowns on " << ranks;
     }
 }
 
@@ -35,36 +34,50 @@ TEST(LinearSolverChoice, AutoSolvesLargeProblemsIteratively) {
   const auto s = section(LinearSolverType::automatic);
   // The medium tongue (20,097) and the fine one (151,167).
   for (const long long n : {20097LL, 151167LL})
-    for (const int ranks : {1, 2}) EXPECT_FALSE(chooseLinearSolve(s, {n, ranks, false}).direct);
-  EXPECT_FALSE(chooseLinearSolve(s, {0, 1, true}).direct); // nothing to factor
+    for (const int ranks : {1, 2}) EXPECT_FALSE(chooseLinearSolve(s, {n, ranks}).direct);
+  EXPECT_FALSE(chooseLinearSolve(s, {0, 1}).direct); // nothing to factor
 }
 
 TEST(LinearSolverChoice, TheLimitIsDirectUpToOnOneRank) {
   auto s = section(LinearSolverType::automatic);
   s.directUpTo = 1000;
-  EXPECT_EQ(autoDirectLimit(s, {1000, 1, true}), 1000);
-  EXPECT_TRUE(chooseLinearSolve(s, {1000, 1, true}).direct);
-  EXPECT_FALSE(chooseLinearSolve(s, {1001, 1, true}).direct);
+  EXPECT_EQ(autoDirectLimit(s, {1000, 1}), 1000);
+  EXPECT_TRUE(chooseLinearSolve(s, {1000, 1}).direct);
+  EXPECT_FALSE(chooseLinearSolve(s, {1001, 1}).direct);
   s.directUpTo = 0; // never direct
-  EXPECT_FALSE(chooseLinearSolve(s, {10, 1, true}).direct);
-  EXPECT_FALSE(chooseLinearSolve(s, {10, 2, true}).direct);
+  EXPECT_FALSE(chooseLinearSolve(s, {10, 1}).direct);
+  EXPECT_FALSE(chooseLinearSolve(s, {10, 2}).direct);
+}
+
+// On R ranks the gathered factorisation costs one rank's while the iterative solve is shared:
+// the limit is 'direct up to' / R (8,000 / 2 = 4,000 by default). The step-44 block at 12 per
+// side (6,591 unknowns) is solved directly on one rank, iteratively on two.
+TEST(LinearSolverChoice, OnSeveralRanksTheLimitIsDirectUpToOverTheRanks) {
+  const auto s = section(LinearSolverType::automatic);
+  EXPECT_EQ(autoDirectLimit(s, {0, 1}), 8000);
+  EXPECT_EQ(autoDirectLimit(s, {0, 2}), 4000);
+  EXPECT_EQ(autoDirectLimit(s, {0, 4}), 2000);
+  EXPECT_TRUE(chooseLinearSolve(s, {4000, 2}).direct);
+  EXPECT_FALSE(chooseLinearSolve(s, {4001, 2}).direct);
+  EXPECT_TRUE(chooseLinearSolve(s, {6591, 1}).direct);
+  EXPECT_FALSE(chooseLinearSolve(s, {6591, 2}).direct);
 }
 
 TEST(LinearSolverChoice, AutoGathersItsDirectSolveOnSeveralRanks) {
   const auto s = section(LinearSolverType::automatic);
-  EXPECT_FALSE(chooseLinearSolve(s, {486, 1, true}).gathered); // one rank: nothing to gather
-  EXPECT_TRUE(chooseLinearSolve(s, {486, 2, true}).gathered);
-  EXPECT_TRUE(chooseLinearSolve(s, {486, 4, false}).gathered);
+  EXPECT_FALSE(chooseLinearSolve(s, {486, 1}).gathered); // one rank: nothing to gather
+  EXPECT_TRUE(chooseLinearSolve(s, {486, 2}).gathered);
+  EXPECT_TRUE(chooseLinearSolve(s, {486, 4}).gathered);
 }
 
 TEST(LinearSolverChoice, TypeDirectIsDistributedUnlessTheDeckGathersIt) {
   auto s = section(LinearSolverType::direct);
-  EXPECT_FALSE(chooseLinearSolve(s, {486, 2, true}).gathered);
+  EXPECT_FALSE(chooseLinearSolve(s, {486, 2}).gathered);
   s.directDistribution = DirectDistribution::gathered;
-  EXPECT_TRUE(chooseLinearSolve(s, {486, 2, true}).gathered);
+  EXPECT_TRUE(chooseLinearSolve(s, {486, 2}).gathered);
   auto a = section(LinearSolverType::automatic);
   a.directDistribution = DirectDistribution::distributed;
-  EXPECT_FALSE(chooseLinearSolve(a, {486, 2, true}).gathered);
+  EXPECT_FALSE(chooseLinearSolve(a, {486, 2}).gathered);
 }
 
 } // namespace
