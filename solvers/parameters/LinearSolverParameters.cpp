@@ -7,7 +7,7 @@ namespace glossa::solvers {
 Teuchos::ParameterList linearSolverParameters() {
   Teuchos::ParameterList p;
   io::declareString(p, "type", "auto",
-                    "auto: direct up to 'direct up to' unknowns on one rank (fewer on several: doc/incompressibility.md), "
+                    "auto: direct up to 'direct up to' unknowns on one rank, 'direct up to' / R on R ranks, "
                     "iterative above; iterative: Belos Krylov "
                     "solver with the 'preconditioner'; direct: the 'direct solver'",
                     {"auto", "iterative", "direct"});
@@ -17,8 +17,9 @@ Teuchos::ParameterList linearSolverParameters() {
                     "Amesos2 KLU2 (slow on 3D meshes, kept for comparison; one rank)",
                     {"MUMPS", "KLU2"});
   io::declareInt(p, "direct up to", 8000,
-                 "type = auto: the largest number of unknowns solved directly (the measured crossover with "
-                 "MueLu on the step-44 block lies between 6,591 and 14,739; doc/incompressibility.md)",
+                 "type = auto: the largest number of unknowns solved directly on one rank, on R ranks this / R "
+                 "(the measured crossovers with MueLu on the step-44 block: between 6,591 and 14,739 on one "
+                 "rank; doc/incompressibility.md)",
                  io::Range::atLeast(0));
   io::declareString(p, "direct distribution", "auto",
                     "MUMPS on several ranks: gathered (the entries gathered onto rank 0 and factored there "
