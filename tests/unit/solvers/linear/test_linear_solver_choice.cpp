@@ -49,18 +49,20 @@ TEST(LinearSolverChoice, TheLimitIsDirectUpToOnOneRank) {
   EXPECT_FALSE(chooseLinearSolve(s, {10, 2}).direct);
 }
 
-// On R ranks the gathered factorisation costs one rank's while the iterative solve is shared:
-// the limit is 'direct up to' / R (8,000 / 2 = 4,000 by default). The step-44 block at 12 per
-// side (6,591 unknowns) is solved directly on one rank, iteratively on two.
-TEST(LinearSolverChoice, OnSeveralRanksTheLimitIsDirectUpToOverTheRanks) {
+// The limit is 'direct up to' on any rank count (measured: on 2 ranks the direct solve still won
+// at 6,591 unknowns); up to 'direct up to' / R the solve is gathered onto rank 0, above it
+// distributed over the ranks (the gathered factorisation costs one rank's).
+TEST(LinearSolverChoice, OnSeveralRanksLargerDirectSolvesAreDistributed) {
   const auto s = section(LinearSolverType::automatic);
   EXPECT_EQ(autoDirectLimit(s, {0, 1}), 8000);
-  EXPECT_EQ(autoDirectLimit(s, {0, 2}), 4000);
-  EXPECT_EQ(autoDirectLimit(s, {0, 4}), 2000);
-  EXPECT_TRUE(chooseLinearSolve(s, {4000, 2}).direct);
-  EXPECT_FALSE(chooseLinearSolve(s, {4001, 2}).direct);
-  EXPECT_TRUE(chooseLinearSolve(s, {6591, 1}).direct);
-  EXPECT_FALSE(chooseLinearSolve(s, {6591, 2}).direct);
+  EXPECT_EQ(autoDirectLimit(s, {0, 2}), 8000);
+  EXPECT_TRUE(chooseLinearSolve(s, {4000, 2}).gathered);
+  EXPECT_TRUE(chooseLinearSolve(s, {6591, 2}).direct);
+  EXPECT_FALSE(chooseLinearSolve(s, {6591, 2}).gathered);
+  EXPECT_TRUE(chooseLinearSolve(s, {8000, 2}).direct);
+  EXPECT_FALSE(chooseLinearSolve(s, {8001, 2}).direct);
+  EXPECT_TRUE(chooseLinearSolve(s, {2000, 4}).gathered);
+  EXPECT_FALSE(chooseLinearSolve(s, {2001, 4}).gathered);
 }
 
 TEST(LinearSolverChoice, AutoGathersItsDirectSolveOnSeveralRanks) {
