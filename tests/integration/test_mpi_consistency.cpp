@@ -94,8 +94,8 @@ TEST(MpiConsistency, VertexPatchIsRefusedOnTwoRanks) {
                io::DeckError);
 }
 
-// The contact patch block (inputs/verification/contact_patch_block.xml) at its default solver
-// settings, where 2 ranks solve iteratively and 1 rank directly: on 2 ranks the fixed components
+// The contact patch block (inputs/verification/contact_patch_block.xml), 1 rank at its default
+// solver settings (directly), 2 ranks iteratively: on 2 ranks the fixed components
 // (x at xmin, y at ymin) are exactly 0, every traced bottom node sinks by p / eps (the plane
 // carries the applied pressure p, the penalty law's contact pressure) to 1e-6, and the field agrees
 // with one rank's to 1e-8. Before the residual ignored what an iterate held at fixed dofs, MueLu's
@@ -110,7 +110,8 @@ TEST(MpiConsistency, ContactPatchHoldsFixedComponentsExactlyOnTwoRanks) {
   const auto dirSerial = test::scratchDirectory("mpi_serial_contact"), dirParallel = test::scratchDirectory("mpi_parallel_contact");
   if (rank == 0) test::runDeck(deck, {}, dirSerial, single);
   world->barrier();
-  const auto s = test::runDeck(deck, {}, dirParallel, world);
+  // Iterative on 2 ranks, as the test is about (auto solves this small block directly on both).
+  const auto s = test::runDeck(deck, {"Linear solver/type=iterative"}, dirParallel, world);
   ASSERT_EQ(s.at("ranks").get<int>(), 2);
   ASSERT_TRUE(s.at("converged").get<bool>());
   if (rank != 0) return;
