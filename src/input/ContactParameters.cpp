@@ -62,8 +62,10 @@ std::shared_ptr<const contact::Obstacle> buildSurface(const io::Deck &deck, cons
                                    : normals == "toward point" ? contact::NormalSide::TowardPoint
                                                                : contact::NormalSide::AsStored;
   contact::TriangleSurface surface = contact::readSurface(path.string(), c.get<double>("file unit"));
+  const contact::NormalField field =
+      c.get<std::string>("normal field") == "smoothed" ? contact::NormalField::smoothed : contact::NormalField::faceted;
   return std::make_shared<contact::TriangulatedObstacle>(
-      contact::orientNormals(std::move(surface), side, vec3(c.get<Array<double>>("body point"))));
+      contact::orientNormals(std::move(surface), side, vec3(c.get<Array<double>>("body point"))), field);
 }
 
 // The nodes of the contact's faces that start inside the obstacle deeper than the deck tolerates:
@@ -244,6 +246,11 @@ ParameterList contactParameters() {
                     "surface: which way its normals point, i.e. the body's side: as the file winds them, "
                     "outward from the volume a closed surface encloses, or toward 'body point'",
                     {"as stored", "outward", "toward point"});
+  io::declareString(p, "normal field", "faceted",
+                    "surface: the contact normal, each triangle's own (faceted; it jumps from triangle to triangle) "
+                    "or interpolated from the vertices' normals (smoothed: continuous across edges, for coarse "
+                    "curved surfaces such as bones; doc/contact.md)",
+                    {"faceted", "smoothed"});
   io::declareDoubleArray(p, "body point", Array<double>(3, 0.0), "m",
                          "surface with normals 'toward point': a point on the body's side of it", 3);
   io::declareDoubleArray(p, "point", Array<double>(3, 0.0), "m",
