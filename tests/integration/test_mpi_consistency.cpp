@@ -151,7 +151,7 @@ TEST(MpiConsistency, ContactPatchHoldsFixedComponentsExactlyOnTwoRanks) {
 // and tangent entries reaching them through the overlap assembly. The field agrees with one rank's
 // to 1e-8, and the slave's nodes sink p / eps below the master's top as on one rank.
 TEST(MpiConsistency, TwoBlockPatchAgreesWithTheBlocksOnDifferentRanks) {
-  auto world = Tpetra::getDefaultComm();
+  auto world = test::worldComm();
   ASSERT_EQ(world->getSize(), 2) << "run this test with mpiexec -np 2";
   const int rank = world->getRank();
   const std::string deck = test::inputPath("verification/two_block_patch.xml");
