@@ -24,6 +24,8 @@ import sys
 import tempfile
 import time
 
+from glossa_command import glossa_run_command
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 V = os.path.join(ROOT, "inputs", "verification")
 P = os.path.join(ROOT, "inputs", "paper")
@@ -52,11 +54,7 @@ CHOICES = {
 def run(glossa, deck, sets, ranks):
     """One run: (wall seconds of the whole process, summary.json, traces rows)."""
     out = tempfile.mkdtemp(prefix="glossa-linear-choice-")
-    cmd = [glossa, "run", deck, "--output", out, "--quiet"]
-    for s in sets:
-        cmd += ["--set", s]
-    if ranks > 1:
-        cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
+    cmd = glossa_run_command(glossa, deck, out, sets, ranks)
     start = time.perf_counter()
     try:
         subprocess.run(cmd, check=False, stdout=subprocess.DEVNULL, timeout=900)
