@@ -23,15 +23,23 @@ import subprocess
 import sys
 import time
 
-import checkpoint_part
-
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tests", "fuzz"))
+import checkpoint_part  # noqa: E402 (the checkpoint fuzz's reader of a checkpoint part)
 DECK = os.path.join(ROOT, "inputs", "paper", "tongue_palate.xml")
 
 
 def rows(path):
     with open(path) as f:
         return list(csv.DictReader(f))
+
+
+def latest_checkpoint_part(checkpoint, rank):
+    """The state one rank wrote in the run's latest checkpoint (doc/output.md)."""
+    with open(os.path.join(checkpoint, "latest")) as f:
+        step = f.read().strip()
+    with open(os.path.join(checkpoint, step, f"rank_{rank:04d}.cbor"), "rb") as f:
+        return checkpoint_part.decode(checkpoint_part.unframe(f.read())[2])
 
 
 def report_contacts(out, summary, ranks):
@@ -44,7 +52,7 @@ def report_contacts(out, summary, ranks):
     for name, c in steps[-1]["contacts"].items():
         print(f"  {name}: {c['normal_force']:.4g} N on {c['active_points']} points, area {1e4 * c['area']:.3g} cm^2, "
               f"largest penetration {1e6 * c['largest_penetration']:.3g} um")
-    parts = [checkpoint_part.latest_part(os.path.join(out, "checkpoint"), rank) for rank in range(ranks)]
+    parts = [latest_checkpoint_part(os.path.join(out, "checkpoint"), rank) for rank in range(ranks)]
     palate = sorted((m for part in parts for m in part["contact"][0]["multipliers"] if m > 0), reverse=True)
     print(f"  palate multipliers > 0 ({len(palate)}), largest first [kPa]: "
           + ", ".join(f"{1e-3 * m:.2g}" for m in palate))
