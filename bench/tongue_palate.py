@@ -9,8 +9,10 @@ the contact with the palate beside the measured tongue-palate pressures (doc/ton
 Writes the table (time, contact area, normal force, mean pressure = force / area, active
 points, largest penetration and gap error, the palate zone's resultant) and prints the last
 step, the balance of the palate zone's resultant against the contact's normal force, and the
-largest penetration against the gap tolerance. The peak of the nodal contact pressure comes
-from the fields (doc/render_tongue.py draws them).
+largest penetration against the gap tolerance; then the steps and Newton iterations, each
+contact at the last step, the palate's largest multipliers (the peak contact pressure, from the
+last checkpoint) and the zones' resultants and the reactions there. The peak of the nodal
+contact pressure comes from the fields (doc/render_tongue.py draws them).
 """
 import argparse
 import csv
@@ -22,12 +24,47 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tests", "fuzz"))
+import checkpoint_part  # noqa: E402 (the checkpoint fuzz's reader of a checkpoint part)
 DECK = os.path.join(ROOT, "inputs", "paper", "tongue_palate.xml")
 
 
 def rows(path):
     with open(path) as f:
         return list(csv.DictReader(f))
+
+
+def latest_checkpoint_part(checkpoint, rank):
+    """The state one rank wrote in the run's latest checkpoint (doc/output.md)."""
+    with open(os.path.join(checkpoint, "latest")) as f:
+        step = f.read().strip()
+    with open(os.path.join(checkpoint, step, f"rank_{rank:04d}.cbor"), "rb") as f:
+        return checkpoint_part.decode(checkpoint_part.unframe(f.read())[2])
+
+
+def report_contacts(out, summary, ranks):
+    """The run's steps and Newton iterations, and at its last step each contact's force, points and
+    penetration and the palate's largest multipliers (the contact pressures of its points, from the
+    last checkpoint: the peak pressure) with the resultants of the zones."""
+    steps = summary["steps"]
+    print(f"{len(steps)} steps (smallest {min(x['dt'] for x in steps):g} s), Newton "
+          f"{sum(x['newton_iterations'] for x in steps)}, Uzawa {sum(x['uzawa_iterations'] for x in steps)}")
+    for name, c in steps[-1]["contacts"].items():
+        print(f"  {name}: {c['normal_force']:.4g} N on {c['active_points']} points, area {1e4 * c['area']:.3g} cm^2, "
+              f"largest penetration {1e6 * c['largest_penetration']:.3g} um")
+    parts = [latest_checkpoint_part(os.path.join(out, "checkpoint"), rank) for rank in range(ranks)]
+    palate = sorted((m for part in parts for m in part["contact"][0]["multipliers"] if m > 0), reverse=True)
+    print(f"  palate multipliers > 0 ({len(palate)}), largest first [kPa]: "
+          + ", ".join(f"{1e-3 * m:.2g}" for m in palate))
+    last = max(float(r["time [s]"]) for r in rows(os.path.join(out, "resultants.csv")))
+    for r in rows(os.path.join(out, "resultants.csv")):
+        if float(r["time [s]"]) == last:
+            print(f"  resultant of {r['face_set']}: ({float(r['fx [N]']):.3f}, {float(r['fy [N]']):.3f}, "
+                  f"{float(r['fz [N]']):.3f}) N")
+    for r in rows(os.path.join(out, "reactions.csv")):
+        if float(r["time [s]"]) == last:
+            print(f"  reaction of {r['condition']}: ({float(r['fx [N]']):.3f}, {float(r['fy [N]']):.3f}, "
+                  f"{float(r['fz [N]']):.3f}) N")
 
 
 def main(argv):
@@ -68,6 +105,7 @@ def main(argv):
     print(f"contact from t = {float(onset):.4g} s; at t = {float(last['time [s]']):g} s: area {1e4 * area:.3g} cm^2, "
           f"force {force:.3g} N, mean pressure {1e-3 * force / area:.3g} kPa, "
           f"{last['active_points [-]']} active points; table in {args.table}")
+    report_contacts(out, summary, args.ranks)
     return 0 if summary["converged"] else 1
 
 

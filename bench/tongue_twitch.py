@@ -8,15 +8,22 @@ tongue twitch").
     /usr/bin/python3 bench/tongue_twitch.py [--glossa build/glossa] [--runs DIR]
         [--table bench/results/tongue_twitch.csv] [--figure doc/figures/tongue_twitch.png]
         [--set path=value ...]   (applied to every run, e.g. Time/step size=0.001)
+        [--reuse]   (run nothing: the figures of the runs already in --runs)
+        [--compare bench/results/tongue_twitch.csv]   (the step's convergence: each run's largest
+            tip difference from the stored table's runs at their common times, and the overshoot,
+            settling time, period and largest |u_d - u_s| of both; with --set "Time/step
+            size=0.001", --table bench/results/tongue_twitch_1ms.csv and --figure "")
 
 Definitions (u_d, u_s the tip P_A's displacement from the dynamic and the quasi-static run,
 u_f = u_s at the end time, the quasi-static final displacement):
   overshoot        max_t (u_d . e - |u_f|) / |u_f|, e = u_f / |u_f|: how far past the final
                    position the tip goes along the direction of its motion;
   settling time    the first time after which |u_d(t) - u_f| <= 2 % |u_f| for good;
-  period           twice the mean time between the sign changes of (u_d - u_s) . e once the
-                   activation has risen (t > 40 ms): the tongue's oscillation about its moving
-                   equilibrium (of the undamped run).
+  period           twice the mean time between the swings of (u_d - u_s) . e through zero once
+                   the activation has risen (t > 40 ms): the tongue's oscillation about its moving
+                   equilibrium. A swing counts once the signal has passed 5 % of its largest
+                   magnitude on the other side, so the higher modes' wiggles about zero between
+                   two swings are not taken for half periods.
 Writes a table per time (the runs' tip displacements, the damped run's difference from the
 quasi-static one, its kinetic and strain energy) and prints the figures of both dynamic runs, the
 Newton counts, the largest dilatation error of any step and the run times.
@@ -38,6 +45,7 @@ RUNS = {"static": ("static", []), "dynamic": ("dynamic", []),
 POINT = "P_A"
 SETTLING_BAND = 0.02
 RISEN = 0.04  # [s]: 6 rise times; the activation is within 0.3 % of full beyond it
+CROSSING_BAND = 0.05
 
 
 def rows(path):
@@ -46,8 +54,8 @@ def rows(path):
 
 
 def tip(out):
-    """{time: (ux, uy, uz)} of the tip."""
-    return {float(r["time [s]"]): tuple(float(r[k]) for k in ("ux [m]", "uy [m]", "uz [m]"))
+    """{time: (ux, uy, uz)} of the tip, times to the microsecond (runs of different steps meet there)."""
+    return {round(float(r["time [s]"]), 6): tuple(float(r[k]) for k in ("ux [m]", "uy [m]", "uz [m]"))
             for r in rows(os.path.join(out, "traces.csv")) if r["point"] == POINT}
 
 
@@ -63,6 +71,24 @@ def dot(a, b):
     return sum(x * y for x, y in zip(a, b))
 
 
+def oscillation_period(signal):
+    """Twice the mean time between the swings of [(t, s)] through zero, a swing counted only once s
+    has gone past the band of CROSSING_BAND of its largest |s| on the other side: a wiggle of the
+    higher modes about zero between two swings of the fundamental would otherwise count as two
+    half periods. The time of a swing is that of its last sign change (linear interpolation)."""
+    band = CROSSING_BAND * max(abs(s) for _, s in signal)
+    crossings, side, last = [], 0, None
+    for (t0, s0), (t1, s1) in zip(signal, signal[1:]):
+        if s0 * s1 < 0:
+            last = t0 + (t1 - t0) * s0 / (s0 - s1)
+        if abs(s1) > band:
+            sign = 1 if s1 > 0 else -1
+            if side and sign != side and last is not None:
+                crossings.append(last)
+            side = sign
+    return 2 * (crossings[-1] - crossings[0]) / (len(crossings) - 1) if len(crossings) > 1 else None
+
+
 def measures(dynamic, static):
     """Overshoot, settling time, period and the largest |u_d - u_s| (see the module's text)."""
     times = sorted(dynamic)
@@ -75,16 +101,48 @@ def measures(dynamic, static):
             settling = None
         elif settling is None:
             settling = t
-    crossings = []
-    for t0, t1 in zip(times, times[1:]):
-        if t0 < RISEN:
-            continue
-        d0, d1 = dot(sub(dynamic[t0], static[t0]), e), dot(sub(dynamic[t1], static[t1]), e)
-        if d0 * d1 < 0:
-            crossings.append(t0 + (t1 - t0) * d0 / (d0 - d1))
-    period = 2 * (crossings[-1] - crossings[0]) / (len(crossings) - 1) if len(crossings) > 1 else None
+    period = oscillation_period([(t, dot(sub(dynamic[t], static[t]), e)) for t in times if t >= RISEN])
     difference = max(norm(sub(dynamic[t], static[t])) for t in times)
     return overshoot, settling, period, difference
+
+
+def stored(table):
+    """The runs' tip trajectories {run: {time: (ux, uy, uz)}} [m] from a table this script wrote."""
+    runs = {"dynamic": {}, "undamped": {}, "static": {}}
+    for r in rows(table):
+        for run, trajectory in runs.items():
+            trajectory[round(float(r["time [s]"]), 6)] = tuple(1e-3 * float(r[f"{run}_{c} [mm]"]) for c in ("ux", "uy", "uz"))
+    return runs
+
+
+def compare(table, runs):
+    """Prints each run's largest tip difference from the runs of a stored table (another step size) at
+    their common times, and the dynamic runs' figures beside the stored ones: how far the step has
+    converged."""
+    reference = stored(table)
+    for run, trajectory in runs.items():
+        common = sorted(set(trajectory) & set(reference[run]))
+        gap = max(common, key=lambda t: norm(sub(trajectory[t], reference[run][t])))
+        scale = max(norm(x) for x in reference[run].values())
+        print(f"against {os.path.basename(table)}: {run}: largest tip difference "
+              f"{1e3 * norm(sub(trajectory[gap], reference[run][gap])):.4g} mm at {1e3 * gap:.4g} ms "
+              f"({100 * norm(sub(trajectory[gap], reference[run][gap])) / scale:.3g} % of its largest displacement, "
+              f"{len(common)} common times)")
+    for run in ("dynamic", "undamped"):
+        # the lag behind the quasi-static run, without the part the activation's own step moves
+        # both runs by (eq. 24 by backward Euler, first order in the step)
+        common = sorted(set(runs[run]) & set(reference[run]))
+        lag = [norm(sub(sub(runs[run][t], runs["static"][t]), sub(reference[run][t], reference["static"][t])))
+               for t in common]
+        at = common[lag.index(max(lag))]
+        print(f"  {run}: largest difference of u_d - u_s from the stored one {1e3 * max(lag):.4g} mm at "
+              f"{1e3 * at:.4g} ms")
+        here, there = measures(runs[run], runs["static"]), measures(reference[run], reference["static"])
+        names = ("overshoot [%]", "settling [ms]", "period [ms]", "largest |u_d - u_s| [mm]")
+        scales = (100, 1e3, 1e3, 1e3)
+        print(f"  {run}: " + ", ".join(
+            f"{n} {'-' if a is None else f'{k * a:.4g}'} (stored {'-' if b is None else f'{k * b:.4g}'})"
+            for n, k, a, b in zip(names, scales, here, there)))
 
 
 def figure(path, dynamic, static, undamped, energy):
@@ -116,7 +174,10 @@ def main(argv):
     p.add_argument("--runs", default=os.path.join(ROOT, "build", "bench", "tongue_twitch"))
     p.add_argument("--table", default=os.path.join(ROOT, "bench", "results", "tongue_twitch.csv"))
     p.add_argument("--figure", default=os.path.join(ROOT, "doc", "figures", "tongue_twitch.png"))
-    p.add_argument("--set", action="append", default=[], help="path=value, applied to both runs")
+    p.add_argument("--set", action="append", default=[], help="path=value, applied to every run")
+    p.add_argument("--reuse", action="store_true", help="run nothing: take the runs already in --runs")
+    p.add_argument("--compare", help="a table this script wrote (another step size): the tip differences "
+                                     "from its runs and its figures beside these")
     args = p.parse_args(argv)
     summaries, walls, outs = {}, {}, {}
     for run, (analysis, sets) in RUNS.items():
@@ -125,11 +186,12 @@ def main(argv):
         for s in sets + args.set:
             command += ["--set", s]
         start = time.time()
-        subprocess.run(command, check=True)
+        if not args.reuse:
+            subprocess.run(command, check=True)
         walls[run] = time.time() - start
         summaries[run] = json.load(open(os.path.join(outs[run], "summary.json")))
     dynamic, static, undamped = tip(outs["dynamic"]), tip(outs["static"]), tip(outs["undamped"])
-    energy = {float(r["time [s]"]): (float(r["kinetic_energy [J]"]), float(r["strain_energy [J]"]))
+    energy = {round(float(r["time [s]"]), 6): (float(r["kinetic_energy [J]"]), float(r["strain_energy [J]"]))
               for r in rows(os.path.join(outs["dynamic"], "energy.csv"))}
     os.makedirs(os.path.dirname(args.table), exist_ok=True)
     with open(args.table, "w", newline="") as f:
@@ -159,6 +221,8 @@ def main(argv):
               f"{sum(x['uzawa_iterations'] for x in steps)}, largest dilatation error "
               f"{max(x['max_dilatation_error'] for x in steps):.2g}, {walls[run]:.0f} s, "
               f"converged {s['converged']}")
+    if args.compare:
+        compare(args.compare, {"dynamic": dynamic, "undamped": undamped, "static": static})
     if args.figure:
         figure(args.figure, dynamic, static, undamped, energy)
     return 0 if all(s["converged"] for s in summaries.values()) else 1

@@ -493,14 +493,17 @@ Three rigid obstacles, frictionless (inputs/tongue/, same ArtiSynth model and fr
   back), by the augmented Lagrangian, penalty 1e8 Pa/m, to the default gap tolerance (1e-3 of
   the faces' mean edge);
 - ICPJaw3.obj (mandible) against 'jaw side': the boundary faces above its attachment box
-  (z >= 0.085 m) and behind the tip (x >= 0.07 m), so no attachment node is in it;
+  (z >= 0.085 m), the tip with them, so no attachment node is in it;
 - ICPHyoid3.obj against 'hyoid side': the faces between the hyoid's attachment box and z = 0.085 m.
 The bones tolerate 0.05 mm of overlap at the start (the imaged tongue's two free nodes 0.02 mm
 inside the mandible). The attachment nodes stay fixed, so their faces are left out: a point inside
-the bone whose nodes cannot move would never meet the gap tolerance. The tip is left out of the
-jaw's face set: where it meets the mandible Newton stalls (doc/tongue.md).
+the bone whose nodes cannot move would never meet the gap tolerance. All three surfaces give
+smoothed normals (normal field = smoothed): with faceted ones Newton stalls where the tip presses
+on the mandible, its contact points switching between states, and a dorsum point hops between
+two palate triangles 5 degrees apart (doc/contact.md, "Smoothed normals").
 The resultant of 'palate zone' (the palate side within 12 mm of the midline, where the palate
-pushes and no styloglossus insertion lies) is the force the palate exerts, for the balance check."""
+pushes and no styloglossus insertion lies) is the force the palate exerts, and that of 'jaw zone'
+(the jaw side in front of x = 0.07 m, the tip) the force the mandible exerts, for the balance check."""
 deck("tongue_palate", "The tongue pressed on the palate by the styloglossus and the transversus.\n" + COMMON + PALATE,
      {"SG": 0.1, "TV": 0.1}, gravity=(0, 0, -1), end_time=2.0, step=0.05, reference="s8_1/reference_inverse.txt",
      neural={"type": ("string", "table"), "times": ("Array(double)", "{0, 0.99, 1.49}"),
@@ -509,23 +512,28 @@ deck("tongue_palate", "The tongue pressed on the palate by the styloglossus and 
                                 "minimum cosine": ("double", 0.0),
                                 "box min": ("Array(double)", "{-1, -1, 0.065}"),
                                 "box max": ("Array(double)", "{1, 1, 1}")},
-                "jaw side": {"box min": ("Array(double)", "{0.07, -1, 0.085}"),
+                "jaw side": {"box min": ("Array(double)", "{-1, -1, 0.085}"),
                              "box max": ("Array(double)", "{0.107, 1, 1}")},
                 "palate zone": {"from": ("string", "palate side"),
                                 "box min": ("Array(double)", "{-1, -0.012, -1}"),
                                 "box max": ("Array(double)", "{1, 0.012, 1}")},
+                "jaw zone": {"from": ("string", "jaw side"),
+                             "box min": ("Array(double)", "{-1, -1, -1}"),
+                             "box max": ("Array(double)", "{0.07, 1, 1}")},
                 "hyoid side": {"box min": ("Array(double)", "{0.1, -1, 0.0655}"),
                                "box max": ("Array(double)", "{1, 1, 0.085}")}},
      contact={"palate": {"face set": ("string", "palate side"), "obstacle": ("string", "surface"),
                          "file": ("string", "../tongue/palate8.obj"), "penalty": ("double", 1e8),
-                         "search radius": ("double", 5e-3)},
+                         "search radius": ("double", 5e-3), "normal field": ("string", "smoothed")},
               "jaw": {"face set": ("string", "jaw side"), "obstacle": ("string", "surface"),
                       "file": ("string", "../tongue/ICPJaw3.obj"), "penalty": ("double", 1e8),
-                      "search radius": ("double", 5e-3), "start overlap tolerance": ("double", 0.05e-3)},
+                      "search radius": ("double", 5e-3), "normal field": ("string", "smoothed"),
+                      "start overlap tolerance": ("double", 0.05e-3)},
               "hyoid": {"face set": ("string", "hyoid side"), "obstacle": ("string", "surface"),
                         "file": ("string", "../tongue/ICPHyoid3.obj"), "penalty": ("double", 1e8),
-                        "search radius": ("double", 5e-3), "start overlap tolerance": ("double", 0.05e-3)}},
-     output={"resultant face sets": ("string", "palate side, palate zone")})
+                        "search radius": ("double", 5e-3), "normal field": ("string", "smoothed"),
+                        "start overlap tolerance": ("double", 0.05e-3)}},
+     output={"resultant face sets": ("string", "palate side, palate zone, jaw zone")})
 
 TWITCH = """
 A styloglossus twitch (doc/dynamics.md, "The tongue twitch"): the SG group at FFMR 25 % (as
