@@ -98,7 +98,8 @@ class Xml:
 
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
          reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None,
-         matrix=None, linear=None, face_sets=None, contact=None, neural=None, output=None):
+         matrix=None, linear=None, face_sets=None, contact=None, neural=None, output=None,
+         airway=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
@@ -115,7 +116,8 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     neural: None (the active groups fully activated from t = 0) or {parameter: (type, value)} of
     each active group's neural input time function (the activation then starts at 0 and follows
     u(t) through the activation dynamics).
-    output: None or {parameter: (type, value)} added to the Output section."""
+    output: None or {parameter: (type, value)} added to the Output section.
+    airway: None or {parameter: (type, value)} of the Airway section (doc/airway.md)."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -258,6 +260,11 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
             for key, (typ, value) in params.items():
                 x.add(key, typ, value)
             x.close()
+        x.close()
+    if airway is not None:
+        x.open("Airway")
+        for key, (typ, value) in airway.items():
+            x.add(key, typ, value)
         x.close()
     x.open("Named points")
     for pname, _, pos in POINTS:
@@ -507,3 +514,28 @@ deck("tongue_palate", "The tongue pressed on the palate by the styloglossus and 
                         "file": ("string", "../tongue/ICPHyoid3.obj"), "penalty": ("double", 1e8),
                         "search radius": ("double", 5e-3), "start overlap tolerance": ("double", 0.05e-3)}},
      output={"resultant face sets": ("string", "palate side, palate zone")})
+
+AIRWAY = """
+The airway's lumen (doc/airway.md): 20 cross-sections between the face set 'airway' and the
+palate and pharyngeal wall (palate8.obj), along a centreline fixed at rest from under the velum
+(the dorsum's midsagittal point nearest C04, x 112 mm, z 110 mm) to the vallecula (the tongue
+base's lowest midsagittal airway node, x 126.5 mm, z 70 mm); airway.csv, airway_sections.csv and
+the outlines in airway_sections/. Passive (u = 0 in every group), on the zero-strain configuration
+of s8_1 (s8_1/reference_inverse.txt): gravity ramped over [0, 1] s, then the airway suction of
+s8_3, linear from 0 at P_A to -500 Pa at P_P on 'airway', ramped over [1, 2] s; 8 steps of
+0.25 s. The palate (palate8.obj) is a frictionless contact of the face set 'palate side' (as in
+tongue_palate.xml), whose area airway.csv reports."""
+for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
+    deck(f"airway_{posture}", f"The airway's lumen under suction, {posture}.\n" + COMMON + AIRWAY +
+         f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
+         {}, gravity=g, pressure=-500.0, end_time=2.0, step=0.25, reference="s8_1/reference_inverse.txt",
+         face_sets={"palate side": {"outward normal": ("Array(double)", "{1, 0, 2}"),
+                                    "minimum cosine": ("double", 0.0),
+                                    "box min": ("Array(double)", "{-1, -1, 0.065}"),
+                                    "box max": ("Array(double)", "{1, 1, 1}")}},
+         contact={"palate": {"face set": ("string", "palate side"), "obstacle": ("string", "surface"),
+                             "file": ("string", "../tongue/palate8.obj"), "penalty": ("double", 1e8),
+                             "search radius": ("double", 5e-3)}},
+         airway={"face set": ("string", "airway"), "wall file": ("string", "../tongue/palate8.obj"),
+                 "sections": ("int", 20), "start point": ("Array(double)", "{0.1124, 0, 0.1103}"),
+                 "end point": ("Array(double)", "{0.1265, 0, 0.07}"), "contact": ("string", "palate")})

@@ -32,6 +32,7 @@ Simulation::Simulation(const io::Deck &deck, const RunConfiguration &config,
       const auto contacts = assembly::updateContactStates(assembly::ResultEvaluator(*run.assembler), state.u);
       run.recorder->record(0.0, state.u, state.lambda, true, initial, inputs);
       run.recorder->recordContacts(0.0, contacts);
+      run.recorder->recordAirway(0.0, contacts);
       recordEnergy(nullptr);
       run.report->write(assemblyCounters(*run.model));
     });
@@ -86,6 +87,7 @@ void Simulation::record(const StepTrial &trial) {
   const auto reactions = run.recorder->record(run.stepper->time(), state.u, state.lambda, fields, trial.attempt.muscle,
                                               run.history->trialInput(), fieldsStamp());
   run.recorder->recordContacts(run.stepper->time(), trial.attempt.uzawa.contacts);
+  run.recorder->recordAirway(run.stepper->time(), trial.attempt.uzawa.contacts);
   nlohmann::json step, forces = nlohmann::json::object();
   for (const auto &[name, row] : reactions) forces[name] = std::vector<double>(row.begin(), row.begin() + 3);
   step["reactions"] = forces;

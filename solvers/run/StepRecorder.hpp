@@ -23,6 +23,7 @@
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "io/output/TraceWriter.hpp"
+#include "solvers/run/AirwayRecorder.hpp"
 
 namespace glossa::solvers {
 
@@ -85,6 +86,9 @@ public:
   // One row per contact in contact.csv: area, normal force, largest penetration, active points
   // and largest gap error of a converged step (the Uzawa loop's measures; writer rank only).
   void recordContacts(double time, const std::vector<contact::ContactMeasures> &contacts);
+  // The airway's lumen at the state the last record() was given, with the contacts' areas (a
+  // scene with an Airway section; writer rank only; doc/airway.md).
+  void recordAirway(double time, const std::vector<contact::ContactMeasures> &contacts);
 
 private:
   // The node fields of a step: the displacement (all nodes) and, with contacts, their pressure
@@ -96,6 +100,8 @@ private:
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;
   std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_, resultants_, volumes_, contacts_, energy_;
+  std::unique_ptr<AirwayRecorder> airway_;
+  std::vector<Eigen::Vector3d> airwayPositions_; // the tongue surface's vertices at the last record()
   const Inertia *inertia_ = nullptr;
   std::vector<std::string> resultantSets_, volumeSets_;
   std::map<std::string, std::vector<double>> fibreDirections_; // rank 0, per family

@@ -21,6 +21,7 @@
 #include "mesh/ThickCylinderGenerator.hpp"
 #include "mesh/ThickSphereGenerator.hpp"
 #include "input/TimeFunctionParameters.hpp"
+#include "input/AirwayParameters.hpp"
 #include "input/ContactParameters.hpp"
 #include "input/DeckSets.hpp"
 #include "input/MaterialFactory.hpp"
@@ -361,6 +362,7 @@ void declareSceneParameters(ParameterList &schema) {
   ParameterList contacts;
   contacts.set(io::kAnySublist, contactParameters(), "one face set against one rigid obstacle");
   schema.set("Contact", contacts, "contact with rigid obstacles, one sublist each (doc/contact.md)");
+  schema.set("Airway", airwayParameters(), "the airway's lumen between the tongue and a rigid wall (doc/airway.md)");
   ParameterList points;
   points.set(io::kAnySublist, namedPointParameters(), "one named point");
   schema.set("Named points", points,
@@ -536,6 +538,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     scene.meshNotes.push_back("no named points: traces.csv and final_displacement will be empty; name points "
                               "in the deck's 'Named points' (any position inside the mesh) to trace them");
   replaceReferenceCoordinates(deck, scene);
+  buildAirway(deck, scene);
   checkScene(deck, scene);
   return scene;
 }

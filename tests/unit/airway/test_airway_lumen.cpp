@@ -1,4 +1,4 @@
-// The lumen's sections on channels whose cross-sections are known exactly (issue's acceptance:
+// The lumen's sections on channels whose cross-sections are known exactly (to
 // 1e-10 relative): two parallel planes, a faceted cylinder (its halves the tongue and the wall)
 // and a channel tilted out of the axes with a wall wider than the tongue and shifted sideways.
 // The centreline and the planes come from the same code as the tongue's.
