@@ -270,6 +270,7 @@ int main(int argc, char **argv) {
       // checks across sections are run's own (a deck validate passes, run does not refuse).
       const auto config = glossa::solvers::parseRunConfiguration(deck);
       const auto scene = glossa::input::buildScene(deck, config.time.rampEndTime);
+      glossa::input::buildAirway(deck, scene);  // its checks; the run builds it again
       glossa::solvers::checkRunConfiguration(deck, config, scene, glossa::solvers::buildControl(deck, scene),
                                              {comm->getSize(), a.controlGroups, !a.restart.empty()});
       if (root)

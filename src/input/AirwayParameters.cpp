@@ -105,9 +105,9 @@ ParameterList airwayParameters() {
   return p;
 }
 
-void buildAirway(const io::Deck &deck, model::Scene &scene) {
+std::shared_ptr<const model::AirwayOutput> buildAirway(const io::Deck &deck, const model::Scene &scene) {
   const ParameterList &a = deck.root().sublist("Airway");
-  if (a.get<std::string>("face set").empty()) return;
+  if (a.get<std::string>("face set").empty()) return nullptr;
   const auto &faces = faceSetAt(deck, scene.mesh, {"Airway", "face set"});
   require(deck, "wall file", "the wall's OBJ or STL file");
   require(deck, "start point", "the start of its centreline");
@@ -131,7 +131,7 @@ void buildAirway(const io::Deck &deck, model::Scene &scene) {
     throw io::DeckError(deck.where({"Airway"}) + ": " + e.what() +
                         " (check 'face set', 'wall file', 'midsagittal point', 'start point' and 'end point')");
   }
-  scene.airway = std::move(out);
+  return out;
 }
 
 }  // namespace glossa::input

@@ -6,16 +6,19 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "io/deck/Deck.hpp"
+#include <memory>
+
+#include "model/AirwayOutput.hpp"
 #include "model/Scene.hpp"
 
 namespace glossa::input {
 
 Teuchos::ParameterList airwayParameters();
 
-// The deck's airway (validated deck) into scene.airway, after the contacts (the contact it names)
-// and the reference coordinates; the centreline from the imaged positions. A missing wall file or
+// The deck's airway (validated deck) over the built scene (its face set, the contact it names);
+// the centreline from the imaged positions; null when the section is off. A missing wall file or
 // start/end point, an unknown face set or contact, and a centreline the geometry does not give
 // are DeckErrors naming the parameter (a bad wall file: SurfaceError).
-void buildAirway(const io::Deck &deck, model::Scene &scene);
+std::shared_ptr<const model::AirwayOutput> buildAirway(const io::Deck &deck, const model::Scene &scene);
 
 }  // namespace glossa::input

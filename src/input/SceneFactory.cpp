@@ -538,7 +538,6 @@ Scene buildScene(const io::Deck &deck, double endTime) {
     scene.meshNotes.push_back("no named points: traces.csv and final_displacement will be empty; name points "
                               "in the deck's 'Named points' (any position inside the mesh) to trace them");
   replaceReferenceCoordinates(deck, scene);
-  buildAirway(deck, scene);
   checkScene(deck, scene);
   return scene;
 }

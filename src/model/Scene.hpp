@@ -18,7 +18,6 @@
 #include "materials/IsochoricMaterial.hpp"
 #include "materials/VolumetricEnergy.hpp"
 #include "mesh/HexMesh.hpp"
-#include "model/AirwayOutput.hpp"
 #include "loads/PressureField.hpp"
 #include "model/MuscleArchitecture.hpp"
 #include "model/Tissue.hpp"
@@ -126,7 +125,6 @@ struct Scene {
   std::vector<BodyForceLoad> bodyForces;
   std::vector<FollowerPressureLoad> pressures;
   std::vector<RigidContact> contacts;
-  std::shared_ptr<const AirwayOutput> airway; // the deck's Airway section; null without one
   std::vector<std::string> tracedPoints; // names in mesh.namedPoints, in deck order
   // What the mesh reader changed on the way in (ImportedMesh::notes), for the run to print.
   std::vector<std::string> meshNotes;
