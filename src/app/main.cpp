@@ -23,7 +23,7 @@
 #include "io/deck/DeckReference.hpp"
 #include "io/output/OutputError.hpp"
 #include "mesh/MeshError.hpp"
-include "input/AirwayParameters.hpp"
+#include "input/AirwayParameters.hpp"
 #include "input/SceneFactory.hpp"
 #include "solvers/parameters/ControlSection.hpp"
 #include "solvers/parameters/RunChecks.hpp"
