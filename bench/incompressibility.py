@@ -24,6 +24,8 @@ import sys
 import tempfile
 import time
 
+from glossa_command import glossa_run_command
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(ROOT, "bench", "results")
 SCENES = {
@@ -87,11 +89,7 @@ FIELDS = ["scene", "n", "nu", "strategy", "ranks", "converged", "dofs", "newton"
 
 def run(glossa, deck, overrides, timeout, ranks):
     out = tempfile.mkdtemp(prefix="glossa-incomp-")
-    cmd = [glossa, "run", deck, "--output", out, "--quiet"]
-    for o in overrides:
-        cmd += ["--set", o]
-    if ranks > 1:
-        cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
+    cmd = glossa_run_command(glossa, deck, out, overrides, ranks)
     t0 = time.time()
     note = ""
     try:

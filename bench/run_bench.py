@@ -17,6 +17,8 @@ import subprocess
 import sys
 import tempfile
 
+from glossa_command import glossa_run_command
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DECK = os.path.join(ROOT, "inputs", "verification", "step44_block.xml")
 RESULTS = os.path.join(ROOT, "bench", "results")
@@ -24,11 +26,7 @@ RESULTS = os.path.join(ROOT, "bench", "results")
 
 def run(glossa, ranks, overrides, deck=DECK):
     out = tempfile.mkdtemp(prefix="glossa-bench-")
-    cmd = [glossa, "run", deck, "--output", out, "--quiet"]
-    for o in overrides:
-        cmd += ["--set", o]
-    if ranks > 1:
-        cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
+    cmd = glossa_run_command(glossa, deck, out, overrides, ranks)
     subprocess.run(cmd, check=False, stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "summary.json")) as f:
         return json.load(f)

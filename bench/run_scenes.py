@@ -18,14 +18,14 @@ import subprocess
 import sys
 import tempfile
 
+from glossa_command import glossa_run_command
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def run(glossa, deck, ranks):
     out = tempfile.mkdtemp(prefix="glossa-scene-")
-    cmd = [glossa, "run", deck, "--output", out, "--quiet"]
-    if ranks > 1:
-        cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + cmd
+    cmd = glossa_run_command(glossa, deck, out, ranks=ranks)
     subprocess.run(cmd, check=False, stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "summary.json")) as f:
         return json.load(f)

@@ -10,6 +10,7 @@ attachments fixed, the named points P_A, P_P and ten control points, and the air
 The decks are generated because Teuchos XML has no include: the anatomy is the same in each and
 only the loads, the active group and the time stepping differ. Edit this script, not the decks.
 """
+import math
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -99,7 +100,7 @@ class Xml:
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
          reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None,
          matrix=None, linear=None, face_sets=None, contact=None, neural=None, output=None,
-         airway=None):
+         time=None, group=None, incompressibility=None, gravity_table=None, airway=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
@@ -117,6 +118,11 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     each active group's neural input time function (the activation then starts at 0 and follows
     u(t) through the activation dynamics).
     output: None or {parameter: (type, value)} added to the Output section.
+    time, incompressibility: None or {parameter: (type, value)} added to the Time or the
+    Incompressibility section (a dynamic run's analysis, integrator and tolerances).
+    group: None or {parameter: (type, value)} added to each active group (e.g. its rise time).
+    gravity_table: None (gravity ramped linearly over the first second) or (times, values) of a
+    table time function.
     airway: None or {parameter: (type, value)} of the Airway section (doc/airway.md)."""
     assert "--" not in comment
     x = Xml()
@@ -176,6 +182,9 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     for g in GROUPS:
         x.open(g)
         x.add("T0s", "double", active.get(g, 0.1))
+        if g in active:
+            for key, (typ, value) in (group or {}).items():
+                x.add(key, typ, value)
         if g in active and neural is not None:
             # Activation from rest: alpha follows u(t) through the activation dynamics (eq. 24).
             x.add("neural input scale", "double", 1)
@@ -228,8 +237,13 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.add("posture", "string", "custom")
         x.add("direction", "Array(double)", vec(gravity))
         x.open("time function")
-        x.add("type", "string", "ramp")
-        x.add("ramp duration", "double", 1)
+        if gravity_table is None:
+            x.add("type", "string", "ramp")
+            x.add("ramp duration", "double", 1)
+        else:
+            x.add("type", "string", "table")
+            x.add("times", "Array(double)", vec(gravity_table[0]))
+            x.add("values", "Array(double)", vec(gravity_table[1]))
         x.close()
         x.close()
     if pressure is not None:
@@ -275,9 +289,13 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.open("Time")
     x.add("end time", "double", end_time)
     x.add("step size", "double", step)
+    for key, (typ, value) in (time or {}).items():
+        x.add(key, typ, value)
     x.close()
     x.open("Incompressibility")
     x.add("method", "string", "augmented Lagrangian")
+    for key, (typ, value) in (incompressibility or {}).items():
+        x.add(key, typ, value)
     x.close()
     if linear is not None:
         x.open("Linear solver")
@@ -539,3 +557,42 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
          airway={"face set": ("string", "airway"), "wall file": ("string", "../tongue/palate8.obj"),
                  "sections": ("int", 20), "start point": ("Array(double)", "{0.1124, 0, 0.1103}"),
                  "end point": ("Array(double)", "{0.1265, 0, 0.07}"), "contact": ("string", "palate")})
+TWITCH = """
+A styloglossus twitch (doc/dynamics.md, "The tongue twitch"): the SG group at FFMR 25 % (as
+s8_4_sg) on the imaged configuration, no gravity, so the tongue starts at rest in equilibrium.
+Its neural input steps to 1 at t = 0 and the activation follows eq. 24 with a rise time of
+6.67 ms: 95 % of full activation in 20 ms, the onset of a fast speech gesture. Held to 0.6 s."""
+TWITCH_ANALYSIS = {
+    "dynamic": """
+Dynamic (inertia): generalized-alpha with rho_inf = 0.5 and a consistent mass at the Fung
+matrix's 1,060 kg/m^3; steps of 2 ms, about 1/40 of the tongue's slowest period under this
+activation (doc/dynamics.md), and a dilatation tolerance of 1e-6, which keeps the nearly
+incompressible pressure free of step-to-step oscillation. Rayleigh mass damping of 15 /s: a
+damping ratio of 0.1 at that period (an assumption: the tissue's own damping is not in the
+model; bench/tongue_twitch.py also runs it undamped).""",
+    "static": """
+Quasi-static (no inertia): the same activation history and steps, each step an equilibrium."""}
+for analysis, text in TWITCH_ANALYSIS.items():
+    time = {"analysis": ("string", analysis)}
+    if analysis == "dynamic":
+        time.update({"spectral radius": ("double", 0.5), "Rayleigh mass coefficient": ("double", 15.0)})
+    deck(f"tongue_twitch_{analysis}", "A fast gesture: the styloglossus twitch, " + analysis + ".\n" + COMMON +
+         TWITCH + text, {"SG": 0.25}, end_time=0.6, step=0.002,
+         neural={"type": ("string", "constant")}, group={"rise time": ("double", 0.02 / 3)},
+         time=time, incompressibility={"dilatation tolerance": ("double", 1e-6)},
+         output={"fields": ("bool", "false")})
+
+# s8_5's passive breathing with inertia (doc/dynamics.md, "Breathing with inertia"): gravity brought
+# on smoothly, so that the breaths, not the start, are what the inertia acts on.
+SMOOTH_GRAVITY = ([k / 40 for k in range(41)], [round(0.5 * (1 - math.cos(math.pi * k / 40)), 12) for k in range(41)])
+deck("s8_5_passive_supine_dynamic", "Paper §8.5 (Figs. 11 and 12): supine posture, three 350 Pa breathing cycles, with inertia.\n" +
+     COMMON + BREATHING + PASSIVE_BREATHING + """
+Gravity supine: along {1.0, 0, 0} in this mesh's axes. Every muscle group passive (u = 0).
+With inertia: the same breaths as s8_5_passive_supine, dynamic (generalized-alpha, rho_inf = 0.5,
+consistent mass), steps of T/512 = 4.88 ms, which land on every step of the quasi-static run.
+Gravity comes on as a half cosine (1 - cos(pi t))/2 over the first second (a table of 41 points)
+instead of the linear ramp, whose kinks would set the tongue ringing before the first breath.""",
+     {}, gravity=(1, 0, 0), pressure=-350.0, end_time=8.75, step=0.3125 / 64, breathing_start=1.25,
+     reference="s8_1/reference_inverse.txt", gravity_table=SMOOTH_GRAVITY,
+     time={"analysis": ("string", "dynamic"), "spectral radius": ("double", 0.5)},
+     incompressibility={"dilatation tolerance": ("double", 1e-6)}, output={"fields": ("bool", "false")})

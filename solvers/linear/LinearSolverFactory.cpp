@@ -10,6 +10,7 @@
 
 #include "io/deck/DeckError.hpp"
 #include "solvers/linear/CollectivePreconditioner.hpp"
+#include "solvers/linear/LinearSolverChoice.hpp"
 #include "solvers/linear/MumpsPreconditioner.hpp"
 
 namespace glossa::solvers {
@@ -174,11 +175,7 @@ ParameterList ifpack2Parameters(const LinearSolverParameters &s, const LinearSol
 
 bool usesDirectSolve(const LinearSolverParameters &s, const LinearSolverContext &c) {
   if (c.direct) return *c.direct; // the plan's
-  // auto is direct on one rank only: MUMPS schedules its parallel factorisation dynamically, so on
-  // several ranks the last bits of an answer may differ from run to run (restart would not end
-  // bit for bit as an uninterrupted run), and small problems need no second rank.
-  if (s.type == LinearSolverType::automatic) return c.ranks == 1 && c.globalRows > 0 && c.globalRows <= s.directUpTo;
-  return s.type == LinearSolverType::direct;
+  return chooseLinearSolve(s, {c.globalRows, c.ranks}).direct;
 }
 
 LinearSolverPlan planLinearSolver(const LinearSolverParameters &s, const LinearSolverContext &c, bool mixedBlockSolve) {
@@ -224,6 +221,7 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &
     auto &mumps = p->sublist("Preconditioner Types").sublist("MUMPS");
     mumps.set("symmetric", c.symmetric);
     mumps.set("reuse iterations", s.directReuseIterations);
+    mumps.set("gathered", chooseLinearSolve(s, {c.globalRows, c.ranks}).gathered);
   } else if (s.preconditioner == Preconditioner::mueLu) {
     p->set("Preconditioner Type", "MueLu");
     p->sublist("Preconditioner Types").set("MueLu", mueluParameters(s, c));

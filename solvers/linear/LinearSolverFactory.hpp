@@ -27,8 +27,8 @@ struct LinearSolverContext {
   std::optional<bool> direct;
 };
 
-// The section chooses a direct solve: type = direct, or auto on one rank at no more than 'direct up
-// to' unknowns.
+// The section chooses a direct solve: type = direct, or auto where the rule of
+// solvers/linear/LinearSolverChoice says the direct solve is the cheaper.
 bool usesDirectSolve(const LinearSolverParameters &section, const LinearSolverContext &context);
 
 // How long a Newton solver keeps its linear solver: the deck's `MueLu reuse scope` for a MueLu

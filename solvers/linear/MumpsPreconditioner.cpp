@@ -28,15 +28,23 @@ MPI_Comm rawComm(const Teuchos::Comm<int> &comm) {
 } // namespace
 
 // One MUMPS instance: the pattern of the matrix it analysed, and its current numerical factors.
+// Gathered (on several ranks): MUMPS runs on rank 0 alone, on a communicator of that rank, and the
+// other ranks send it their rows' entries. A factorisation shared out among ranks schedules its
+// work dynamically, so the last bits of its answer vary from run to run; on one rank they do not.
 class MumpsFactorization {
 public:
-  MumpsFactorization(const Teuchos::RCP<const Teuchos::Comm<int>> &comm, bool symmetric)
-      : comm_(comm), symmetric_(symmetric) {
-    id_.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(rawComm(*comm)));
+  MumpsFactorization(const Teuchos::RCP<const Teuchos::Comm<int>> &comm, bool symmetric, bool gathered)
+      : comm_(comm), symmetric_(symmetric), gathered_(gathered && comm->getSize() > 1) {
+    MPI_Comm mumpsComm = rawComm(*comm);
+    if (gathered_) {
+      MPI_Comm_split(mumpsComm, comm->getRank() == 0 ? 0 : MPI_UNDEFINED, 0, &rootComm_);
+      mumpsComm = rootComm_;
+    }
+    inMumps_ = mumpsComm != MPI_COMM_NULL;
+    id_.comm_fortran = inMumps_ ? static_cast<MUMPS_INT>(MPI_Comm_c2f(mumpsComm)) : 0;
     id_.par = 1;                    // the host takes part in the factorisation
     id_.sym = symmetric ? 2 : 0;    // 2: symmetric, possibly indefinite (LDL^T with 2x2 pivots)
-    id_.job = -1;
-    dmumps_c(&id_);
+    call(-1);
     check("initialisation");
     for (int k : {1, 2, 3}) id_.icntl[k - 1] = -1; // no MUMPS output
     id_.icntl[3] = 0;
@@ -48,9 +56,13 @@ public:
     // Ending the instance is collective (MUMPS frees the communicator it duplicated). While an
     // exception unwinds on one rank the others are elsewhere, and it deadlocked: a deleted output
     // directory on 2 ranks left both waiting until killed. The job is ending then: leave it.
-    if (std::uncaught_exceptions() > 0) return;
-    id_.job = -2;
-    dmumps_c(&id_);
+    // Gathered, the instance lives on rank 0 alone and ends there without the others.
+    if (!gathered_ && std::uncaught_exceptions() > 0) return;
+    if (inMumps_) {
+      id_.job = -2;
+      dmumps_c(&id_);
+    }
+    if (rootComm_ != MPI_COMM_NULL) MPI_Comm_free(&rootComm_);
   }
   MumpsFactorization(const MumpsFactorization &) = delete;
   MumpsFactorization &operator=(const MumpsFactorization &) = delete;
@@ -69,20 +81,20 @@ public:
       pattern_ = pattern;
       patternEntries_ = static_cast<std::size_t>(local.nnz());
       n_ = n;
+      if (gathered_) gatherPattern();
       id_.n = static_cast<MUMPS_INT>(n);
-      id_.nnz_loc = static_cast<MUMPS_INT8>(rows_.size());
-      id_.irn_loc = rows_.data();
-      id_.jcn_loc = cols_.data();
-      id_.a_loc = values_.data();
-      id_.job = 1;
-      dmumps_c(&id_);
+      id_.nnz_loc = static_cast<MUMPS_INT8>(mumpsRows().size());
+      id_.irn_loc = mumpsRows().data();
+      id_.jcn_loc = mumpsCols().data();
+      id_.a_loc = mumpsValues().data();
+      call(1);
       check("analysis");
     }
     for (std::size_t k = 0; k < take_.size(); ++k) values_[k] = local.values(take_[k]);
-    id_.a_loc = values_.data();
+    if (gathered_) gatherValues();
+    id_.a_loc = mumpsValues().data();
     for (int attempt = 0;; ++attempt) {
-      id_.job = 2;
-      dmumps_c(&id_);
+      call(2);
       // -8, -9: the working space estimated by the analysis was too small (pivoting): more room.
       if ((id_.infog[0] == -8 || id_.infog[0] == -9) && attempt < 3) {
         id_.icntl[13] *= 2;
@@ -132,8 +144,7 @@ public:
     }
     ++applies_;
     id_.icntl[8] = transpose ? 0 : 1; // ICNTL(9): 1 solves A x = b, otherwise A^T x = b
-    id_.job = 3;
-    dmumps_c(&id_);
+    call(3);
     check("solve");
     if (comm_->getRank() == 0)
       for (std::size_t j = 0; j < nrhs; ++j) {
@@ -170,6 +181,47 @@ private:
     values_.resize(take_.size());
   }
 
+  // A MUMPS job on the ranks that run MUMPS; gathered, rank 0 then tells the others what MUMPS
+  // reported (INFOG(1), INFOG(2), INFOG(12): the status and the negative pivots), so that every
+  // rank takes the same branch after it.
+  void call(int job) {
+    id_.job = job;
+    if (inMumps_) dmumps_c(&id_);
+    if (!gathered_) return;
+    int info[3] = {id_.infog[0], id_.infog[1], id_.infog[11]};
+    MPI_Bcast(info, 3, MPI_INT, 0, rawComm(*comm_));
+    id_.infog[0] = info[0];
+    id_.infog[1] = info[1];
+    id_.infog[11] = info[2];
+  }
+
+  // Gathered: every rank's coordinates once per pattern, its values at every factorisation,
+  // concatenated on rank 0 in rank order.
+  void gatherPattern() {
+    const int size = comm_->getSize();
+    const int mine = static_cast<int>(take_.size());
+    counts_.assign(static_cast<std::size_t>(size), 0);
+    MPI_Gather(&mine, 1, MPI_INT, counts_.data(), 1, MPI_INT, 0, rawComm(*comm_));
+    offsets_.assign(static_cast<std::size_t>(size), 0);
+    for (int r = 1; r < size; ++r) offsets_[r] = offsets_[r - 1] + counts_[r - 1];
+    const std::size_t all = comm_->getRank() == 0 ? static_cast<std::size_t>(offsets_.back() + counts_.back()) : 0;
+    allRows_.resize(all);
+    allCols_.resize(all);
+    allValues_.resize(all);
+    static_assert(sizeof(MUMPS_INT) == sizeof(int), "MUMPS_INT is sent as MPI_INT");
+    MPI_Gatherv(rows_.data(), mine, MPI_INT, allRows_.data(), counts_.data(), offsets_.data(), MPI_INT, 0,
+                rawComm(*comm_));
+    MPI_Gatherv(cols_.data(), mine, MPI_INT, allCols_.data(), counts_.data(), offsets_.data(), MPI_INT, 0,
+                rawComm(*comm_));
+  }
+  void gatherValues() {
+    MPI_Gatherv(values_.data(), static_cast<int>(values_.size()), MPI_DOUBLE, allValues_.data(), counts_.data(),
+                offsets_.data(), MPI_DOUBLE, 0, rawComm(*comm_));
+  }
+  std::vector<MUMPS_INT> &mumpsRows() { return gathered_ ? allRows_ : rows_; }
+  std::vector<MUMPS_INT> &mumpsCols() { return gathered_ ? allCols_ : cols_; }
+  std::vector<double> &mumpsValues() { return gathered_ ? allValues_ : values_; }
+
   Teuchos::RCP<const assembly::Map> rootMapFor(const Teuchos::RCP<const assembly::Map> &map) const {
     const auto n = map->getGlobalNumElements();
     return Teuchos::rcp(new assembly::Map(n, comm_->getRank() == 0 ? n : 0, 0, comm_));
@@ -184,6 +236,12 @@ private:
 
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   bool symmetric_;
+  bool gathered_;
+  MPI_Comm rootComm_ = MPI_COMM_NULL; // gathered: rank 0 alone (MPI_COMM_NULL elsewhere)
+  bool inMumps_ = true;               // this rank calls MUMPS
+  std::vector<int> counts_, offsets_; // gathered: each rank's entries and where they start
+  std::vector<MUMPS_INT> allRows_, allCols_;
+  std::vector<double> allValues_;
   DMUMPS_STRUC_C id_{};
   long long n_ = -1;
   std::vector<MUMPS_INT> rows_, cols_;
@@ -247,7 +305,8 @@ void MumpsPreconditionerFactory::initializePrec(const Teuchos::RCP<const Thyra::
   TEUCHOS_TEST_FOR_EXCEPTION(defaultPrec == nullptr, std::logic_error, "MUMPS: not a DefaultPreconditioner");
   const bool symmetric = params_.is_null() || params_->get<bool>("symmetric", true);
   const int reuse = params_.is_null() ? 0 : params_->get<int>("reuse iterations", 0);
-  if (!factorization_) factorization_ = std::make_shared<MumpsFactorization>(A->getComm(), symmetric);
+  const bool gathered = !params_.is_null() && params_->get<bool>("gathered", false);
+  if (!factorization_) factorization_ = std::make_shared<MumpsFactorization>(A->getComm(), symmetric, gathered);
   if (!factorization_->stillServes(*A, reuse)) factorization_->factor(*A);
   auto inverse = Teuchos::rcp(new MumpsInverse(factorization_, A->getDomainMap(), A->getRangeMap()));
   const Teuchos::RCP<Thyra::LinearOpBase<double>> inverseOp =
@@ -284,6 +343,9 @@ Teuchos::RCP<const Teuchos::ParameterList> MumpsPreconditionerFactory::getValidP
     p->set("reuse iterations", 0,
            "0: refactor for every tangent; k > 0: keep the factors within a Newton solve while a solve "
            "takes at most k Krylov iterations");
+    p->set("gathered", false,
+           "on several ranks: factor on rank 0 alone, the entries gathered there (the same answer bit for "
+           "bit run after run); otherwise every rank takes part");
     return p;
   }();
   return valid;

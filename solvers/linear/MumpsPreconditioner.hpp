@@ -9,7 +9,11 @@
 // The analysis (ordering and symbolic factorisation) is done once per sparsity pattern and kept
 // by the factory for the whole run: every Newton iteration and load step refactors numerically
 // only. The entries go to MUMPS as each rank's owned rows (distributed assembled input); the
-// right-hand side and the solution pass through rank 0.
+// right-hand side and the solution pass through rank 0. "gathered" on several ranks: MUMPS runs
+// on rank 0 alone, the other ranks sending it their rows' entries, so the answer is the same bit
+// for bit from run to run (a factorisation shared among ranks is scheduled dynamically and its
+// last bits vary); for the small problems `type = auto` solves directly the factorisation is
+// cheap beside the assembly the ranks still share.
 //
 // "reuse iterations" k > 0 keeps a factorisation through the Newton iterations of one Newton
 // solve (a stale factor of a nearby tangent is a very good preconditioner): it is refactored at

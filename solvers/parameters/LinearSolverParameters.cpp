@@ -7,7 +7,7 @@ namespace glossa::solvers {
 Teuchos::ParameterList linearSolverParameters() {
   Teuchos::ParameterList p;
   io::declareString(p, "type", "auto",
-                    "auto: direct on one rank up to 'direct up to' unknowns, iterative otherwise; iterative: Belos Krylov "
+                    "auto: direct up to 'direct up to' unknowns, iterative above; iterative: Belos Krylov "
                     "solver with the 'preconditioner'; direct: the 'direct solver'",
                     {"auto", "iterative", "direct"});
   io::declareString(p, "direct solver", "MUMPS",
@@ -16,9 +16,17 @@ Teuchos::ParameterList linearSolverParameters() {
                     "Amesos2 KLU2 (slow on 3D meshes, kept for comparison; one rank)",
                     {"MUMPS", "KLU2"});
   io::declareInt(p, "direct up to", 8000,
-                 "type = auto: the largest number of unknowns solved directly (the measured crossover with "
-                 "MueLu on the step-44 block lies between 6,591 and 14,739; doc/incompressibility.md)",
+                 "type = auto: the largest number of unknowns solved directly, on any number of ranks R "
+                 "(gathered onto rank 0 up to this / R; the measured crossover with MueLu on the step-44 block "
+                 "lies between 6,591 and 14,739 on one rank, above 6,591 on two; doc/incompressibility.md)",
                  io::Range::atLeast(0));
+  io::declareString(p, "direct distribution", "auto",
+                    "MUMPS on several ranks: gathered (the entries gathered onto rank 0 and factored there "
+                    "alone: the same answer bit for bit run after run, so a restart ends as the uninterrupted "
+                    "run), distributed (every rank factors its share; the last bits vary from run to run), "
+                    "auto: gathered when type = auto chose the direct solve for at most 'direct up to' / R unknowns on R "
+                    "ranks, distributed otherwise",
+                    {"auto", "gathered", "distributed"});
   io::declareInt(p, "direct reuse iterations", 10,
                  "MUMPS: 0 refactors the tangent at every Newton iteration; k > 0 factors at the first "
                  "iteration of each Newton solve and keeps the factors as the Krylov method's preconditioner "
@@ -105,6 +113,10 @@ LinearSolverParameters parseLinearSolverParameters(const Teuchos::ParameterList 
   p.directSolverName = s.get<std::string>("direct solver");
   p.directSolver = p.directSolverName == "KLU2" ? DirectSolver::klu2 : DirectSolver::mumps;
   p.directUpTo = s.get<int>("direct up to");
+  const std::string distribution = s.get<std::string>("direct distribution");
+  p.directDistribution = distribution == "gathered"      ? DirectDistribution::gathered
+                         : distribution == "distributed" ? DirectDistribution::distributed
+                                                         : DirectDistribution::automatic;
   p.directReuseIterations = s.get<int>("direct reuse iterations");
   const std::string krylov = s.get<std::string>("Krylov method");
   p.krylovMethod = krylov == "cg" ? KrylovMethod::cg : krylov == "gmres" ? KrylovMethod::gmres : KrylovMethod::automatic;

@@ -11,6 +11,8 @@ namespace glossa::solvers {
 
 enum class LinearSolverType { automatic, iterative, direct };
 enum class DirectSolver { mumps, klu2 };
+// MUMPS on several ranks: on rank 0 alone with the entries gathered there, or on every rank.
+enum class DirectDistribution { automatic, gathered, distributed };
 enum class KrylovMethod { automatic, cg, gmres };
 enum class Preconditioner { mueLu, frosch, ifpack2, none };
 enum class MueLuSmoother { chebyshev, symmetricGaussSeidel, nodeBlockGaussSeidel, vertexPatch };
@@ -26,6 +28,7 @@ struct LinearSolverParameters {
   LinearSolverType type = LinearSolverType::automatic;
   DirectSolver directSolver = DirectSolver::mumps;
   int directUpTo = 8000;
+  DirectDistribution directDistribution = DirectDistribution::automatic;
   int directReuseIterations = 10;
   KrylovMethod krylovMethod = KrylovMethod::automatic;
   Preconditioner preconditioner = Preconditioner::mueLu;

@@ -99,7 +99,7 @@ std::vector<std::string> ignoredIterativeSettings(const RunConfiguration &config
   if (config.linear.type != LinearSolverType::automatic || !direct) return warnings;
   for (const std::string &where : config.givenIterativeOnly)
     warnings.push_back(where + " is not used: Linear solver/type = auto solves " + std::to_string(unknowns) +
-                       " unknowns on one rank directly (at most 'direct up to'); set type = iterative to use it");
+                       " unknowns directly (doc/incompressibility.md, \"Choosing direct or iterative\"); set type = iterative to use it");
   return warnings;
 }
 

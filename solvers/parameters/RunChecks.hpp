@@ -31,7 +31,7 @@ void checkRunConfiguration(const io::Deck &deck, const RunConfiguration &config,
 // `--control-groups G` alone (before the scene is built): G must divide the rank count.
 void checkControlGroupCount(int controlGroups, int ranks);
 
-// Linear solver/type = auto solved directly (a small problem on one rank): the settings the deck
+// Linear solver/type = auto solved directly (a small problem): the settings the deck
 // gives for the iterative solver, each named as a warning (empty when the solve is iterative).
 std::vector<std::string> ignoredIterativeSettings(const RunConfiguration &config, bool direct, long long unknowns);
 

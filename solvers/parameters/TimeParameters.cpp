@@ -61,6 +61,11 @@ Teuchos::ParameterList timeParameters() {
                     "(Chung-Hulbert), velocities and accelerations in the state, the fields and the checkpoint, "
                     "energy.csv (doc/dynamics.md)",
                     {"static", "dynamic"});
+  io::declareString(p, "integrator", "generalized-alpha",
+                    "dynamic: generalized-alpha (second order, its dissipation set by the spectral radius) or "
+                    "backward Euler (first order, L-stable: a resolved mode loses about pi w dt of its log-amplitude "
+                    "a period; for stiff cases where the motion, not its oscillation, matters; doc/dynamics.md)",
+                    {"generalized-alpha", "backward Euler"});
   io::declareDouble(p, "spectral radius", 1.0, "",
                     "dynamic: generalized-alpha's spectral radius at infinite frequency rho_inf; 1 is Newmark's "
                     "trapezoidal rule (no numerical dissipation, energy conserved in linear problems), smaller "
@@ -98,6 +103,8 @@ TimeParameters parseTimeParameters(const Teuchos::ParameterList &s) {
   t.stopAtDisplacement = s.get<double>("stop at displacement");
   DynamicsParameters &d = t.dynamics;
   d.analysis = s.get<std::string>("analysis") == "dynamic" ? Analysis::dynamic : Analysis::quasiStatic;
+  d.integrator = s.get<std::string>("integrator") == "backward Euler" ? Integrator::backwardEuler
+                                                                     : Integrator::generalizedAlpha;
   d.spectralRadius = s.get<double>("spectral radius");
   d.mass = s.get<std::string>("mass matrix") == "lumped" ? fem::MassLumping::lumped : fem::MassLumping::consistent;
   d.rayleighMass = s.get<double>("Rayleigh mass coefficient");
@@ -108,7 +115,7 @@ TimeParameters parseTimeParameters(const Teuchos::ParameterList &s) {
 }
 
 void checkDynamicsParameters(const io::Deck &deck, const DynamicsParameters &dynamics) {
-  static const char *const kDynamicOnly[] = {"spectral radius", "mass matrix", "Rayleigh mass coefficient",
+  static const char *const kDynamicOnly[] = {"integrator", "spectral radius", "mass matrix", "Rayleigh mass coefficient",
                                               "Rayleigh stiffness coefficient", "initial vx", "initial vy",
                                               "initial vz"};
   if (!dynamics.dynamic()) {
@@ -118,6 +125,9 @@ void checkDynamicsParameters(const io::Deck &deck, const DynamicsParameters &dyn
                             "static; set Time/analysis = dynamic or remove it");
     return;
   }
+  if (dynamics.integrator == Integrator::backwardEuler && deck.given({"Time", "spectral radius"}))
+    throw io::DeckError(deck.where({"Time", "spectral radius"}) + ": only generalized-alpha reads it, and "
+                        "Time/integrator is backward Euler; remove it or set Time/integrator = generalized-alpha");
   const char *const names[3] = {"initial vx", "initial vy", "initial vz"};
   for (int c = 0; c < 3; ++c) {
     try {

@@ -22,12 +22,15 @@ enum class AtLimitPoint { stop, ignore, follow };
 enum class PathFollowing { loadControl, arcLength };
 
 enum class Analysis { quasiStatic, dynamic };
+enum class Integrator { generalizedAlpha, backwardEuler };
 
 // Time/analysis = dynamic: M a + C v + f_int(u) = f_ext by generalized-alpha (Chung & Hulbert
 // 1993) with the high-frequency spectral radius rho_inf, Rayleigh damping C = alpha M + beta K_0
-// (K_0 the tangent at the initial state) and an initial velocity field.
+// (K_0 the tangent at the initial state) and an initial velocity field; or by backward Euler
+// (first order, strongly dissipative, for stiff cases).
 struct DynamicsParameters {
   Analysis analysis = Analysis::quasiStatic;
+  Integrator integrator = Integrator::generalizedAlpha;
   double spectralRadius = 1.0; // rho_inf in [0, 1]; 1: Newmark's trapezoidal rule
   fem::MassLumping mass = fem::MassLumping::consistent;
   double rayleighMass = 0.0;      // alpha [1/s]

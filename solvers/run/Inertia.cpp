@@ -8,6 +8,7 @@
 #include "io/deck/SpaceTimeExpression.hpp"
 #include "model/Scene.hpp"
 #include "solvers/run/CheckpointContents.hpp"
+#include "solvers/stepping/BackwardEuler.hpp"
 
 namespace glossa::solvers {
 
@@ -124,7 +125,9 @@ Inertia::Inertia(const assembly::Assembler &assembler, const DynamicsParameters 
 
 Inertia::~Inertia() = default;
 
-void Inertia::beginStep(double dt) { step_ = scheme_.step(dt); }
+void Inertia::beginStep(double dt) {
+  step_ = parameters_.integrator == Integrator::backwardEuler ? backwardEulerStep(dt) : scheme_.step(dt);
+}
 
 void Inertia::newmark(const Vector &u, Vector &a, Vector &v) const {
   a.update(step_.c0, u, -step_.c0, *u_, 0.0);

@@ -1,10 +1,10 @@
 #pragma once
 // A dynamic run's inertia (Time/analysis = dynamic, doc/dynamics.md): the mass and damping
 // matrices, the committed velocity, acceleration and forces, and the generalized-alpha terms
-// (solvers/stepping/GeneralizedAlpha) it adds to every residual and tangent of a step's solves
-// through the model evaluator (assembly::InertiaTerm). Like the muscle history it has a committed
-// state that only a converged step changes: a failed or refused attempt leaves it as it was, and
-// a checkpoint carries it (bit-identical restart).
+// (solvers/stepping/GeneralizedAlpha; or backward Euler, solvers/stepping/BackwardEuler) it adds to
+// every residual and tangent of a step's solves through the model evaluator (assembly::InertiaTerm).
+// Like the muscle history it has a committed state that only a converged step changes: a failed or
+// refused attempt leaves it as it was, and a checkpoint carries it (bit-identical restart).
 //
 // The residual of a step from t_n to t_{n+1}, divided by (1 - alpha_f):
 //   r(u) = f(u) + C v(u) + M [wNew a(u) + wOld a_n] + wF g_n,   g_n = C v_n + f(u_n),

@@ -17,6 +17,7 @@
 #include "solvers/parameters/RunConfiguration.hpp"
 #include "solvers/run/LoadStepper.hpp"
 #include "solvers/run/RunOptions.hpp"
+#include "solvers/run/RunSimulation.hpp"
 
 namespace glossa::solvers {
 
@@ -59,11 +60,5 @@ private:
   double pathStartTime_ = 0.0;
   int pathStartStep_ = 0;
 };
-
-// Runs the deck with its solver sections `config` (parseRunConfiguration); returns the summary
-// that was written to summary.json. Collective. Throws io::DeckError for deck problems found
-// while building the scene.
-nlohmann::json runSimulation(const io::Deck &deck, const RunConfiguration &config,
-                             const Teuchos::RCP<const Teuchos::Comm<int>> &comm, const RunOptions &options);
 
 } // namespace glossa::solvers

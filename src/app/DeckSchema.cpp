@@ -3,7 +3,7 @@
 #include "input/PointParameters.hpp"
 #include "input/SceneFactory.hpp"
 #include "input/ZeroStrainParameters.hpp"
-#include "solvers/run/Simulation.hpp"
+#include "solvers/parameters/RunConfiguration.hpp"
 
 namespace glossa::app {
 

@@ -7,7 +7,7 @@
 #include "input/SceneFactory.hpp"
 #include "input/ZeroStrainParameters.hpp"
 #include "mesh/ReferenceCoordinates.hpp"
-#include "solvers/run/Simulation.hpp"
+#include "solvers/run/RunSimulation.hpp"
 
 namespace glossa::app {
 

@@ -28,7 +28,7 @@
 #include "solvers/parameters/ControlSection.hpp"
 #include "solvers/parameters/RunChecks.hpp"
 #include "solvers/parameters/RunConfiguration.hpp"
-#include "solvers/run/Simulation.hpp"
+#include "solvers/run/RunSimulation.hpp"
 
 namespace {
 

@@ -84,14 +84,31 @@ Assembler::Assembler(const model::Scene &scene, DofLayout layout, const model::M
       }
   }
 
-  // Row capacity: 3 dofs per node coupled to the row's node through some element. 27 nodes on a
-  // structured mesh, more where an unstructured mesh gathers more elements around a node.
+  // A deformable contact's slave faces of this rank couple their nodes with their candidate master
+  // faces' (model::contactCouplings): the graph holds those entries from the start, since it is
+  // built once; the search never pairs faces outside them (doc/contact.md).
+  const std::vector<model::NodeCoupling> couplings = model::contactCouplings(scene_);
+  std::vector<std::vector<GO>> couplingGids;
+  for (const model::NodeCoupling &coupling : couplings) {
+    if (layout_.elementOwner[coupling.element] != layout_.rank) continue;
+    std::vector<GO> gids;
+    for (mesh::NodeId n : coupling.nodes)
+      for (int c = 0; c < 3; ++c) gids.push_back(layout_.dof(n, c));
+    couplingGids.push_back(std::move(gids));
+  }
+  // Row capacity: 3 dofs per node coupled to the row's node through some element or contact. 27
+  // nodes on a structured mesh, more where an unstructured mesh gathers more elements around a node.
   std::size_t maxNeighbours = 0;
   {
     std::vector<std::vector<mesh::NodeId>> neighbours(mesh.numNodes());
     for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
       const auto &hex = mesh.elements[layout_.localElements[i]];
       for (mesh::NodeId a : hex) neighbours[a].insert(neighbours[a].end(), hex.begin(), hex.end());
+    }
+    for (const model::NodeCoupling &coupling : couplings) {
+      if (layout_.elementOwner[coupling.element] != layout_.rank) continue;
+      for (mesh::NodeId a : coupling.nodes)
+        neighbours[a].insert(neighbours[a].end(), coupling.nodes.begin(), coupling.nodes.end());
     }
     for (auto &n : neighbours) {
       std::sort(n.begin(), n.end());
@@ -102,6 +119,10 @@ Assembler::Assembler(const model::Scene &scene, DofLayout layout, const model::M
   graph_->beginAssembly();
   for (const auto &gids : elementGids_) {
     Teuchos::ArrayView<const GO> cols(gids.data(), 24);
+    for (GO row : gids) graph_->insertGlobalIndices(row, cols);
+  }
+  for (const auto &gids : couplingGids) {
+    Teuchos::ArrayView<const GO> cols(gids.data(), static_cast<Teuchos::Ordinal>(gids.size()));
     for (GO row : gids) graph_->insertGlobalIndices(row, cols);
   }
   graph_->endAssembly();

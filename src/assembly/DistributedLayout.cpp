@@ -27,7 +27,7 @@ DofLayout distributeScene(const model::Scene &scene, const Teuchos::RCP<const Co
   if (scene.partitioner != model::Partitioner::coordinateBisection && comm->getSize() > 1)
     owner = partitionElementsWithZoltan2(scene.mesh, comm,
                                          scene.partitioner == model::Partitioner::zoltan2Rcb ? "rcb" : "multijagged");
-  return buildDofLayout(scene.mesh, comm->getRank(), comm->getSize(), std::move(owner));
+  return buildDofLayout(scene.mesh, comm->getRank(), comm->getSize(), std::move(owner), model::contactCouplings(scene));
 }
 
 } // namespace glossa::assembly

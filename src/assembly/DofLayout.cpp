@@ -9,7 +9,8 @@
 
 namespace glossa::assembly {
 
-DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks, std::vector<int> elementOwner) {
+DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks, std::vector<int> elementOwner,
+                         const std::vector<model::NodeCoupling> &couplings) {
   DofLayout L;
   L.rank = rank;
   L.ranks = ranks;
@@ -44,6 +45,11 @@ DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks, std::ve
     for (mesh::NodeId n : mesh.elements[e])
       if (L.nodeOwner[n] != rank)
         for (int c = 0; c < 3; ++c) ghosts.insert(L.dof(n, c));
+  for (const model::NodeCoupling &coupling : couplings)
+    if (L.elementOwner[coupling.element] == rank)
+      for (mesh::NodeId n : coupling.nodes)
+        if (L.nodeOwner[n] != rank)
+          for (int c = 0; c < 3; ++c) ghosts.insert(L.dof(n, c));
   L.overlapDofs = L.ownedDofs;
   L.overlapDofs.insert(L.overlapDofs.end(), ghosts.begin(), ghosts.end());
   return L;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mesh/HexMesh.hpp"
+#include "model/Scene.hpp"
 
 namespace glossa::assembly {
 
@@ -22,7 +23,7 @@ struct DofLayout {
   std::vector<GlobalIndex> nodeNumber;    // mesh node -> global node number (contiguous per rank)
   std::vector<mesh::ElementId> localElements; // elements owned by this rank, increasing id
   std::vector<GlobalIndex> ownedDofs;     // increasing
-  std::vector<GlobalIndex> overlapDofs;   // owned first, then the ghosts of local elements
+  std::vector<GlobalIndex> overlapDofs;   // owned first, then the ghosts of local elements and couplings
   std::vector<mesh::NodeId> ownedNodes;   // mesh node ids in global-number order
 
   GlobalIndex dof(mesh::NodeId node, int component) const { return 3 * nodeNumber[node] + component; }
@@ -30,6 +31,9 @@ struct DofLayout {
 };
 
 // `elementOwner`: the owner of every element (e.g. from Zoltan2); empty: the built-in bisection.
-DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks, std::vector<int> elementOwner = {});
+// `couplings`: nodes an element's rank needs besides the element's own (a deformable contact's
+// master faces), ghosted there.
+DofLayout buildDofLayout(const mesh::HexMesh &mesh, int rank, int ranks, std::vector<int> elementOwner = {},
+                         const std::vector<model::NodeCoupling> &couplings = {});
 
 } // namespace glossa::assembly

@@ -2,7 +2,8 @@
 
 #include <array>
 
-#include "contact/FaceContact.hpp"
+#include "assembly/ContactEvaluation.hpp"
+#include "contact/DeformablePair.hpp"
 #include "loads/BodyForce.hpp"
 #include "loads/DeadTraction.hpp"
 #include "loads/ExternalMuscle.hpp"
@@ -32,28 +33,16 @@ void LoadTarget::subtract(const mesh::NodeId *nodes, int n, const double *f, con
   }
 }
 
-namespace {
-
-// The four nodes of a face, outward right-hand order.
-std::array<mesh::NodeId, 4> faceNodes(const mesh::HexMesh &mesh, const mesh::ElementFace &face) {
-  std::array<mesh::NodeId, 4> nodes{};
-  for (int k = 0; k < 4; ++k) nodes[k] = mesh.elements[face.element][mesh::kHexFaceNodes[face.localFace][k]];
-  return nodes;
-}
-
-// A face's nodes, their reference positions and their displacements at the target.
-struct FaceAtTarget {
-  std::array<mesh::NodeId, 4> nodes;
-  loads::FaceNodes X, u;
-};
 FaceAtTarget faceAt(const LoadTarget &target, const mesh::ElementFace &face) {
-  FaceAtTarget f{faceNodes(target.scene.mesh, face), {}, {}};
+  FaceAtTarget f{contact::faceNodeIds(target.scene.mesh, face), {}, {}};
   for (int k = 0; k < 4; ++k) {
     f.X.row(k) = target.scene.mesh.nodes[f.nodes[k]].transpose();
     f.u.row(k) = target.displacement(f.nodes[k]).transpose();
   }
   return f;
 }
+
+namespace {
 
 // A traction per reference area on a face set, scaled in time (loads/DeadTraction).
 class DeadTractionContribution final : public LoadContribution {
@@ -66,7 +55,7 @@ public:
     const Eigen::Vector3d t = load_.traction * load_.scale(time);
     for (const auto &face : load_.faces) {
       if (target.layout.elementOwner[face.element] != target.layout.rank) continue;
-      const auto nodes = faceNodes(mesh, face);
+      const auto nodes = contact::faceNodeIds(mesh, face);
       loads::FaceNodes Xf;
       for (int k = 0; k < 4; ++k) Xf.row(k) = mesh.nodes[nodes[k]].transpose();
       const loads::FaceForces ff = loads::deadTractionForces(Xf, t);
@@ -152,32 +141,18 @@ private:
   const model::DirichletCondition &support_;
 };
 
-// Contact of a face set with a rigid obstacle (contact/FaceContact): a follower load, the
-// obstacle's push and friction on the faces that touch it, with the state's trial multipliers
-// under the augmented Lagrangian (none for the penalty method) and its committed anchors. A moving
-// obstacle is put where it is at the evaluation's time first.
-class RigidContactContribution final : public LoadContribution {
+// Contact of a face set with a rigid obstacle or another face set (assembly/ContactEvaluation): a
+// follower load, the obstacle's push and friction on the faces that touch it, with the state's
+// trial multipliers under the augmented Lagrangian (none for the penalty method) and its committed
+// anchors. A moving obstacle is put where it is at the evaluation's time first.
+class ContactContribution final : public LoadContribution {
 public:
-  explicit RigidContactContribution(const model::RigidContact &contact) : contact_(contact) {}
+  explicit ContactContribution(const model::RigidContact &contact) : contact_(contact) {}
   Kind kind() const override { return Kind::follower; }
   bool onSurface() const override { return true; }
   bool addTo(const LoadTarget &target, double time) const override {
     if (contact_.motion) contact_.motion->setTime(time);
-    const contact::FaceMultipliers none{0.0, 0.0, 0.0, 0.0};
-    for (std::size_t i = 0; i < contact_.faces.size(); ++i) {
-      const auto &face = contact_.faces[i];
-      if (target.layout.elementOwner[face.element] != target.layout.rank) continue;
-      const FaceAtTarget f = faceAt(target, face);
-      const contact::FaceMultipliers lambda =
-          contact_.augmented() && contact_.state ? contact_.state->trialMultipliers(i) : none;
-      contact::FaceAnchors anchors;
-      if (contact_.state) anchors = contact_.state->committedAnchors(i);
-      loads::FaceTangent Kf; // filled, and read, only with a tangent
-      const loads::FaceForces ff = contact::faceContactForces(*contact_.obstacle, f.X, f.u, lambda, contact_.settings,
-                                                              nullptr, target.K ? &Kf : nullptr,
-                                                              contact_.state ? &anchors : nullptr);
-      target.subtract(f.nodes.data(), 4, ff.data(), target.K ? Kf.data() : nullptr);
-    }
+    evaluateContact(target, contact_, nullptr);
     return true;
   }
 
@@ -224,7 +199,7 @@ std::vector<std::unique_ptr<LoadContribution>> loadContributions(const model::Sc
   for (const auto &load : scene.tractions) loads.push_back(std::make_unique<DeadTractionContribution>(load));
   for (const auto &load : scene.bodyForces) loads.push_back(std::make_unique<BodyForceContribution>(load));
   for (const auto &load : scene.pressures) loads.push_back(std::make_unique<FollowerPressureContribution>(load));
-  for (const auto &contact : scene.contacts) loads.push_back(std::make_unique<RigidContactContribution>(contact));
+  for (const auto &contact : scene.contacts) loads.push_back(std::make_unique<ContactContribution>(contact));
   auto muscles = std::make_unique<ExternalMuscleForces>(scene, history);
   *externalMuscles = muscles.get();
   loads.push_back(std::move(muscles));

@@ -6,6 +6,7 @@
 // reactions and resultants, each pass taking the kinds it needs. A new kind of load is a new
 // contribution with its kernel in src/loads, not a new Assembler method.
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -13,6 +14,7 @@
 
 #include "assembly/DofLayout.hpp"
 #include "assembly/TpetraTypes.hpp"
+#include "loads/DeadTraction.hpp"
 #include "model/MuscleHistory.hpp"
 #include "model/Scene.hpp"
 
@@ -35,6 +37,15 @@ struct LoadTarget {
   // tangent's fixed rows and columns always.
   void subtract(const mesh::NodeId *nodes, int n, const double *f, const double *df) const;
 };
+
+// A face's nodes (outward right-hand order), their reference positions and their displacements
+// at a target: what every face load and contact reads.
+struct FaceAtTarget {
+  std::array<mesh::NodeId, 4> nodes;
+  loads::FaceNodes X, u;
+  loads::FaceNodes current() const { return X + u; }
+};
+FaceAtTarget faceAt(const LoadTarget &target, const mesh::ElementFace &face);
 
 class LoadContribution {
 public:
@@ -72,8 +83,8 @@ private:
   const model::MuscleHistory &history_; // activation, step and committed lambda_c
 };
 
-// The scene's loads in assembly order: dead tractions, body forces, follower pressures, rigid
-// contacts, external muscles (if any), elastic supports. `externalMuscles` receives the external muscles' entry (or
+// The scene's loads in assembly order: dead tractions, body forces, follower pressures,
+// contacts (rigid and deformable), external muscles (if any), elastic supports. `externalMuscles` receives the external muscles' entry (or
 // null) for the muscle history's update.
 std::vector<std::unique_ptr<LoadContribution>> loadContributions(const model::Scene &scene,
                                                                  const model::MuscleHistory &history,

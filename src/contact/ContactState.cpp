@@ -11,26 +11,35 @@ namespace {
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 }
 
-ContactState::ContactState(std::size_t faces)
-    : committed_(faces * kPointsPerFace, 0.0),
-      trial_(faces * kPointsPerFace, 0.0),
+ContactState::ContactState(std::size_t faces, std::size_t pointsPerFace)
+    : pointsPerFace_(pointsPerFace),
+      committed_(faces * pointsPerFace, 0.0),
+      trial_(faces * pointsPerFace, 0.0),
       // Nothing evaluated yet: no point is known to be near the obstacle.
-      gap_(faces * kPointsPerFace, std::numeric_limits<double>::infinity()),
-      pressure_(faces * kPointsPerFace, 0.0),
-      committedAnchor_(3 * faces * kPointsPerFace, kNone),
-      trialAnchor_(3 * faces * kPointsPerFace, kNone),
-      committedSlip_(faces * kPointsPerFace, 0.0),
-      trialSlip_(faces * kPointsPerFace, 0.0),
-      tangential_(faces * kPointsPerFace, 0.0),
-      tied_(faces * kPointsPerFace, 0) {}
+      gap_(faces * pointsPerFace, std::numeric_limits<double>::infinity()),
+      pressure_(faces * pointsPerFace, 0.0),
+      committedAnchor_(3 * faces * pointsPerFace, kNone),
+      trialAnchor_(3 * faces * pointsPerFace, kNone),
+      committedSlip_(faces * pointsPerFace, 0.0),
+      trialSlip_(faces * pointsPerFace, 0.0),
+      tangential_(faces * pointsPerFace, 0.0),
+      tied_(faces * pointsPerFace, 0) {
+  if (pointsPerFace == 0) throw std::invalid_argument("contact state: 0 points per face");
+}
 
 FaceMultipliers ContactState::get(const std::vector<double> &values, std::size_t face) const {
   FaceMultipliers lambda;
+  if (pointsPerFace_ != kPointsPerFace)
+    throw std::logic_error("contact state: four multipliers asked of a face with " + std::to_string(pointsPerFace_) +
+                           " points");
   std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(face * kPointsPerFace), kPointsPerFace, lambda.begin());
   return lambda;
 }
 
 FaceAnchors ContactState::committedAnchors(std::size_t face) const {
+  if (pointsPerFace_ != kPointsPerFace)
+    throw std::logic_error("contact state: four anchors asked of a face with " + std::to_string(pointsPerFace_) +
+                           " points");
   FaceAnchors anchors;
   for (std::size_t q = 0; q < kPointsPerFace; ++q)
     anchors[q] = Eigen::Vector3d(committedAnchor_.data() + 3 * (face * kPointsPerFace + q));
@@ -38,19 +47,21 @@ FaceAnchors ContactState::committedAnchors(std::size_t face) const {
 }
 
 void ContactState::record(std::size_t face, const FaceContactPoints &points) {
-  for (std::size_t q = 0; q < kPointsPerFace; ++q) {
-    const std::size_t i = face * kPointsPerFace + q;
-    gap_[i] = points[q].gap;
-    pressure_[i] = points[q].pressure;
-    tangential_[i] = points[q].tangential;
-    tied_[i] = points[q].tied;
-    trialSlip_[i] = committedSlip_[i] + points[q].slip;
-    for (int k = 0; k < 3; ++k) trialAnchor_[3 * i + k] = points[q].anchor(k);
-  }
+  for (std::size_t q = 0; q < kPointsPerFace; ++q) record(face, q, points[q]);
+}
+
+void ContactState::record(std::size_t face, std::size_t q, const ContactPointState &point) {
+  const std::size_t i = face * pointsPerFace_ + q;
+  gap_[i] = point.gap;
+  pressure_[i] = point.pressure;
+  tangential_[i] = point.tangential;
+  tied_[i] = point.tied;
+  trialSlip_[i] = committedSlip_[i] + point.slip;
+  for (int k = 0; k < 3; ++k) trialAnchor_[3 * i + k] = point.anchor(k);
 }
 
 ContactPointState ContactState::point(std::size_t face, std::size_t q) const {
-  const std::size_t i = face * kPointsPerFace + q;
+  const std::size_t i = face * pointsPerFace_ + q;
   ContactPointState p;
   p.gap = gap_[i];
   p.pressure = pressure_[i];
@@ -98,14 +109,14 @@ void ContactState::rollBack() {
 
 void ContactState::restore(const Snapshot &snapshot) {
   const std::size_t n = snapshot.multipliers.size();
-  if (snapshot.gap.size() != n || snapshot.pressure.size() != n || n % kPointsPerFace != 0 ||
+  if (snapshot.gap.size() != n || snapshot.pressure.size() != n || n % pointsPerFace_ != 0 ||
       snapshot.anchors.size() != 3 * n || snapshot.slip.size() != n)
     throw std::invalid_argument("contact state: " + std::to_string(n) + " multipliers, " +
                                 std::to_string(snapshot.gap.size()) + " gaps, " +
                                 std::to_string(snapshot.pressure.size()) + " pressures, " +
                                 std::to_string(snapshot.anchors.size()) + " anchor coordinates and " +
-                                std::to_string(snapshot.slip.size()) +
-                                " slips; expected equal counts, 4 per contact face, and 3 anchor coordinates each");
+                                std::to_string(snapshot.slip.size()) + " slips; expected equal counts, " +
+                                std::to_string(pointsPerFace_) + " per contact face, and 3 anchor coordinates each");
   committed_ = trial_ = snapshot.multipliers;
   gap_ = snapshot.gap;
   pressure_ = snapshot.pressure;

@@ -56,8 +56,8 @@ bool pointTraction(const Obstacle &obstacle, const Eigen::Vector3d &xq, const st
   const Eigen::Vector3d &n = cp->normal;
   const double tN = state.pressure;
   t = tN * n;
-  // t = lambda - eps g with dg/dx = n^T, dn/dx = dNormal.
-  dt = -eps * n * n.transpose() + tN * cp->dNormal;
+  // t = lambda - eps g with dg/dx = the gap's gradient (n^T but on smoothed normals), dn/dx = dNormal.
+  dt = -eps * n * cp->gapGradient().transpose() + tN * cp->dNormal;
   if (friction.law == FrictionLaw::tied) {
     if (tN > 0.0) state.anchor = obstacle.toBody(cp->point);  // touched: tied from the next step on
     return true;

@@ -25,7 +25,7 @@ TangentialTraction coulombTraction(const Eigen::Vector3d &x, const Eigen::Vector
   // Slip: the trial direction s kept, the size mu tN; d(s)/dx = (I - s s^T)/|trial| dTrial.
   const Eigen::Vector3d s = trial / size;
   out.traction = limit * s;
-  out.dTraction = mu * s * (-normalPenalty * n.transpose()) +
+  out.dTraction = mu * s * (-normalPenalty * cp.gapGradient().transpose()) +
                   (limit / size) * (Eigen::Matrix3d::Identity() - s * s.transpose()) * dTrial;
   out.anchor = x + out.traction / epsT;
   out.slip = (size - limit) / epsT;

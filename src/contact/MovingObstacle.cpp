@@ -13,6 +13,7 @@ std::optional<ClosestPoint> MovingObstacle::closest(const Eigen::Vector3d &x, do
   cp->point = pose_.toWorld(cp->point);
   cp->normal = pose_.R * cp->normal;
   cp->dNormal = pose_.R * cp->dNormal * pose_.R.transpose();
+  if (cp->dGap) cp->dGap = pose_.R * *cp->dGap;
   return cp;
 }
 

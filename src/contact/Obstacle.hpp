@@ -10,6 +10,9 @@
 //  - gap = (x - point) . normal: positive apart, negative where x has entered the obstacle.
 //  - dNormal = d normal / d x at x, for the consistent tangent: zero for a plane and on a
 //    triangle's interior; (I - n n) / (R + gap) for a sphere of radius R seen from outside.
+//  - dGap = d gap / d x: the normal itself wherever x - point lies along the normal (every
+//    obstacle's exact closest point), so left empty there; a surface with smoothed normals, whose
+//    normal is not along x - point, gives it (contact/SmoothedProjection.hpp).
 
 #include <Eigen/Core>
 #include <optional>
@@ -21,6 +24,8 @@ struct ClosestPoint {
   Eigen::Vector3d normal;  // unit, out of the obstacle
   double gap = 0;          // (x - point) . normal [m]
   Eigen::Matrix3d dNormal = Eigen::Matrix3d::Zero();
+  std::optional<Eigen::Vector3d> dGap;  // empty: dg/dx = normal
+  Eigen::Vector3d gapGradient() const { return dGap ? *dGap : normal; }
 };
 
 class Obstacle {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "contact/SmoothedProjection.hpp"
 #include "contact/SurfaceProjection.hpp"
 
 namespace glossa::contact {
@@ -28,8 +29,8 @@ struct TriangulatedObstacle::Search {
   Tree tree;
 };
 
-TriangulatedObstacle::TriangulatedObstacle(TriangleSurface surface)
-    : surface_(std::move(surface)), search_(std::make_unique<Search>()) {
+TriangulatedObstacle::TriangulatedObstacle(TriangleSurface surface, NormalField field)
+    : surface_(std::move(surface)), field_(field), search_(std::make_unique<Search>()) {
   search_->triangles.reserve(surface_.numTriangles());
   for (std::size_t t = 0; t < surface_.numTriangles(); ++t) {
     search_->triangles.emplace_back(point(surface_.corner(t, 0)), point(surface_.corner(t, 1)),
@@ -56,7 +57,8 @@ std::optional<ClosestPoint> TriangulatedObstacle::closest(const Eigen::Vector3d 
   const auto [p, id] = search_->tree.closest_point_and_primitive(point(x));
   if (CGAL::squared_distance(p, point(x)) > searchRadius * searchRadius) return std::nullopt;
   const auto triangle = static_cast<std::size_t>(id - search_->triangles.cbegin());
-  return projectOnTriangle(surface_, triangle, x);
+  return field_ == NormalField::smoothed ? projectOnSmoothedTriangle(surface_, triangle, x)
+                                         : projectOnTriangle(surface_, triangle, x);
 }
 
 }  // namespace glossa::contact

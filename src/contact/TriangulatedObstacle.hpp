@@ -1,9 +1,10 @@
 #pragma once
 // A rigid obstacle given by a triangulated surface (OBJ, STL): the closest point by CGAL's AABB
 // tree, built once, then the contact quantities on the triangle it finds (SurfaceProjection:
-// the face normal on a triangle's interior, the direction to x on an edge or corner). The
-// normals must already point to the body's side (SurfaceOrientation). CGAL stays inside this
-// class's source file: it is slow to compile.
+// the face normal on a triangle's interior, the direction to x on an edge or corner), or with
+// normals interpolated from the vertices (SmoothedProjection), which turn continuously from one
+// triangle to the next. The normals must already point to the body's side
+// (SurfaceOrientation). CGAL stays inside this class's source file: it is slow to compile.
 
 #include <memory>
 
@@ -12,9 +13,13 @@
 
 namespace glossa::contact {
 
+// faceted: each triangle's own normal (and the direction to x beyond an edge or corner);
+// smoothed: the normal interpolated from unit vertex normals (doc/contact.md, "Smoothed normals").
+enum class NormalField { faceted, smoothed };
+
 class TriangulatedObstacle : public Obstacle {
  public:
-  explicit TriangulatedObstacle(TriangleSurface surface);
+  explicit TriangulatedObstacle(TriangleSurface surface, NormalField field = NormalField::faceted);
   ~TriangulatedObstacle() override;
   TriangulatedObstacle(const TriangulatedObstacle &) = delete;
   TriangulatedObstacle &operator=(const TriangulatedObstacle &) = delete;
@@ -25,6 +30,7 @@ class TriangulatedObstacle : public Obstacle {
  private:
   struct Search;
   TriangleSurface surface_;
+  NormalField field_;
   std::unique_ptr<Search> search_;
 };
 

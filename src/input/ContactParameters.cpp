@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "contact/CylinderObstacle.hpp"
+#include "contact/DeformablePair.hpp"
 #include "contact/MovingObstacle.hpp"
 #include "contact/PlaneObstacle.hpp"
 #include "contact/SphereObstacle.hpp"
@@ -61,8 +62,10 @@ std::shared_ptr<const contact::Obstacle> buildSurface(const io::Deck &deck, cons
                                    : normals == "toward point" ? contact::NormalSide::TowardPoint
                                                                : contact::NormalSide::AsStored;
   contact::TriangleSurface surface = contact::readSurface(path.string(), c.get<double>("file unit"));
+  const contact::NormalField field =
+      c.get<std::string>("normal field") == "smoothed" ? contact::NormalField::smoothed : contact::NormalField::faceted;
   return std::make_shared<contact::TriangulatedObstacle>(
-      contact::orientNormals(std::move(surface), side, vec3(c.get<Array<double>>("body point"))));
+      contact::orientNormals(std::move(surface), side, vec3(c.get<Array<double>>("body point"))), field);
 }
 
 // The nodes of the contact's faces that start inside the obstacle deeper than the deck tolerates:
@@ -163,13 +166,79 @@ double meanEdgeLength(const mesh::HexMesh &m, const std::vector<mesh::ElementFac
     }
   return faces.empty() ? 0.0 : sum / (4.0 * static_cast<double>(faces.size()));
 }
+
+// A deformable pair (obstacle 'face set') or self-contact (obstacle 'self'): the master faces and
+// each slave face's candidates in the reference configuration (contact/DeformablePair).
+std::shared_ptr<const contact::DeformablePair> buildPair(const io::Deck &deck, const mesh::HexMesh &m,
+                                                         const std::string &name,
+                                                         const std::vector<mesh::ElementFace> &slave) {
+  const ParameterList &c = deck.root().sublist("Contact").sublist(name);
+  const bool self = c.get<std::string>("obstacle") == "self";
+  const std::string rule = c.get<std::string>("contact points");
+  if (rule == "nodal")
+    throw io::DeckError(deck.where({"Contact", name, "contact points"}) +
+                        ": 'nodal' on a pair of face sets; a pair's slave faces take 'gauss' (n x n, 'points per "
+                        "direction') or 'segments'");
+  std::vector<mesh::ElementFace> master = slave;
+  if (!self) {
+    const std::string masterSet = c.get<std::string>("master face set");
+    if (masterSet.empty())
+      throw io::DeckError(deck.where({"Contact", name}) +
+                          ": obstacle 'face set' without a 'master face set'; name the face set the contact points "
+                          "of 'face set' are searched against");
+    if (masterSet == c.get<std::string>("face set"))
+      throw io::DeckError(deck.where({"Contact", name, "master face set"}) + ": '" + masterSet +
+                          "' is also the contact's 'face set'; a face set against itself is self-contact: set "
+                          "obstacle = self");
+    master = faceSetAt(deck, m, {"Contact", name, "master face set"});
+  }
+  double margin = c.get<double>("pairing margin");
+  if (!(margin > 0.0)) margin = meanEdgeLength(m, slave);
+  try {
+    return std::make_shared<const contact::DeformablePair>(contact::pairFaces(
+        m, slave, std::move(master), self, c.get<double>("search radius"), margin,
+        rule == "segments" ? contact::SlaveRule::segments : contact::SlaveRule::gauss, c.get<int>("points per direction")));
+  } catch (const std::invalid_argument &e) {
+    throw io::DeckError(deck.where({"Contact", name, "master face set"}) + ": " + e.what());
+  }
+}
+
+// Friction, tied contact and motion are built for rigid obstacles only: a pair that asks for them
+// is refused rather than run frictionless and at rest.
+void refuseRigidOnlyParameters(const io::Deck &deck, const std::string &name) {
+  const ParameterList &c = deck.root().sublist("Contact").sublist(name);
+  if (c.get<std::string>("friction") == "tied")
+    throw io::DeckError(deck.where({"Contact", name, "friction"}) +
+                        ": tied contact on a pair of face sets; it is built for rigid obstacles only: a pair is "
+                        "frictionless (Coulomb with friction coefficient 0)");
+  if (c.get<double>("friction coefficient") != 0.0)
+    throw io::DeckError(deck.where({"Contact", name, "friction coefficient"}) +
+                        ": friction on a pair of face sets; it is built for rigid obstacles only: allowed 0");
+  if (!vec3(c.get<Array<double>>("translation")).isZero(0.0) || c.get<double>("rotation angle") != 0.0)
+    throw io::DeckError(deck.where({"Contact", name}) +
+                        ": a translation or rotation on a pair of face sets; only a rigid obstacle moves by the deck "
+                        "(the faces of a pair move with the body)");
+}
 }  // namespace
 
 ParameterList contactParameters() {
   ParameterList p;
-  io::declareString(p, "face set", "", "the body's faces that may touch the obstacle");
-  io::declareString(p, "obstacle", "plane", "the rigid obstacle's shape, or a triangulated surface read from a file",
-                    {"plane", "sphere", "cylinder", "surface"});
+  io::declareString(p, "face set", "", "the body's faces that may touch the obstacle (a pair's slave faces)");
+  io::declareString(p, "obstacle", "plane",
+                    "the rigid obstacle's shape, a triangulated surface read from a file, another face set of the "
+                    "body ('master face set': a deformable pair) or the face set itself (self-contact)",
+                    {"plane", "sphere", "cylinder", "surface", "face set", "self"});
+  io::declareString(p, "master face set", "",
+                    "obstacle 'face set': the faces the contact points of 'face set' are searched against");
+  io::declareInt(p, "points per direction", 2,
+                 "obstacle 'face set' or 'self': the n x n Gauss points of each slave face where contact is tested",
+                 io::Range::closed(1, 8));
+  io::declareDouble(p, "pairing margin", 0.0, "m",
+                    "obstacle 'face set' or 'self': how much farther than the search radius, in the reference "
+                    "configuration, a master face may be and still be paired with a slave face (the matrix "
+                    "couples them); the run stops if the faces' displacements spread wider than this; 0: the "
+                    "slave faces' mean edge length",
+                    io::Range::nonNegative());
   io::declareString(p, "file", "", "surface: its Wavefront OBJ or STL (ASCII or binary) file, relative to the deck");
   io::declareDouble(p, "file unit", 1.0, "m", "surface: the length of one unit of the file's coordinates (1e-3 for mm)",
                     io::Range::positive());
@@ -177,6 +246,11 @@ ParameterList contactParameters() {
                     "surface: which way its normals point, i.e. the body's side: as the file winds them, "
                     "outward from the volume a closed surface encloses, or toward 'body point'",
                     {"as stored", "outward", "toward point"});
+  io::declareString(p, "normal field", "faceted",
+                    "surface: the contact normal, each triangle's own (faceted; it jumps from triangle to triangle) "
+                    "or interpolated from the vertices' normals (smoothed: continuous across edges, for coarse "
+                    "curved surfaces such as bones; doc/contact.md)",
+                    {"faceted", "smoothed"});
   io::declareDoubleArray(p, "body point", Array<double>(3, 0.0), "m",
                          "surface with normals 'toward point': a point on the body's side of it", 3);
   io::declareDoubleArray(p, "point", Array<double>(3, 0.0), "m",
@@ -203,9 +277,11 @@ ParameterList contactParameters() {
                     "Uzawa loop; 0: 1e-3 of the face set's mean edge length",
                     io::Range::nonNegative());
   io::declareString(p, "contact points", "gauss",
-                    "where contact is tested on each face: its 2x2 Gauss points (consistent forces, the patch "
-                    "test on any mesh) or its nodes (doc/contact.md)",
-                    {"gauss", "nodal"});
+                    "where contact is tested on each face: its Gauss points (2x2; a pair's slave faces n x n, 'points "
+                    "per direction'), its nodes (rigid obstacles), or, on a pair's slave faces, 6 points per "
+                    "triangle of the cells the master faces' edges cut them into (segments: the patch test to "
+                    "round-off on non-matching meshes; doc/contact.md)",
+                    {"gauss", "nodal", "segments"});
   io::declareString(p, "friction", "Coulomb",
                     "Coulomb: regularised Coulomb friction, |t_T| <= mu t_N, with 'friction coefficient' mu "
                     "(0, the default: frictionless); tied: a point sticks, normally and tangentially, tension "
@@ -240,20 +316,31 @@ void buildContacts(const io::Deck &deck, const mesh::HexMesh &m, double endTime,
     model::RigidContact contact;
     contact.name = name;
     contact.faces = faceSetAt(deck, m, {"Contact", name, "face set"});
-    contact.obstacle = buildObstacle(deck, name);
-    contact.motion = buildMotion(deck, name, endTime, contact.obstacle);
-    if (contact.motion) contact.obstacle = contact.motion;
+    const std::string shape = c.get<std::string>("obstacle");
+    if (shape == "face set" || shape == "self") {
+      contact.pair = buildPair(deck, m, name, contact.faces);
+      refuseRigidOnlyParameters(deck, name);
+    } else {
+      contact.obstacle = buildObstacle(deck, name);
+      contact.motion = buildMotion(deck, name, endTime, contact.obstacle);
+      if (contact.motion) contact.obstacle = contact.motion;
+    }
     contact.settings.penalty = positiveAt(deck, {"Contact", name, "penalty"}, "the penalty method");
     contact.settings.friction = buildFriction(deck, name, contact.settings.penalty);
     contact.settings.searchRadius = c.get<double>("search radius");
+    if (!contact.pair && c.get<std::string>("contact points") == "segments")
+      throw io::DeckError(deck.where({"Contact", name, "contact points"}) +
+                          ": 'segments' against a rigid obstacle; segments are cut by a master face set's edges "
+                          "(obstacle 'face set' or 'self'): use gauss or nodal");
     contact.settings.rule =
         c.get<std::string>("contact points") == "nodal" ? contact::ContactQuadrature::nodal : contact::ContactQuadrature::gauss;
     contact.enforcement = c.get<std::string>("enforcement") == "penalty" ? model::ContactEnforcement::penalty
                                                                           : model::ContactEnforcement::augmentedLagrangian;
     contact.gapTolerance = c.get<double>("gap tolerance");
     if (!(contact.gapTolerance > 0.0)) contact.gapTolerance = 1e-3 * meanEdgeLength(m, contact.faces);
-    contact.state = std::make_shared<contact::ContactState>(contact.faces.size());
-    checkStartingOverlap(deck, m, contact);
+    const std::size_t points = contact.pair ? contact.pair->pointsPerFace() : contact::ContactState::kPointsPerFace;
+    contact.state = std::make_shared<contact::ContactState>(contact.faces.size(), points);
+    if (contact.obstacle) checkStartingOverlap(deck, m, contact);
     scene.contacts.push_back(std::move(contact));
     // The contact tangent's area term is not symmetric: GMRES.
     scene.symmetricTangent = false;

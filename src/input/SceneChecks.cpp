@@ -1,10 +1,13 @@
 #include "input/SceneChecks.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include <Eigen/Eigenvalues>
 
+#include "contact/DeformablePair.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "mesh/MeshChecks.hpp"
@@ -61,6 +64,41 @@ std::string freeMotion(const std::vector<Eigen::Vector3d> &positions, const std:
   }
   return out;
 }
+// The directions the contacts hold nodes in, for the rigid-motion check. A rigid obstacle within its
+// search radius of a contact face's node holds that node along its normal (one-sided, but
+// supporting from Newton's first iteration: doc/contact.md). A deformable pair holds likewise: a
+// node of either face set within the search radius of a face of the other holds along that face's
+// normal (each body then rests on the other, which its own conditions hold).
+void holdByContacts(const Scene &scene, const std::function<void(mesh::NodeId, const Eigen::Vector3d &)> &hold) {
+  const mesh::HexMesh &m = scene.mesh;
+  auto holdAgainst = [&](const std::vector<mesh::ElementFace> &from, const std::vector<mesh::ElementFace> &to,
+                         double radius) {
+    for (const mesh::ElementFace &face : from)
+      for (mesh::NodeId n : contact::faceNodeIds(m, face))
+        for (const mesh::ElementFace &other : to) {
+          const auto nodes = contact::faceNodeIds(m, other);
+          if (std::find(nodes.begin(), nodes.end(), n) != nodes.end()) continue;
+          const loads::FaceNodes X = contact::referenceNodes(m, other);
+          const Eigen::Vector3d x = m.nodes[static_cast<std::size_t>(n)];
+          const Eigen::Vector3d lo = X.colwise().minCoeff().transpose(), hi = X.colwise().maxCoeff().transpose();
+          if ((lo - x).cwiseMax(x - hi).cwiseMax(0.0).norm() > radius) continue; // cheap: the face's box
+          const auto p = contact::projectOntoFace(X, x);
+          if (p && p->inside && std::abs(p->gap) <= radius) hold(n, p->normal);
+        }
+  };
+  for (const RigidContact &contact : scene.contacts) {
+    if (contact.pair) {
+      holdAgainst(contact.faces, contact.pair->masterFaces, contact.settings.searchRadius);
+      holdAgainst(contact.pair->masterFaces, contact.faces, contact.settings.searchRadius);
+      continue;
+    }
+    for (const mesh::ElementFace &face : contact.faces)
+      for (mesh::NodeId n : contact::faceNodeIds(m, face))
+        if (const auto cp = contact.obstacle->closest(m.nodes[static_cast<std::size_t>(n)], contact.settings.searchRadius))
+          hold(n, cp->normal);
+  }
+}
+
 } // namespace
 
 void declareMeshCheckParameters(Teuchos::ParameterList &meshSection) {
@@ -163,15 +201,7 @@ void checkScene(const io::Deck &deck, Scene &scene) {
       const Eigen::Vector3d line = muscle.fibres[i].origin - m.nodes[static_cast<std::size_t>(muscle.nodes[i])];
       if (line.norm() > 0.0) hold(muscle.nodes[i], line.normalized());
     }
-  // A rigid obstacle within its search radius of a contact face's node holds that node along its
-  // normal (one-sided, but supporting from Newton's first iteration: doc/contact.md).
-  for (const RigidContact &contact : scene.contacts)
-    for (const mesh::ElementFace &face : contact.faces)
-      for (int k = 0; k < 4; ++k) {
-        const mesh::NodeId n = m.elements[face.element][mesh::kHexFaceNodes[face.localFace][k]];
-        if (const auto cp = contact.obstacle->closest(m.nodes[static_cast<std::size_t>(n)], contact.settings.searchRadius))
-          hold(n, cp->normal);
-      }
+  holdByContacts(scene, hold);
   for (int p = 0; p < parts; ++p) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
     std::size_t count = 0;

@@ -360,7 +360,8 @@ void declareSceneParameters(ParameterList &schema) {
   loads.set(io::kAnySublist, loadParameters(), "one load");
   schema.set("Loads", loads, "surface loads, one sublist each");
   ParameterList contacts;
-  contacts.set(io::kAnySublist, contactParameters(), "one face set against one rigid obstacle");
+  contacts.set(io::kAnySublist, contactParameters(),
+               "one face set against one rigid obstacle, another face set or itself");
   schema.set("Contact", contacts, "contact with rigid obstacles, one sublist each (doc/contact.md)");
   schema.set("Airway", airwayParameters(), "the airway's lumen between the tongue and a rigid wall (doc/airway.md)");
   ParameterList points;

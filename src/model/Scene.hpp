@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contact/ContactState.hpp"
+#include "contact/DeformablePair.hpp"
 #include "contact/FaceContact.hpp"
 #include "contact/MovingObstacle.hpp"
 #include "contact/Obstacle.hpp"
@@ -84,11 +85,14 @@ struct FollowerPressureLoad {
 enum class ContactEnforcement { penalty, augmentedLagrangian };
 
 // Contact of a face set with a rigid obstacle, frictionless, with Coulomb friction or tied
-// (contact/FaceContact, doc/contact.md).
+// (contact/FaceContact, doc/contact.md) or, when `pair` is set, frictionless with a face set of the
+// body (contact/PairContact: a deformable pair, or the face set itself, self-contact); `faces` are
+// then the slave faces, whose contact points are searched against the master faces.
 struct RigidContact {
   std::string name;
   std::vector<mesh::ElementFace> faces;
-  std::shared_ptr<const contact::Obstacle> obstacle;
+  std::shared_ptr<const contact::Obstacle> obstacle; // null for a deformable pair
+  std::shared_ptr<const contact::DeformablePair> pair;
   // The same obstacle when it moves in time (null: at rest): the run sets its time where the
   // loads get theirs (the model evaluator's time, each evaluation's). Mutable through a const
   // scene, as `state`.
@@ -103,6 +107,7 @@ struct RigidContact {
   // of the faces of its own elements.
   std::shared_ptr<contact::ContactState> state;
   bool augmented() const { return enforcement == ContactEnforcement::augmentedLagrangian; }
+  bool deformable() const { return pair != nullptr; }
 };
 
 // How elements are shared out among ranks: the built-in coordinate bisection (mesh/Partition) or
@@ -138,5 +143,14 @@ struct Scene {
 // mesh keeps the positions it had as the imaged geometry (mesh::replaceReferenceNodes) and the
 // external muscles' insertions move with their nodes, while their bony origins stay.
 void useReferenceNodes(Scene &scene, std::vector<Eigen::Vector3d> reference);
+
+// The nodes each slave face of a deformable pair couples in the tangent (its own and its
+// candidate master faces'), with the element holding the face: the rank owning that element
+// ghosts them, and the matrix graph, built once, holds their couplings (doc/contact.md).
+struct NodeCoupling {
+  mesh::ElementId element = 0;
+  std::vector<mesh::NodeId> nodes;
+};
+std::vector<NodeCoupling> contactCouplings(const Scene &scene);
 
 } // namespace glossa::model

@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <Tpetra_Core.hpp>
 
 #include "app/DeckSchema.hpp"
 #include "io/deck/Deck.hpp"
-#include "solvers/run/Simulation.hpp"
+#include "solvers/run/RunSimulation.hpp"
+#include "WorldComm.hpp"
 
 namespace glossa::test {
 
@@ -28,7 +28,7 @@ inline std::filesystem::path scratchDirectory(const std::string &name) {
 
 inline nlohmann::json runDeck(const std::string &deckFile, const std::vector<std::string> &overrides,
                               const std::filesystem::path &output,
-                              Teuchos::RCP<const Teuchos::Comm<int>> comm = Tpetra::getDefaultComm()) {
+                              Teuchos::RCP<const Teuchos::Comm<int>> comm = worldComm()) {
   const auto schema = app::deckSchema();
   auto deck = io::Deck::fromFile(deckFile);
   for (const auto &o : overrides) deck.applyOverride(o, schema);

@@ -1,6 +1,11 @@
-// GoogleTest main for tests that need MPI and Kokkos initialised.
+// GoogleTest main for tests that need MPI and Kokkos initialised, and the world communicator
+// it sets up (WorldComm.hpp).
 #include <gtest/gtest.h>
 #include <Tpetra_Core.hpp>
+
+#include "WorldComm.hpp"
+
+Teuchos::RCP<const Teuchos::Comm<int>> glossa::test::worldComm() { return Tpetra::getDefaultComm(); }
 
 int main(int argc, char **argv) {
   Tpetra::ScopeGuard scope(&argc, &argv);

@@ -5,9 +5,10 @@
 #include <cstring>
 
 #include <gtest/gtest.h>
-#include <Tpetra_Core.hpp>
+#include <Teuchos_CommHelpers.hpp>
 
 #include "LinearPlant.hpp"
+#include "WorldComm.hpp"
 #include "solvers/control/CommControlGroups.hpp"
 #include "solvers/control/ControlDriver.hpp"
 
@@ -43,7 +44,7 @@ solvers::ControlDriverSetup gaSetup() {
 } // namespace
 
 TEST(ControlGroups, TwoGroupsPickTheWinnerOfOne) {
-  const auto world = Tpetra::getDefaultComm();
+  const auto world = test::worldComm();
   ASSERT_EQ(world->getSize(), 2) << "run under mpiexec -np 2";
   const solvers::CommControlGroups two(world, 2);
   ASSERT_EQ(two.groupComm()->getSize(), 1);

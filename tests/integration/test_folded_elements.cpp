@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "RunDeck.hpp"
+#include "fem/TurnedOverVolume.hpp"
 
 using namespace glossa;
 

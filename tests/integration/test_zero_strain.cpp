@@ -39,7 +39,7 @@ Distances gravityOn(const std::filesystem::path &coordinates, const std::filesys
   deck.applyOverride("Mesh/reference coordinates file=" + coordinates.string(), schema);
   deck.validate(schema);
   std::vector<double> u;
-  const auto summary = solvers::runSimulation(deck, solvers::parseRunConfiguration(deck), Tpetra::getDefaultComm(),
+  const auto summary = solvers::runSimulation(deck, solvers::parseRunConfiguration(deck), test::worldComm(),
                                               {output, true, false, 1, &u});
   EXPECT_TRUE(summary.value("converged", false));
   const auto imaged = mesh::readMeshFile(inputPath("tongue/tongue.node")).mesh.nodes;
@@ -71,7 +71,7 @@ app::ZeroStrainResult zeroStrain(const std::string &method, const std::filesyste
   for (const auto &o : kCheap) deck.applyOverride(o, schema);
   deck.applyOverride("Zero strain/method=" + method, schema);
   deck.validate(schema);
-  return app::computeZeroStrain(deck, solvers::parseRunConfiguration(deck), Tpetra::getDefaultComm(), output, true);
+  return app::computeZeroStrain(deck, solvers::parseRunConfiguration(deck), test::worldComm(), output, true);
 }
 
 TEST(ZeroStrain, InverseReturnsTheImagedGeometryTenTimesCloserThanTheApproximation) {

@@ -3,6 +3,7 @@
 // 1 cm cube, neo-Hookean, clamped at x = 0, under its own weight; the assembler with the muscle
 // history it reads and its result evaluator, owned side by side as the simulation owns them.
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -56,6 +57,34 @@ inline void deform(const ResultEvaluator &results, Vector &u) {
     all[3 * n + 2] = 0.015 * kSide * X.x() * (1.0 + X.z());
   }
   results.scatterDisplacement(all, u);
+}
+
+// The tangent at u (free dofs) against the central difference of the residual along the
+// direction `all` (per mesh dof, zeroed at the constrained ones) with step h: the largest
+// |K v - (f(u + h v) - f(u - h v)) / 2h| and the largest |K v|.
+struct TangentCheck {
+  double error = 0, scale = 0;
+};
+inline TangentCheck centralDifferenceCheck(const Assembler &assembler, const ResultEvaluator &results,
+                                           const Vector &u, const std::vector<double> &all, double h) {
+  const auto map = assembler.layout().ownedMap();
+  Vector v(map), Kv(map), fPlus(map), fMinus(map), f(map);
+  results.scatterDisplacement(all, v);
+  assembler.zeroConstrainedDofs(v);
+  const std::vector<double> lambda(assembler.layout().numLocalElements(), 0.0);
+  const auto K = assembler.createMatrix();
+  if (!assembler.assemble(u, 1.0, lambda, nullptr, &f, K.get()).valid) return {INFINITY, 0.0};
+  K->apply(v, Kv);
+  Vector up(u, Teuchos::Copy), um(u, Teuchos::Copy);
+  up.update(h, v, 1.0);
+  um.update(-h, v, 1.0);
+  if (!assembler.assemble(up, 1.0, lambda, nullptr, &fPlus, nullptr).valid ||
+      !assembler.assemble(um, 1.0, lambda, nullptr, &fMinus, nullptr).valid)
+    return {INFINITY, 0.0};
+  fPlus.update(-1.0 / (2.0 * h), fMinus, 1.0 / (2.0 * h)); // (f(u + h v) - f(u - h v)) / 2h
+  assembler.zeroConstrainedDofs(Kv);                       // the Dirichlet rows' diagonal acts on v = 0 there
+  fPlus.update(-1.0, Kv, 1.0);
+  return {fPlus.normInf(), Kv.normInf()};
 }
 
 struct AssemblerWithHistory {

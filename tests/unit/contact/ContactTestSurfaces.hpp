@@ -42,6 +42,35 @@ inline TriangleSurface valleySheet() {
   return TriangleSurface(std::move(v), std::move(t), {"valley", false, {}});
 }
 
+// A sphere of radius R about c triangulated as an octahedron whose faces are cut into n x n
+// triangles, every vertex then pushed onto the sphere; normals out. The triangles' corners lie on
+// the sphere, so its exact normal (x - c)/|x - c| and gap |x - c| - R are the references the
+// surface's normals are measured against.
+inline TriangleSurface triangulatedSphere(int n, double R, const Eigen::Vector3d &c) {
+  const TriangleSurface base = octahedron();
+  std::vector<Eigen::Vector3d> v;
+  std::vector<TriangleSurface::Triangle> t;
+  // Vertices shared by neighbouring faces are merged by their (exact) grid coordinates on the
+  // octahedron, before the projection.
+  auto index = [&](const Eigen::Vector3d &p) {
+    for (std::size_t k = 0; k < v.size(); ++k)
+      if ((v[k] - p).norm() < 1e-12) return static_cast<int>(k);
+    v.push_back(p);
+    return static_cast<int>(v.size() - 1);
+  };
+  for (std::size_t f = 0; f < base.numTriangles(); ++f) {
+    const Eigen::Vector3d a = base.corner(f, 0), b = base.corner(f, 1), d = base.corner(f, 2);
+    auto at = [&](int i, int j) { return index(a + (b - a) * i / double(n) + (d - a) * j / double(n)); };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; i + j < n; ++j) {
+        t.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+        if (i + j + 1 < n) t.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+  }
+  for (Eigen::Vector3d &p : v) p = c + R * p.normalized();
+  return TriangleSurface(std::move(v), std::move(t), {"sphere", false, {}});
+}
+
 // d normal / d x by central differences, column j the derivative along e_j.
 inline Eigen::Matrix3d centralDifference(
     const std::function<Eigen::Vector3d(const Eigen::Vector3d &)> &normal, const Eigen::Vector3d &x,

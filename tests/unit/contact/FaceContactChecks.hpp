@@ -1,7 +1,7 @@
 #pragma once
 // Faces and checks shared by the contact kernel's tests: rectangles and uniform displacements,
 // the total of nodal forces, the tangent against central differences of the forces (at fixed
-// multipliers and anchors), random warping.
+// multipliers and anchors), random warping (RandomFaces).
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "RandomFaces.hpp"
 #include "contact/FaceContact.hpp"
 
 namespace glossa::contact::test {
@@ -61,13 +62,6 @@ inline int expectTangentMatchesCentralDifferences(const Obstacle &obstacle, cons
   return active;
 }
 
-// The unit square about z = 0 with each coordinate moved by up to `size`.
-inline FaceNodes perturbed(const FaceNodes &X, std::mt19937 &rng, double size) {
-  std::uniform_real_distribution<double> d(-size, size);
-  FaceNodes Y = X;
-  for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 3; ++i) Y(a, i) += d(rng);
-  return Y;
-}
+using glossa::test::perturbed;
 
 }  // namespace glossa::contact::test

@@ -70,6 +70,29 @@ TEST(ContactState, SnapshotRestoresTheCommittedState) {
   EXPECT_THROW(restored.restore(bad), std::invalid_argument);
 }
 
+// A deformable pair's slave faces carry n x n points each: the Uzawa update, the gap error and
+// the snapshot work per point, and the four-multiplier view of a rigid contact's face is refused.
+TEST(ContactState, NinePointsPerFace) {
+  ContactState state(2, 9);
+  EXPECT_EQ(state.pointsPerFace(), 9u);
+  EXPECT_EQ(state.faces(), 2u);
+  state.record(1, 8, {-2e-3, 20.0, 0.1}); // pressed in by 2 mm, carrying 20 Pa
+  state.record(0, 3, {1e-3, 0.0, 0.1});   // apart
+  state.updateMultipliers(1.0e4);
+  EXPECT_DOUBLE_EQ(state.trialMultiplier(1, 8), 20.0);
+  EXPECT_DOUBLE_EQ(state.trialMultiplier(0, 3), 0.0);
+  EXPECT_DOUBLE_EQ(state.largestGapError(), 2e-3);
+  EXPECT_THROW(state.trialMultipliers(0), std::logic_error);
+  state.commit();
+  ContactState restored(2, 9);
+  restored.restore(state.snapshot());
+  EXPECT_DOUBLE_EQ(restored.trialMultiplier(1, 8), 20.0);
+  ContactState::Snapshot bad = state.snapshot();
+  for (auto *v : {&bad.multipliers, &bad.gap, &bad.pressure}) v->resize(16, 0.0); // 4 per face: not 9
+  EXPECT_THROW(restored.restore(bad), std::invalid_argument);
+  EXPECT_THROW(ContactState(1, 0), std::invalid_argument);
+}
+
 // Friction history: a record writes the trial anchors and adds each point's slip to the committed
 // total; commit keeps them, roll back returns to them; a snapshot carries them (NaN: no anchor).
 // A tied point is active but has no gap error (the penalty alone holds it).

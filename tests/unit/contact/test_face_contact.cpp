@@ -6,11 +6,13 @@
 #include <random>
 #include <string>
 
+#include "ContactTestSurfaces.hpp"
 #include "FaceContactChecks.hpp"
 #include "contact/CylinderObstacle.hpp"
 #include "contact/FaceContact.hpp"
 #include "contact/PlaneObstacle.hpp"
 #include "contact/SphereObstacle.hpp"
+#include "contact/TriangulatedObstacle.hpp"
 
 using namespace glossa::contact;
 using namespace glossa::contact::test;
@@ -75,6 +77,15 @@ TEST(FaceContact, TangentOnASphereMatchesCentralDifferences) {
 TEST(FaceContact, TangentOnACylinderMatchesCentralDifferences) {
   checkTangents(CylinderObstacle(Eigen::Vector3d(0.5, 0.5, -1.5), Eigen::Vector3d(1.0, 0.3, 0.0), 1.5), 1.0e4,
                 "cylinder");
+}
+
+// ... and of a triangulated sphere's smoothed normals, whose gap's gradient is not the normal
+// (contact/SmoothedProjection.hpp): radius 2 cut into 8 x 16 x 16 triangles, touching z = 0
+// from below.
+TEST(FaceContact, TangentOnSmoothedNormalsMatchesCentralDifferences) {
+  const TriangulatedObstacle sphere(glossa::contact::testing::triangulatedSphere(16, 2.0, {0.5, 0.5, -2.0}),
+                                    NormalField::smoothed);
+  checkTangents(sphere, 1.0e4, "smoothed triangulated sphere");
 }
 
 // A flat 2 x 1.5 face pushed delta = 0.01 into the plane z = 0, pure penalty: every point has

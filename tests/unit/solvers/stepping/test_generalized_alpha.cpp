@@ -12,56 +12,21 @@
 #include <cmath>
 #include <complex>
 
-#include <Eigen/Eigenvalues>
-
 #include "solvers/stepping/GeneralizedAlpha.hpp"
+#include "tests/unit/solvers/stepping/OscillatorStep.hpp"
 
 namespace glossa::solvers {
 namespace {
 
-// One step of m u'' + c u' + k u = 0 (m = 1): the balance divided by (1 - af) is linear in u1.
-Eigen::Vector3d step(const GeneralizedAlpha::Step &s, double k, double c, const Eigen::Vector3d &old) {
-  const double u0 = old(0), v0 = old(1), a0 = old(2);
-  // a1 = c0 (u1 - u0) - c1 v0 - c2 a0 = c0 u1 + aRest; v1 = v0 + vOld a0 + vNew a1.
-  const double aRest = -s.c0 * u0 - s.c1 * v0 - s.c2 * a0;
-  const double vRest = v0 + s.vOld * a0 + s.vNew * aRest;
-  // k u1 + c v1 + newAcceleration a1 + oldAcceleration a0 + oldForces (c v0 + k u0) = 0
-  const double lhs = k + c * s.vNew * s.c0 + s.newAcceleration * s.c0;
-  const double rhs = -(c * vRest + s.newAcceleration * aRest + s.oldAcceleration * a0 + s.oldForces * (c * v0 + k * u0));
-  const double u1 = rhs / lhs;
-  const double a1 = s.c0 * u1 + aRest;
-  return {u1, v0 + s.vOld * a0 + s.vNew * a1, a1};
-}
+using test::oscillatorStep;
+using test::principalRoot;
+using test::spectralRadius;
 
-// The amplification matrix of one step (columns: the steps of the unit states).
 Eigen::Matrix3d amplification(const GeneralizedAlpha &scheme, double omega, double dt) {
-  const auto s = scheme.step(dt);
-  Eigen::Matrix3d A;
-  for (int j = 0; j < 3; ++j) A.col(j) = step(s, omega * omega, 0.0, Eigen::Vector3d::Unit(j));
-  return A;
+  return test::amplification(scheme.step(dt), omega);
 }
 
-// The principal (complex) eigenvalue, and the spectral radius.
-std::complex<double> principalRoot(const Eigen::Matrix3d &A) {
-  const Eigen::EigenSolver<Eigen::Matrix3d> eig(A);
-  std::complex<double> best(0.0, 0.0);
-  for (int i = 0; i < 3; ++i) {
-    const std::complex<double> l = eig.eigenvalues()(i);
-    if (l.imag() > best.imag()) best = l;
-  }
-  return best;
-}
-double spectralRadius(const Eigen::Matrix3d &A) {
-  const Eigen::EigenSolver<Eigen::Matrix3d> eig(A);
-  return eig.eigenvalues().cwiseAbs().maxCoeff();
-}
-
-// T_numerical / T - 1 at Omega = w dt.
-double periodError(const GeneralizedAlpha &scheme, double Omega) {
-  const double omega = 1.0, dt = Omega / omega;
-  const double discrete = std::arg(principalRoot(amplification(scheme, omega, dt))) / dt;
-  return omega / discrete - 1.0;
-}
+double periodError(const GeneralizedAlpha &scheme, double Omega) { return test::periodError(scheme.step(Omega)); }
 
 TEST(GeneralizedAlpha, ParametersOfTheLimitCases) {
   const GeneralizedAlpha trapezoidal(1.0);
@@ -90,7 +55,7 @@ TEST(GeneralizedAlpha, TrapezoidalRuleHasTheKnownFrequencyAndNoDissipation) {
   const double omega = 2.0 * M_PI, dt = 1.0 / 20.0;
   const auto s = scheme.step(dt);
   Eigen::Vector3d x(0.0, 1.0, 0.0);
-  for (int n = 0; n < 2000; ++n) x = step(s, omega * omega, 0.0, x);
+  for (int n = 0; n < 2000; ++n) x = oscillatorStep(s, omega * omega, 0.0, x);
   EXPECT_NEAR(0.5 * (x(1) * x(1) + omega * omega * x(0) * x(0)), 0.5, 1e-12);
 }
 
