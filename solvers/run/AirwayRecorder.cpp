@@ -13,7 +13,7 @@ namespace glossa::solvers {
 
 namespace {
 std::string twoDigits(std::size_t k) {
-  char s[16];
+  char s[24]; // room for any size_t: no truncation warning
   std::snprintf(s, sizeof s, "%02zu", k);
   return s;
 }
