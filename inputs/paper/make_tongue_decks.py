@@ -543,20 +543,39 @@ of s8_1 (s8_1/reference_inverse.txt): gravity ramped over [0, 1] s, then the air
 s8_3, linear from 0 at P_A to -500 Pa at P_P on 'airway', ramped over [1, 2] s; 8 steps of
 0.25 s. The palate (palate8.obj) is a frictionless contact of the face set 'palate side' (as in
 tongue_palate.xml), whose area airway.csv reports."""
+PALATE_SIDE = {"palate side": {"outward normal": ("Array(double)", "{1, 0, 2}"),
+                               "minimum cosine": ("double", 0.0),
+                               "box min": ("Array(double)", "{-1, -1, 0.065}"),
+                               "box max": ("Array(double)", "{1, 1, 1}")}}
+PALATE_CONTACT = {"palate": {"face set": ("string", "palate side"), "obstacle": ("string", "surface"),
+                             "file": ("string", "../tongue/palate8.obj"), "penalty": ("double", 1e8),
+                             "search radius": ("double", 5e-3)}}
+AIRWAY_SECTION = {"face set": ("string", "airway"), "wall file": ("string", "../tongue/palate8.obj"),
+                  "sections": ("int", 20), "start point": ("Array(double)", "{0.1124, 0, 0.1103}"),
+                  "end point": ("Array(double)", "{0.1265, 0, 0.07}"), "contact": ("string", "palate")}
 for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
     deck(f"airway_{posture}", f"The airway's lumen under suction, {posture}.\n" + COMMON + AIRWAY +
          f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
          {}, gravity=g, pressure=-500.0, end_time=2.0, step=0.25, reference="s8_1/reference_inverse.txt",
-         face_sets={"palate side": {"outward normal": ("Array(double)", "{1, 0, 2}"),
-                                    "minimum cosine": ("double", 0.0),
-                                    "box min": ("Array(double)", "{-1, -1, 0.065}"),
-                                    "box max": ("Array(double)", "{1, 1, 1}")}},
-         contact={"palate": {"face set": ("string", "palate side"), "obstacle": ("string", "surface"),
-                             "file": ("string", "../tongue/palate8.obj"), "penalty": ("double", 1e8),
-                             "search radius": ("double", 5e-3)}},
-         airway={"face set": ("string", "airway"), "wall file": ("string", "../tongue/palate8.obj"),
-                 "sections": ("int", 20), "start point": ("Array(double)", "{0.1124, 0, 0.1103}"),
-                 "end point": ("Array(double)", "{0.1265, 0, 0.07}"), "contact": ("string", "palate")})
+         face_sets=PALATE_SIDE, contact=PALATE_CONTACT, airway=AIRWAY_SECTION)
+
+PCRIT_SUCTION = -3000.0
+PCRIT = f"""
+The airway's closing pressure Pcrit (doc/airway.md, "Pcrit"): the lumen of airway_{{posture}}.xml
+(20 sections between 'airway' and palate8.obj, the palate a frictionless penalty contact of
+'palate side', so the tongue cannot pass the wall), passive, on the zero-strain configuration of
+s8_1, gravity ramped over [0, 1] s, then the airway suction, linear from 0 at P_A to
+{PCRIT_SUCTION:g} Pa at P_P (the paper's profile; with Loads/airway pressure/profile = uniform
+for a uniform one) ramped over [1, 2] s in steps of 0.125 s. The run raises the suction until a
+section closes (area below 1 mm^2, or the tongue on the wall across the section's width), then
+bisects from the last open state to a bracket of 0.1 cmH2O; summary.json: pcrit."""
+for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
+    deck(f"tongue_pcrit_{posture}", f"The tongue's airway closing pressure, {posture}.\n" + COMMON +
+         PCRIT.replace("{posture}", posture) + f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
+         {}, gravity=g, pressure=PCRIT_SUCTION, end_time=2.0, step=0.125, reference="s8_1/reference_inverse.txt",
+         face_sets=PALATE_SIDE, contact=PALATE_CONTACT,
+         airway={**AIRWAY_SECTION, "closing pressure load": ("string", "airway pressure")},
+         output={"fields": ("bool", "false")})
 TWITCH = """
 A styloglossus twitch (doc/dynamics.md, "The tongue twitch"): the SG group at FFMR 25 % (as
 s8_4_sg) on the imaged configuration, no gravity, so the tongue starts at rest in equilibrium.

@@ -205,6 +205,10 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
   checkControlGroupCount(options.controlGroups, comm->getSize());
   buildScene(deck, *run);
   run->airway = input::buildAirway(deck, *run->scene);
+  if (run->airway && run->airway->pressureLoad >= 0) {
+    const model::FollowerPressureLoad &load = run->scene->pressures[static_cast<std::size_t>(run->airway->pressureLoad)];
+    run->pcrit = std::make_unique<PcritSearch>(*run->airway, load.pressure, load.name);
+  }
   // Control groups: the world splits into G groups of equal size, each with its own copy of the
   // whole solver on a sub-communicator (every group steps the same committed state; GA
   // candidates are dealt out among the groups and the winner's state is broadcast).

@@ -74,6 +74,18 @@ int contactIndex(const io::Deck &deck, const model::Scene &scene) {
   throw io::DeckError(deck.where({"Airway", "contact"}) + ": no contact '" + name + "' in the Contact section (" +
                       (known.empty() ? std::string("it has none") : "it has: " + known) + ")");
 }
+int pressureLoadIndex(const io::Deck &deck, const model::Scene &scene) {
+  const std::string name = deck.root().sublist("Airway").get<std::string>("closing pressure load");
+  if (name.empty()) return -1;
+  std::string known;
+  for (std::size_t k = 0; k < scene.pressures.size(); ++k) {
+    if (scene.pressures[k].name == name) return static_cast<int>(k);
+    known += (known.empty() ? "" : ", ") + scene.pressures[k].name;
+  }
+  throw io::DeckError(deck.where({"Airway", "closing pressure load"}) + ": no follower pressure '" + name +
+                      "' in the Loads section (" + (known.empty() ? std::string("it has none") : "it has: " + known) +
+                      ")");
+}
 }  // namespace
 
 ParameterList airwayParameters() {
@@ -102,6 +114,12 @@ ParameterList airwayParameters() {
                     io::Range::nonNegative());
   io::declareString(p, "contact", "",
                     "the contact (a Contact sublist) whose area airway.csv reports as the tongue-wall contact area");
+  io::declareString(p, "closing pressure load", "",
+                    "a follower pressure (a Loads sublist) on the airway whose suction the run raises until the "
+                    "airway closes, then bisects to the closing pressure Pcrit; empty: no search");
+  io::declareDouble(p, "closing pressure tolerance", 9.80665, "Pa",
+                    "the search stops when the closing pressure is bracketed this closely (9.80665 Pa = 0.1 cmH2O)",
+                    io::Range::positive());
   return p;
 }
 
@@ -116,6 +134,8 @@ std::shared_ptr<const model::AirwayOutput> buildAirway(const io::Deck &deck, con
     throw io::DeckError(deck.where({"Airway", "lateral axis"}) + ": the axis is zero; the midsagittal plane needs a normal");
   auto out = std::make_shared<model::AirwayOutput>();
   out->contact = contactIndex(deck, scene);
+  out->pressureLoad = pressureLoadIndex(deck, scene);
+  out->pressureTolerance = a.get<double>("closing pressure tolerance");
   airway::TriangleSet tongue = tongueTriangles(scene.mesh, faces, out->nodes);
   airway::CentrelineSettings centreline;
   centreline.midsagittalPoint = vec3(a.get<Array<double>>("midsagittal point"));

@@ -18,6 +18,11 @@ struct AirwayOutput {
   std::shared_ptr<const airway::AirwayLumen> lumen;
   std::vector<mesh::NodeId> nodes;  // the lumen's tongue vertex k is node nodes[k]
   int contact = -1;                 // index into Scene::contacts; -1: none reported
+  // The closing-pressure search (doc/airway.md, "Pcrit"): the follower pressure whose suction is
+  // raised until the airway closes (index into Scene::pressures; -1: no search), and how closely
+  // the closing pressure is bracketed [Pa].
+  int pressureLoad = -1;
+  double pressureTolerance = 9.80665;
 
   // The tongue vertices' current positions from every node's displacement (3 per node).
   std::vector<Eigen::Vector3d> positions(const mesh::HexMesh &mesh, const std::vector<double> &u) const {
