@@ -35,12 +35,13 @@ bool PcritSearch::found() const {
   return high_ && std::abs(pressure(*high_) - pressure(low_)) <= airway_.pressureTolerance;
 }
 
-nlohmann::json PcritSearch::summary(double endTime) const {
+nlohmann::json PcritSearch::summary(double reached, double endTime) const {
   nlohmann::json j = {{"load", loadName_}, {"tolerance_Pa", airway_.pressureTolerance}};
   if (!high_) {
     j["closed"] = false;
-    j["largest_suction_Pa"] = pressure(endTime);
-    j["largest_suction_cmH2O"] = pressure(endTime) / kPascalPerCmH2O;
+    j["largest_suction_Pa"] = pressure(reached);
+    j["largest_suction_cmH2O"] = pressure(reached) / kPascalPerCmH2O;
+    j["deck_largest_suction_Pa"] = pressure(endTime);
     return j;
   }
   // The open end and the closed end, numerically ordered (suction is negative: the closed end is
@@ -66,13 +67,14 @@ nlohmann::json PcritSearch::summary(double endTime) const {
   return j;
 }
 
-std::string PcritSearch::line(double endTime) const {
+std::string PcritSearch::line(double reached, double endTime) const {
   char s[320];
   if (!high_)
-    std::snprintf(s, sizeof s, "airway: never closed up to %.4g Pa (%.4g cmH2O) of '%s'; no Pcrit",
-                  pressure(endTime), pressure(endTime) / kPascalPerCmH2O, loadName_.c_str());
+    std::snprintf(s, sizeof s, "airway: never closed up to %.4g Pa (%.4g cmH2O) of '%s'%s; no Pcrit",
+                  pressure(reached), pressure(reached) / kPascalPerCmH2O, loadName_.c_str(),
+                  pressure(reached) == pressure(endTime) ? "" : ", where the run stopped short of the deck's largest");
   else {
-    const nlohmann::json j = summary(endTime);
+    const nlohmann::json j = summary(reached, endTime);
     std::snprintf(s, sizeof s,
                   "airway: Pcrit = %.4f cmH2O (%.2f Pa), bracket [%.4f, %.4f] cmH2O%s, section %d at %.2f mm, "
                   "%d bisection solves",

@@ -43,10 +43,11 @@ public:
   double nextStep() const { return 0.5 * (*high_ - low_); }
 
   // summary.json's "pcrit": the bracket in cmH2O and Pa, the section, the solves it took; or,
-  // never closed, that and the largest suction reached at `endTime`.
-  nlohmann::json summary(double endTime) const;
+  // never closed, that, the suction at `reached` (the last committed time) and the deck's
+  // largest, at `endTime` (more when the run stopped short of it).
+  nlohmann::json summary(double reached, double endTime) const;
   // The log's line at the end of the run.
-  std::string line(double endTime) const;
+  std::string line(double reached, double endTime) const;
 
 private:
   const model::AirwayOutput &airway_;

@@ -226,8 +226,9 @@ void Simulation::finish() {
   nlohmann::json finals = nlohmann::json::object();
   for (const auto &[name, d] : run.recorder->pointDisplacements(uAll)) finals[name] = {d.x(), d.y(), d.z()};
   if (run.pcrit) {
-    run.report->doc()["pcrit"] = run.pcrit->summary(run.stepper->time());
-    if (run.talk) std::printf("%s\n", run.pcrit->line(run.stepper->time()).c_str());
+    const double reached = run.stepper->time(), end = run.stepper->steps().endTime();
+    run.report->doc()["pcrit"] = run.pcrit->summary(reached, end);
+    if (run.talk) std::printf("%s\n", run.pcrit->line(reached, end).c_str());
   }
   run.report->finish(assemblyCounters(*run.model), run.stepper->time(), finals);
 }

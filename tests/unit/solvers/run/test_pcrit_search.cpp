@@ -62,7 +62,7 @@ TEST(PcritSearch, BisectionBracketsTheKnownClosingPressure) {
     if (search.bracketing()) dt = search.nextStep();
   }
   ASSERT_TRUE(search.found());
-  const nlohmann::json s = search.summary(1.0);
+  const nlohmann::json s = search.summary(1.0, 1.0);
   EXPECT_TRUE(s["closed"].get<bool>());
   const double lo = s["low_Pa"], hi = s["high_Pa"];
   EXPECT_LE(lo, -300.0);
@@ -85,8 +85,12 @@ TEST(PcritSearch, ASuctionThatNeverClosesSaysSo) {
     search.opened(t);
   }
   EXPECT_FALSE(search.bracketing());
-  const nlohmann::json s = search.summary(0.25);
+  // Stopped at 0.25 s of a deck that ends at 1 s: both suctions said.
+  const nlohmann::json s = search.summary(0.25, 1.0);
   EXPECT_FALSE(s["closed"].get<bool>());
   EXPECT_DOUBLE_EQ(s["largest_suction_Pa"].get<double>(), -250.0);
-  EXPECT_NE(search.line(0.25).find("never closed"), std::string::npos);
+  EXPECT_DOUBLE_EQ(s["deck_largest_suction_Pa"].get<double>(), -1000.0);
+  EXPECT_NE(search.line(0.25, 1.0).find("never closed up to -250 Pa"), std::string::npos);
+  EXPECT_NE(search.line(0.25, 1.0).find("stopped short"), std::string::npos);
+  EXPECT_EQ(search.line(1.0, 1.0).find("stopped short"), std::string::npos);
 }
