@@ -63,28 +63,21 @@ airway::TriangleSet wallTriangles(const io::Deck &deck) {
   return {surface.vertices(), surface.triangles()};
 }
 
-int contactIndex(const io::Deck &deck, const model::Scene &scene) {
-  const std::string name = deck.root().sublist("Airway").get<std::string>("contact");
+// The index of the item (a contact, a load: `what`, of the deck's `section`) the Airway parameter
+// `parameter` names among `items`; -1 when it names none; a name not among them is refused with the
+// names there are.
+template <class Item>
+int namedIndex(const io::Deck &deck, const std::string &parameter, const std::vector<Item> &items,
+               const std::string &what, const std::string &section) {
+  const std::string name = deck.root().sublist("Airway").get<std::string>(parameter);
   if (name.empty()) return -1;
   std::string known;
-  for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
-    if (scene.contacts[c].name == name) return static_cast<int>(c);
-    known += (known.empty() ? "" : ", ") + scene.contacts[c].name;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    if (items[k].name == name) return static_cast<int>(k);
+    known += (known.empty() ? "" : ", ") + items[k].name;
   }
-  throw io::DeckError(deck.where({"Airway", "contact"}) + ": no contact '" + name + "' in the Contact section (" +
-                      (known.empty() ? std::string("it has none") : "it has: " + known) + ")");
-}
-int pressureLoadIndex(const io::Deck &deck, const model::Scene &scene) {
-  const std::string name = deck.root().sublist("Airway").get<std::string>("closing pressure load");
-  if (name.empty()) return -1;
-  std::string known;
-  for (std::size_t k = 0; k < scene.pressures.size(); ++k) {
-    if (scene.pressures[k].name == name) return static_cast<int>(k);
-    known += (known.empty() ? "" : ", ") + scene.pressures[k].name;
-  }
-  throw io::DeckError(deck.where({"Airway", "closing pressure load"}) + ": no follower pressure '" + name +
-                      "' in the Loads section (" + (known.empty() ? std::string("it has none") : "it has: " + known) +
-                      ")");
+  throw io::DeckError(deck.where({"Airway", parameter}) + ": no " + what + " '" + name + "' in the " + section +
+                      " section (" + (known.empty() ? std::string("it has none") : "it has: " + known) + ")");
 }
 }  // namespace
 
@@ -133,8 +126,8 @@ std::shared_ptr<const model::AirwayOutput> buildAirway(const io::Deck &deck, con
   if (vec3(a.get<Array<double>>("lateral axis")).isZero(0.0))
     throw io::DeckError(deck.where({"Airway", "lateral axis"}) + ": the axis is zero; the midsagittal plane needs a normal");
   auto out = std::make_shared<model::AirwayOutput>();
-  out->contact = contactIndex(deck, scene);
-  out->pressureLoad = pressureLoadIndex(deck, scene);
+  out->contact = namedIndex(deck, "contact", scene.contacts, "contact", "Contact");
+  out->pressureLoad = namedIndex(deck, "closing pressure load", scene.pressures, "follower pressure", "Loads");
   out->pressureTolerance = a.get<double>("closing pressure tolerance");
   airway::TriangleSet tongue = tongueTriangles(scene.mesh, faces, out->nodes);
   airway::CentrelineSettings centreline;
