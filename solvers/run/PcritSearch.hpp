@@ -39,8 +39,9 @@ public:
   bool bracketing() const { return high_.has_value(); }
   // The bracket's pressures are within the tolerance: Pcrit is found.
   bool found() const;
-  // From the last open state to the bracket's middle [s].
-  double nextStep() const { return 0.5 * (*high_ - low_); }
+  // From the last open committed state at `committed` (after a restart, the checkpoint's time,
+  // which the search did not see committed) to the bracket's middle [s].
+  double nextStep(double committed) const { return 0.5 * (*high_ - committed); }
 
   // summary.json's "pcrit": the bracket in cmH2O and Pa, the section, the solves it took; or,
   // never closed, that, the suction at `reached` (the last committed time) and the deck's

@@ -38,6 +38,8 @@ Simulation::Simulation(const io::Deck &deck, const RunConfiguration &config,
     });
   if (run.controlled) run.controlled->setCommittedStretch(initial.groupMeanStretch);
   if (run.restart) restoreRun(run, *run.restart);
+  // A restart's checkpoint is an open state (none is written inside the bracket): the search's start.
+  if (run.pcrit) run.pcrit->opened(run.stepper->time());
   run.report->beginSteps(run.stepper->time());
 }
 
@@ -102,7 +104,7 @@ bool Simulation::pcritGoesOn(bool closed) {
   if (!closed) run.pcrit->opened(run.stepper->time());
   if (!run.pcrit->bracketing()) return true;
   if (run.pcrit->found()) return false;
-  if (run.stepper->setStepSize(run.pcrit->nextStep())) return true;
+  if (run.stepper->setStepSize(run.pcrit->nextStep(run.stepper->time()))) return true;
   run.report->warn("the closing pressure's bisection stopped at the minimum step size before the bracket reached "
                    "'closing pressure tolerance'");
   return false;

@@ -59,7 +59,7 @@ TEST(PcritSearch, BisectionBracketsTheKnownClosingPressure) {
     const std::optional<int> section = search.closedSection(lifted(trial));
     if (section) search.closed(trial, *section);
     else search.opened(t = trial);
-    if (search.bracketing()) dt = search.nextStep();
+    if (search.bracketing()) dt = search.nextStep(t);
   }
   ASSERT_TRUE(search.found());
   const nlohmann::json s = search.summary(1.0, 1.0);
