@@ -100,7 +100,7 @@ class Xml:
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
          reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None,
          matrix=None, linear=None, face_sets=None, contact=None, neural=None, output=None,
-         time=None, group=None, incompressibility=None, gravity_table=None):
+         time=None, group=None, incompressibility=None, gravity_table=None, airway=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
@@ -122,7 +122,8 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     Incompressibility section (a dynamic run's analysis, integrator and tolerances).
     group: None or {parameter: (type, value)} added to each active group (e.g. its rise time).
     gravity_table: None (gravity ramped linearly over the first second) or (times, values) of a
-    table time function."""
+    table time function.
+    airway: None or {parameter: (type, value)} of the Airway section (doc/airway.md)."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -273,6 +274,11 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
             for key, (typ, value) in params.items():
                 x.add(key, typ, value)
             x.close()
+        x.close()
+    if airway is not None:
+        x.open("Airway")
+        for key, (typ, value) in airway.items():
+            x.add(key, typ, value)
         x.close()
     x.open("Named points")
     for pname, _, pos in POINTS:
@@ -535,6 +541,50 @@ deck("tongue_palate", "The tongue pressed on the palate by the styloglossus and 
                         "start overlap tolerance": ("double", 0.05e-3)}},
      output={"resultant face sets": ("string", "palate side, palate zone, jaw zone")})
 
+AIRWAY = """
+The airway's lumen (doc/airway.md): 20 cross-sections between the face set 'airway' and the
+palate and pharyngeal wall (palate8.obj), along a centreline fixed at rest from under the velum
+(the dorsum's midsagittal point nearest C04, x 112 mm, z 110 mm) to the vallecula (the tongue
+base's lowest midsagittal airway node, x 126.5 mm, z 70 mm); airway.csv, airway_sections.csv and
+the outlines in airway_sections/. Passive (u = 0 in every group), on the zero-strain configuration
+of s8_1 (s8_1/reference_inverse.txt): gravity ramped over [0, 1] s, then the airway suction of
+s8_3, linear from 0 at P_A to -500 Pa at P_P on 'airway', ramped over [1, 2] s; 8 steps of
+0.25 s. The palate (palate8.obj) is a frictionless contact of the face set 'palate side' (as in
+tongue_palate.xml), whose area airway.csv reports."""
+PALATE_SIDE = {"palate side": {"outward normal": ("Array(double)", "{1, 0, 2}"),
+                               "minimum cosine": ("double", 0.0),
+                               "box min": ("Array(double)", "{-1, -1, 0.065}"),
+                               "box max": ("Array(double)", "{1, 1, 1}")}}
+PALATE_CONTACT = {"palate": {"face set": ("string", "palate side"), "obstacle": ("string", "surface"),
+                             "file": ("string", "../tongue/palate8.obj"), "penalty": ("double", 1e8),
+                             "search radius": ("double", 5e-3)}}
+AIRWAY_SECTION = {"face set": ("string", "airway"), "wall file": ("string", "../tongue/palate8.obj"),
+                  "sections": ("int", 20), "start point": ("Array(double)", "{0.1124, 0, 0.1103}"),
+                  "end point": ("Array(double)", "{0.1265, 0, 0.07}"), "contact": ("string", "palate")}
+for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
+    deck(f"airway_{posture}", f"The airway's lumen under suction, {posture}.\n" + COMMON + AIRWAY +
+         f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
+         {}, gravity=g, pressure=-500.0, end_time=2.0, step=0.25, reference="s8_1/reference_inverse.txt",
+         face_sets=PALATE_SIDE, contact=PALATE_CONTACT, airway=AIRWAY_SECTION)
+
+PCRIT_SUCTION = -3000.0
+PCRIT = f"""
+The airway's closing pressure Pcrit (doc/airway.md, "Pcrit"): the lumen of airway_{{posture}}.xml
+(20 sections between 'airway' and palate8.obj), the palate a frictionless penalty contact of
+'palate side' with smoothed normals (the faceted ones stall Newton at a third of the suction), so
+the tongue cannot pass the wall; passive, on the zero-strain configuration of s8_1, gravity
+ramped over [0, 1] s, then the airway suction, linear from 0 at P_A to {PCRIT_SUCTION:g} Pa at P_P
+(the paper's profile; with Loads/airway pressure/profile = uniform for a uniform one) ramped over
+[1, 2] s in steps of 0.125 s. The run raises the suction until a section closes (area below
+1 mm^2, or the tongue on the wall across the section's width), then bisects from the last open
+state to a bracket of 0.1 cmH2O; summary.json: pcrit."""
+for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
+    deck(f"tongue_pcrit_{posture}", f"The tongue's airway closing pressure, {posture}.\n" + COMMON +
+         PCRIT.replace("{posture}", posture) + f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
+         {}, gravity=g, pressure=PCRIT_SUCTION, end_time=2.0, step=0.125, reference="s8_1/reference_inverse.txt",
+         face_sets=PALATE_SIDE, contact={"palate": {**PALATE_CONTACT["palate"], "normal field": ("string", "smoothed")}},
+         airway={**AIRWAY_SECTION, "closing pressure load": ("string", "airway pressure")},
+         output={"fields": ("bool", "false")})
 TWITCH = """
 A styloglossus twitch (doc/dynamics.md, "The tongue twitch"): the SG group at FFMR 25 % (as
 s8_4_sg) on the imaged configuration, no gravity, so the tongue starts at rest in equilibrium.

@@ -53,6 +53,12 @@ public:
   // After a failed attempt: the next attempt's step is cut back; false if it would fall below
   // the minimum step size.
   bool cutBack() { return steps_.cutBack(); }
+  // The next attempt's step, set by the caller (the closing-pressure search's bisection): false
+  // if it is below the minimum step size.
+  bool setStepSize(double dt) {
+    steps_.restore({dt, 0});
+    return dt >= steps_.minimumStep();
+  }
 
   // A checkpoint's parts: this rank's states (`part`) and rank 0's scalars (`run`).
   void save(nlohmann::json &part, nlohmann::json &run) const;

@@ -9,6 +9,7 @@
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/NullSpace.hpp"
 #include "assembly/ResultEvaluator.hpp"
+#include "input/AirwayParameters.hpp"
 #include "input/SceneFactory.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/output/DirectoryLock.hpp"
@@ -203,6 +204,11 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
   run->report = std::make_unique<RunReport>(comm, run->root, run->talk);
   checkControlGroupCount(options.controlGroups, comm->getSize());
   buildScene(deck, *run);
+  run->airway = input::buildAirway(deck, *run->scene);
+  if (run->airway && run->airway->pressureLoad >= 0) {
+    const model::FollowerPressureLoad &load = run->scene->pressures[static_cast<std::size_t>(run->airway->pressureLoad)];
+    run->pcrit = std::make_unique<PcritSearch>(*run->airway, load.pressure, load.name);
+  }
   // Control groups: the world splits into G groups of equal size, each with its own copy of the
   // whole solver on a sub-communicator (every group steps the same committed state; GA
   // candidates are dealt out among the groups and the winner's state is broadcast).
@@ -219,7 +225,7 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
     run->recorder = std::make_unique<StepRecorder>(assembly::ResultEvaluator(*run->assembler), dir, output.fields, run->root,
                                                    output.resultantFaceSets, output.volumeFaceSets,
                                                    run->restart ? &run->restart->outputs : nullptr,
-                                                   run->config.time.dynamics.dynamic());
+                                                   run->config.time.dynamics.dynamic(), run->airway);
   });
   // None on an arc-length path (its direction and step are LOCA's own state).
   run->checkpoints = std::make_unique<RunCheckpoint>(dir, comm, output.checkpointEvery);

@@ -20,6 +20,7 @@
 #include "solvers/run/Inertia.hpp"
 #include "solvers/run/LoadStepper.hpp"
 #include "solvers/run/PathWatch.hpp"
+#include "solvers/run/PcritSearch.hpp"
 #include "solvers/run/RunCheckpoint.hpp"
 #include "solvers/run/RunOptions.hpp"
 #include "solvers/run/RunReport.hpp"
@@ -50,6 +51,8 @@ struct RunParts {
   bool root = false, talk = false, detail = false; // detail: --verbose's per-iteration lines
   std::unique_ptr<io::DirectoryLock> outputLock; // rank 0's, for the run's life (released last)
   std::unique_ptr<const model::Scene> scene; // as built from the deck, never changed after
+  std::shared_ptr<const model::AirwayOutput> airway; // the deck's Airway section; null without one
+  std::unique_ptr<PcritSearch> pcrit; // the airway's closing-pressure search; null without one
   // Each tissue's kappa_AL, rule and tangent law: raised by the Uzawa loop, read by the assembly.
   std::unique_ptr<Augmentation> augmentation;
   std::unique_ptr<CommControlGroups> groups;

@@ -32,11 +32,14 @@ Simulation::Simulation(const io::Deck &deck, const RunConfiguration &config,
       const auto contacts = assembly::updateContactStates(assembly::ResultEvaluator(*run.assembler), state.u);
       run.recorder->record(0.0, state.u, state.lambda, true, initial, inputs);
       run.recorder->recordContacts(0.0, contacts);
+      run.recorder->recordAirway(0.0, contacts);
       recordEnergy(nullptr);
       run.report->write(assemblyCounters(*run.model));
     });
   if (run.controlled) run.controlled->setCommittedStretch(initial.groupMeanStretch);
   if (run.restart) restoreRun(run, *run.restart);
+  // A restart's checkpoint is an open state (none is written inside the bracket): the search's start.
+  if (run.pcrit) run.pcrit->opened(run.stepper->time());
   run.report->beginSteps(run.stepper->time());
 }
 
@@ -76,7 +79,35 @@ void Simulation::commit() {
                        onPath_, run.controlled ? run.controlled->controlLine() : std::string());
   run.report->write(assemblyCounters(*run.model));
   output.unlock();
-  if (run.checkpoints->due(run.stepper->stepNumber()) && !onPath_) writeCheckpoint(run);
+  // Inside the closing pressure's bracket no checkpoint is written: a restart resumes before the
+  // closing step and bisects again to the same bracket.
+  const bool bisecting = run.pcrit && run.pcrit->bracketing();
+  if (run.checkpoints->due(run.stepper->stepNumber()) && !onPath_ && !bisecting) writeCheckpoint(run);
+}
+
+bool Simulation::trialClosesAirway() {
+  RunParts &run = *run_;
+  const StepTrial &trial = run.stepper->trial();
+  // Every rank gathers the whole displacement and measures the same lumen, so all agree.
+  const std::vector<double> uAll = assembly::ResultEvaluator(*run.assembler).gatherDisplacement(trial.state.u);
+  const std::optional<int> section = run.pcrit->closedSection(run.airway->positions(run.scene->mesh, uAll));
+  if (!section) return false;
+  if (run.talk)
+    std::printf("  the airway closes at t = %.9g (%.6g Pa, section %d); not committed: bisecting from t = %.9g\n",
+                trial.time, run.pcrit->pressure(trial.time), *section, run.stepper->time());
+  run.pcrit->closed(trial.time, *section);
+  return true;
+}
+
+bool Simulation::pcritGoesOn(bool closed) {
+  RunParts &run = *run_;
+  if (!closed) run.pcrit->opened(run.stepper->time());
+  if (!run.pcrit->bracketing()) return true;
+  if (run.pcrit->found()) return false;
+  if (run.stepper->setStepSize(run.pcrit->nextStep(run.stepper->time()))) return true;
+  run.report->warn("the closing pressure's bisection stopped at the minimum step size before the bracket reached "
+                   "'closing pressure tolerance'");
+  return false;
 }
 
 void Simulation::record(const StepTrial &trial) {
@@ -86,6 +117,7 @@ void Simulation::record(const StepTrial &trial) {
   const auto reactions = run.recorder->record(run.stepper->time(), state.u, state.lambda, fields, trial.attempt.muscle,
                                               run.history->trialInput(), fieldsStamp());
   run.recorder->recordContacts(run.stepper->time(), trial.attempt.uzawa.contacts);
+  run.recorder->recordAirway(run.stepper->time(), trial.attempt.uzawa.contacts);
   nlohmann::json step, forces = nlohmann::json::object();
   for (const auto &[name, row] : reactions) forces[name] = std::vector<double>(row.begin(), row.begin() + 3);
   step["reactions"] = forces;
@@ -195,6 +227,11 @@ void Simulation::finish() {
   if (run.options.finalDisplacement) *run.options.finalDisplacement = uAll;
   nlohmann::json finals = nlohmann::json::object();
   for (const auto &[name, d] : run.recorder->pointDisplacements(uAll)) finals[name] = {d.x(), d.y(), d.z()};
+  if (run.pcrit) {
+    const double reached = run.stepper->time(), end = run.stepper->steps().endTime();
+    run.report->doc()["pcrit"] = run.pcrit->summary(reached, end);
+    if (run.talk) std::printf("%s\n", run.pcrit->line(reached, end).c_str());
+  }
   run.report->finish(assemblyCounters(*run.model), run.stepper->time(), finals);
 }
 
@@ -209,8 +246,11 @@ nlohmann::json Simulation::run() {
   run.report->recordingOutputFailure([&] {
     while (!onPath_ && !run.stepper->finished()) {
       if (run.report->stopRequested(run.stepper->stepNumber(), run.stepper->time())) break;
-      if (run.stepper->attemptStep(*this, run.model->assemblySeconds(), onRetry)) commit();
-      else if (!rollBack()) break;
+      if (run.stepper->attemptStep(*this, run.model->assemblySeconds(), onRetry)) {
+        const bool closed = run.pcrit && trialClosesAirway();
+        if (!closed) commit();
+        if (run.pcrit && !pcritGoesOn(closed)) break;
+      } else if (!rollBack()) break;
     }
     if (onPath_ || switchToPath_) followPath();
     finish();

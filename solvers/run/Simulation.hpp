@@ -49,6 +49,11 @@ private:
   // A dynamic run's energies at the committed state, to energy.csv and into the step's record.
   void recordEnergy(nlohmann::json *step);
   void followPath(); // by arc length from the committed state to the path's end
+  // The closing-pressure search (PcritSearch): whether the converged trial closes the airway (it
+  // is then not committed), and, after each step, whether the run goes on (false: Pcrit is
+  // bracketed, or the bisection's step fell below the minimum). Collective.
+  bool trialClosesAirway();
+  bool pcritGoesOn(bool closed);
   void finish();
   // The fields' time in results.xdmf on the path, where t may fall: the path's start plus the
   // nominal step per step along it (ParaView needs increasing times); load control: t itself.

@@ -9,9 +9,9 @@ namespace glossa::solvers {
 
 StepRecorder::StepRecorder(const assembly::ResultEvaluator &results, const std::filesystem::path &dir, bool fields,
                            bool writer, std::vector<std::string> resultantSets, std::vector<std::string> volumeSets,
-                           const OutputMark *resume, bool dynamic)
-    : evaluator_(results), root_(writer), fields_(fields), resultantSets_(std::move(resultantSets)),
-      volumeSets_(std::move(volumeSets)) {
+                           const OutputMark *resume, bool dynamic, std::shared_ptr<const model::AirwayOutput> airway)
+    : evaluator_(results), root_(writer), fields_(fields), airwayModel_(std::move(airway)),
+      resultantSets_(std::move(resultantSets)), volumeSets_(std::move(volumeSets)) {
   if (!root_) return;
   // A restart's files are kept and cut back to the checkpoint's lengths.
   auto resumeAt = [&](const char *file) -> std::optional<std::uintmax_t> {
@@ -33,6 +33,7 @@ StepRecorder::StepRecorder(const assembly::ResultEvaluator &results, const std::
         std::vector<std::string>{"area [m^2]", "normal_force [N]", "largest_penetration [m]", "active_points [-]",
                                  "largest_gap_error [m]", "tangential_force [N]"},
         resumeAt("contact.csv"));
+  if (airwayModel_) airway_ = std::make_unique<AirwayRecorder>(*airwayModel_, dir, resumeAt("airway.csv"));
   if (dynamic)
     energy_ = std::make_unique<io::KeyedCsvWriter>(
         dir / "energy.csv", "body",
@@ -80,6 +81,7 @@ OutputMark StepRecorder::mark() const {
   for (const auto *csv : {resultants_.get(), volumes_.get(), reactions_.get(), activation_.get(), contacts_.get(),
                           energy_.get()})
     if (csv) m.csvBytes[csv->file().filename().string()] = csv->bytes();
+  if (airway_) m.csvBytes["airway.csv"] = airway_->csv().bytes();
   if (results_) m.fieldSteps = results_->steps();
   return m;
 }
@@ -129,6 +131,10 @@ void StepRecorder::recordContacts(double time, const std::vector<contact::Contac
   contacts_->append(time, rows);
 }
 
+void StepRecorder::recordAirway(double time, const std::vector<contact::ContactMeasures> &contacts) {
+  if (root_ && airway_) airway_->record(time, airwayPositions_, contacts);
+}
+
 void StepRecorder::recordEnergy(double time, const StepEnergy &energy) {
   if (root_ && energy_) energy_->append(time, {{"all", {energy.kinetic, energy.stored, energy.total()}}});
 }
@@ -171,6 +177,7 @@ std::vector<std::pair<std::string, std::vector<double>>> StepRecorder::record(do
     traces_->appendPoints(time, points);
   }
   if (root_ && reactions_) reactions_->append(time, reactions);
+  if (root_ && airway_) airwayPositions_ = airwayModel_->positions(evaluator_.scene().mesh, uAll);
   // Collective, so every rank computes them; rank 0 writes.
   if (!resultantSets_.empty()) {
     const auto forces = evaluator_.faceSetResultants(u, time, lambda, resultantSets_);

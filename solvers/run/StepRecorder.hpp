@@ -23,6 +23,7 @@
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "io/output/TraceWriter.hpp"
+#include "solvers/run/AirwayRecorder.hpp"
 
 namespace glossa::solvers {
 
@@ -46,11 +47,13 @@ public:
   // `results`: what every step is recorded from (kept as a copy: it is a view of the assembler).
   // `writer`: this rank writes the files (rank 0 of the world; with control groups every group
   // records, collectively on its own communicator, but only one rank writes).
+  // `airway`: the deck's Airway section (input::buildAirway), recorded every step; null: none.
   // `resultantSets`, `volumeSets`: face sets (existing) whose resultant force and enclosed volume
   // are written every step to resultants.csv and volumes.csv.
   StepRecorder(const assembly::ResultEvaluator &results, const std::filesystem::path &dir, bool fields, bool writer,
                std::vector<std::string> resultantSets = {}, std::vector<std::string> volumeSets = {},
-               const OutputMark *resume = nullptr, bool dynamic = false);
+               const OutputMark *resume = nullptr, bool dynamic = false,
+               std::shared_ptr<const model::AirwayOutput> airway = nullptr);
   // A dynamic run's inertia (outliving this recorder), whose velocity and acceleration every
   // field step then carries.
   void showInertia(const Inertia *inertia) { inertia_ = inertia; }
@@ -85,6 +88,9 @@ public:
   // One row per contact in contact.csv: area, normal force, largest penetration, active points
   // and largest gap error of a converged step (the Uzawa loop's measures; writer rank only).
   void recordContacts(double time, const std::vector<contact::ContactMeasures> &contacts);
+  // The airway's lumen at the state the last record() was given, with the contacts' areas (a
+  // scene with an Airway section; writer rank only; doc/airway.md).
+  void recordAirway(double time, const std::vector<contact::ContactMeasures> &contacts);
 
 private:
   // The node fields of a step: the displacement (all nodes) and, with contacts, their pressure
@@ -96,6 +102,9 @@ private:
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;
   std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_, resultants_, volumes_, contacts_, energy_;
+  std::shared_ptr<const model::AirwayOutput> airwayModel_;
+  std::unique_ptr<AirwayRecorder> airway_;
+  std::vector<Eigen::Vector3d> airwayPositions_; // the tongue surface's vertices at the last record()
   const Inertia *inertia_ = nullptr;
   std::vector<std::string> resultantSets_, volumeSets_;
   std::map<std::string, std::vector<double>> fibreDirections_; // rank 0, per family

@@ -29,6 +29,7 @@ public:
   void accept();
   double stepSize() const { return dt_; }
   double nominalStep() const { return rule_.nominal; }
+  double minimumStep() const { return rule_.minimum; }
 
   // What a checkpoint keeps: the step size and the successes since the last change.
   struct State {

@@ -23,6 +23,7 @@
 #include "io/deck/DeckReference.hpp"
 #include "io/output/OutputError.hpp"
 #include "mesh/MeshError.hpp"
+#include "input/AirwayParameters.hpp"
 #include "input/SceneFactory.hpp"
 #include "solvers/parameters/ControlSection.hpp"
 #include "solvers/parameters/RunChecks.hpp"
@@ -270,6 +271,7 @@ int main(int argc, char **argv) {
       // checks across sections are run's own (a deck validate passes, run does not refuse).
       const auto config = glossa::solvers::parseRunConfiguration(deck);
       const auto scene = glossa::input::buildScene(deck, config.time.rampEndTime);
+      glossa::input::buildAirway(deck, scene);  // its checks; the run builds it again
       glossa::solvers::checkRunConfiguration(deck, config, scene, glossa::solvers::buildControl(deck, scene),
                                              {comm->getSize(), a.controlGroups, !a.restart.empty()});
       if (root)

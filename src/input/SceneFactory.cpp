@@ -21,6 +21,7 @@
 #include "mesh/ThickCylinderGenerator.hpp"
 #include "mesh/ThickSphereGenerator.hpp"
 #include "input/TimeFunctionParameters.hpp"
+#include "input/AirwayParameters.hpp"
 #include "input/ContactParameters.hpp"
 #include "input/DeckSets.hpp"
 #include "input/MaterialFactory.hpp"
@@ -362,6 +363,7 @@ void declareSceneParameters(ParameterList &schema) {
   contacts.set(io::kAnySublist, contactParameters(),
                "one face set against one rigid obstacle, another face set or itself");
   schema.set("Contact", contacts, "contact with rigid obstacles, one sublist each (doc/contact.md)");
+  schema.set("Airway", airwayParameters(), "the airway's lumen between the tongue and a rigid wall (doc/airway.md)");
   ParameterList points;
   points.set(io::kAnySublist, namedPointParameters(), "one named point");
   schema.set("Named points", points,
