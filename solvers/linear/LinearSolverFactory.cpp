@@ -221,6 +221,9 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &
     auto &mumps = p->sublist("Preconditioner Types").sublist("MUMPS");
     mumps.set("symmetric", c.symmetric);
     mumps.set("reuse iterations", s.directReuseIterations);
+    mumps.set("reuse scope", std::string(s.directReuseScope == ReuseScope::run    ? "run"
+                                         : s.directReuseScope == ReuseScope::step ? "step"
+                                                                                  : "Newton solve"));
     mumps.set("gathered", chooseLinearSolve(s, {c.globalRows, c.ranks}).gathered);
   } else if (s.preconditioner == Preconditioner::mueLu) {
     p->set("Preconditioner Type", "MueLu");

@@ -1,5 +1,7 @@
 #include "solvers/linear/MumpsPreconditioner.hpp"
 
+#include "assembly/TimeSplit.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -11,6 +13,7 @@
 #include <mpi.h>
 
 #include <Teuchos_DefaultMpiComm.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraLinearOp.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -18,7 +21,7 @@
 namespace glossa::solvers {
 
 namespace {
-std::atomic<int> newtonSolveEpoch{0};
+std::atomic<int> newtonSolveEpoch{0}, stepEpoch{0};
 
 MPI_Comm rawComm(const Teuchos::Comm<int> &comm) {
   const auto *mpi = dynamic_cast<const Teuchos::MpiComm<int> *>(&comm);
@@ -87,12 +90,14 @@ public:
       id_.irn_loc = mumpsRows().data();
       id_.jcn_loc = mumpsCols().data();
       id_.a_loc = mumpsValues().data();
+      const assembly::PartTimer timer(assembly::TimedPart::analysis);
       call(1);
       check("analysis");
     }
     for (std::size_t k = 0; k < take_.size(); ++k) values_[k] = local.values(take_[k]);
     if (gathered_) gatherValues();
     id_.a_loc = mumpsValues().data();
+    const assembly::PartTimer timer(assembly::TimedPart::factorisation);
     for (int attempt = 0;; ++attempt) {
       call(2);
       // -8, -9: the working space estimated by the analysis was too small (pivoting): more room.
@@ -105,23 +110,29 @@ public:
     check("factorisation");
     factoredMatrix_ = &A;
     factoredEpoch_ = newtonSolveEpoch;
+    factoredStep_ = stepEpoch;
     negativePivots_ = symmetric_ ? id_.infog[11] : 0; // INFOG(12): negative pivots of LDL^T
     appliesAtInit_ = applies_;
   }
 
-  // With reuse k > 0: the factors of an earlier tangent of this Newton solve still serve A when
-  // the last solve with them took at most k Krylov iterations (one preconditioner application each)
-  // and they had no negative pivot. An indefinite stale factor is no preconditioner for CG: at
-  // full activation CG met negative curvature through one and every step was cut back.
-  bool stillServes(const assembly::CrsMatrix &A, int k) {
+  // With reuse k > 0: the factors of an earlier tangent of this Newton solve (of this step, of the
+  // run: `scope`) still serve A when the last solve with them took at most k Krylov iterations (one
+  // preconditioner application each) and they had no negative pivot. An indefinite stale factor is
+  // no preconditioner for CG: at full activation CG met negative curvature through one and every
+  // step was cut back.
+  bool stillServes(const assembly::CrsMatrix &A, int k, const std::string &scope) {
     const long long lastSolve = applies_ - appliesAtInit_;
     appliesAtInit_ = applies_;
-    return k > 0 && factoredMatrix_ == &A && factoredEpoch_ == newtonSolveEpoch && lastSolve <= k &&
-           negativePivots_ == 0 && static_cast<long long>(A.getGlobalNumRows()) == n_;
+    const bool sameScope = scope == "run"    ? true
+                           : scope == "step" ? factoredStep_ == stepEpoch
+                                             : factoredEpoch_ == newtonSolveEpoch;
+    return k > 0 && factoredMatrix_ == &A && sameScope && lastSolve <= k && negativePivots_ == 0 &&
+           static_cast<long long>(A.getGlobalNumRows()) == n_;
   }
 
   // x = A^-1 b (or A^-T b), the columns of b and x in the distribution of `map`.
   void solve(const assembly::MultiVector &b, assembly::MultiVector &x, bool transpose) {
+    const assembly::PartTimer timer(assembly::TimedPart::directSolve);
     const auto map = b.getMap();
     if (rootMap_.is_null() || !rootMap_->isSameAs(*rootMapFor(map))) {
       rootMap_ = rootMapFor(map);
@@ -252,7 +263,7 @@ private:
   Teuchos::RCP<const assembly::Map> rootMap_;
   Teuchos::RCP<assembly::Import> toRoot_, fromRoot_;
   const assembly::CrsMatrix *factoredMatrix_ = nullptr;
-  int factoredEpoch_ = -1;
+  int factoredEpoch_ = -1, factoredStep_ = -1;
   int negativePivots_ = 0;
   long long applies_ = 0, appliesAtInit_ = 0;
 };
@@ -285,6 +296,11 @@ MumpsPreconditionerFactory::~MumpsPreconditionerFactory() = default;
 
 void MumpsPreconditionerFactory::beginNewtonSolve() { ++newtonSolveEpoch; }
 
+void MumpsPreconditionerFactory::beginStep() {
+  ++newtonSolveEpoch;
+  ++stepEpoch;
+}
+
 bool MumpsPreconditionerFactory::isCompatible(const Thyra::LinearOpSourceBase<double> &fwdOpSrc) const {
   using ThyraOp = Thyra::TpetraLinearOp<double, assembly::LO, assembly::GO, assembly::Node>;
   const auto op = Teuchos::rcp_dynamic_cast<const ThyraOp>(fwdOpSrc.getOp());
@@ -305,9 +321,10 @@ void MumpsPreconditionerFactory::initializePrec(const Teuchos::RCP<const Thyra::
   TEUCHOS_TEST_FOR_EXCEPTION(defaultPrec == nullptr, std::logic_error, "MUMPS: not a DefaultPreconditioner");
   const bool symmetric = params_.is_null() || params_->get<bool>("symmetric", true);
   const int reuse = params_.is_null() ? 0 : params_->get<int>("reuse iterations", 0);
+  const std::string scope = params_.is_null() ? std::string("Newton solve") : params_->get<std::string>("reuse scope");
   const bool gathered = !params_.is_null() && params_->get<bool>("gathered", false);
   if (!factorization_) factorization_ = std::make_shared<MumpsFactorization>(A->getComm(), symmetric, gathered);
-  if (!factorization_->stillServes(*A, reuse)) factorization_->factor(*A);
+  if (!factorization_->stillServes(*A, reuse, scope)) factorization_->factor(*A);
   auto inverse = Teuchos::rcp(new MumpsInverse(factorization_, A->getDomainMap(), A->getRangeMap()));
   const Teuchos::RCP<Thyra::LinearOpBase<double>> inverseOp =
       Thyra::tpetraLinearOp<double, assembly::LO, assembly::GO, assembly::Node>(
@@ -343,6 +360,9 @@ Teuchos::RCP<const Teuchos::ParameterList> MumpsPreconditionerFactory::getValidP
     p->set("reuse iterations", 0,
            "0: refactor for every tangent; k > 0: keep the factors within a Newton solve while a solve "
            "takes at most k Krylov iterations");
+    p->set("reuse scope", std::string("Newton solve"),
+           "how long kept factors live: Newton solve, step (beginStep) or run",
+           Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("Newton solve", "step", "run"))));
     p->set("gathered", false,
            "on several ranks: factor on rank 0 alone, the entries gathered there (the same answer bit for "
            "bit run after run); otherwise every rank takes part");

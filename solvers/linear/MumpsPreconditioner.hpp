@@ -19,7 +19,10 @@
 // solve (a stale factor of a nearby tangent is a very good preconditioner): it is refactored at
 // the first linear solve of every Newton solve (beginNewtonSolve) and whenever the previous
 // solve took more than k Krylov iterations. So the sequence of factorisations is a function of
-// the Newton solve alone, and a restarted run repeats it.
+// the Newton solve alone, and a restarted run repeats it. "reuse scope" = step keeps it across the
+// Newton solves (Uzawa iterations) of a step, refactored when a step begins (beginStep), so a
+// restarted run still repeats it; run keeps it across steps (a restart then differs within the
+// solver tolerances).
 
 #include <memory>
 
@@ -50,8 +53,12 @@ public:
   Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override { return params_; }
   Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override;
 
-  // A Newton solve begins: with reuse, the next preconditioner is a fresh factorisation.
+  // A Newton solve begins: with reuse within a Newton solve, the next preconditioner is a fresh
+  // factorisation.
   static void beginNewtonSolve();
+  // A step (a candidate's solve, a point of a path) begins: the next preconditioner is a fresh
+  // factorisation, unless factors are kept for the run.
+  static void beginStep();
 
 private:
   Teuchos::RCP<Teuchos::ParameterList> params_;

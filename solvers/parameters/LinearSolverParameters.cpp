@@ -32,6 +32,13 @@ Teuchos::ParameterList linearSolverParameters() {
                  "iteration of each Newton solve and keeps the factors as the Krylov method's preconditioner "
                  "while a solve takes at most k iterations (measured: doc/incompressibility.md)",
                  io::Range::atLeast(0));
+  io::declareString(p, "direct reuse scope", "step",
+                    "MUMPS, with 'direct reuse iterations' > 0: how long kept factors live: Newton solve "
+                    "(refactored at the first iteration of each Newton solve), step (the default: kept across "
+                    "the Uzawa iterations of a step, refactored when a step, a retry or a controller's "
+                    "candidate starts; restarts stay deterministic; measured: doc/incompressibility.md) or run (kept across steps while they serve; a "
+                    "restarted run's iterates differ within the solver tolerances)",
+                    {"Newton solve", "step", "run"});
   io::declareString(p, "Krylov method", "auto",
                     "auto: CG while the tangent is symmetric, GMRES otherwise", {"auto", "cg", "gmres"});
   io::declareString(p, "preconditioner", "MueLu",
@@ -106,6 +113,12 @@ Teuchos::ParameterList linearSolverParameters() {
   return p;
 }
 
+namespace {
+ReuseScope reuseScopeOf(const std::string &word) {
+  return word == "run" ? ReuseScope::run : word == "step" ? ReuseScope::step : ReuseScope::newtonSolve;
+}
+} // namespace
+
 LinearSolverParameters parseLinearSolverParameters(const Teuchos::ParameterList &s) {
   LinearSolverParameters p;
   const std::string type = s.get<std::string>("type");
@@ -118,6 +131,7 @@ LinearSolverParameters parseLinearSolverParameters(const Teuchos::ParameterList 
                          : distribution == "distributed" ? DirectDistribution::distributed
                                                          : DirectDistribution::automatic;
   p.directReuseIterations = s.get<int>("direct reuse iterations");
+  p.directReuseScope = reuseScopeOf(s.get<std::string>("direct reuse scope"));
   const std::string krylov = s.get<std::string>("Krylov method");
   p.krylovMethod = krylov == "cg" ? KrylovMethod::cg : krylov == "gmres" ? KrylovMethod::gmres : KrylovMethod::automatic;
   p.preconditionerName = s.get<std::string>("preconditioner");
@@ -144,8 +158,7 @@ LinearSolverParameters parseLinearSolverParameters(const Teuchos::ParameterList 
   p.chebyshevEigenvalueIterations = s.get<int>("Chebyshev eigenvalue iterations");
   p.chebyshevEigenvalueRatio = s.get<double>("Chebyshev eigenvalue ratio");
   p.mueLuReuse = s.get<std::string>("MueLu reuse");
-  const std::string scope = s.get<std::string>("MueLu reuse scope");
-  p.reuseScope = scope == "run" ? ReuseScope::run : scope == "step" ? ReuseScope::step : ReuseScope::newtonSolve;
+  p.reuseScope = reuseScopeOf(s.get<std::string>("MueLu reuse scope"));
   p.coarseSize = s.get<int>("coarse size");
   const std::string ifpack2 = s.get<std::string>("Ifpack2 type");
   p.ifpack2Type = ifpack2 == "ILUT" ? Ifpack2Type::ilut : ifpack2 == "Chebyshev" ? Ifpack2Type::chebyshev : Ifpack2Type::symmetricGaussSeidel;

@@ -20,7 +20,8 @@ enum class VertexPatchLevels { finest, all };
 enum class FroschCoarseSpace { gdsw, rgdsw };
 enum class Ifpack2Type { symmetricGaussSeidel, chebyshev, ilut };
 enum class EigenvalueMethod { lanczos, power };
-// How long a MueLu hierarchy reused between Newton iterations lives before it is rebuilt.
+// How long a MueLu hierarchy, or MUMPS factors, reused between Newton iterations live before they
+// are rebuilt.
 enum class ReuseScope { newtonSolve, step, run };
 
 // The defaults are the declared ones (linearSolverParameters()).
@@ -30,6 +31,7 @@ struct LinearSolverParameters {
   int directUpTo = 8000;
   DirectDistribution directDistribution = DirectDistribution::automatic;
   int directReuseIterations = 10;
+  ReuseScope directReuseScope = ReuseScope::step;
   KrylovMethod krylovMethod = KrylovMethod::automatic;
   Preconditioner preconditioner = Preconditioner::mueLu;
   FroschCoarseSpace froschCoarseSpace = FroschCoarseSpace::gdsw;

@@ -8,6 +8,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 
 #include "assembly/ModelEvaluator.hpp"
+#include "assembly/TimeSplit.hpp"
 #include "io/output/OutputError.hpp"
 #include "io/output/SummaryWriter.hpp"
 #include "solvers/run/StopSignals.hpp"
@@ -69,7 +70,13 @@ void prepareOutputDirectory(const std::filesystem::path &dir) {
 RunReport::RunReport(Teuchos::RCP<const Teuchos::Comm<int>> comm, bool root, bool talk)
     : comm_(std::move(comm)), root_(root), talk_(talk), start_(Clock::now()), stepsStart_(start_),
       setupAtStart_(timerSeconds("NOX Total Preconditioner Construction")),
-      solveAtStart_(timerSeconds("NOX Total Linear Solve")) {}
+      solveAtStart_(timerSeconds("NOX Total Linear Solve")) {
+  for (std::size_t k = 0; k < partSecondsAtStart_.size(); ++k) {
+    const auto timer = assembly::partTimer(static_cast<assembly::TimedPart>(k));
+    partSecondsAtStart_[k] = timer->totalElapsedTime();
+    partCallsAtStart_[k] = timer->numCalls();
+  }
+}
 
 RunReport::~RunReport() {
   if (root_) onStopSignal({});
@@ -97,6 +104,12 @@ void RunReport::write(const AssemblyCounters &counters) {
   // NOX's own timers split the linear solves into preconditioner set-up and Krylov iterations.
   doc_["preconditioner_setup_seconds"] = timerSeconds("NOX Total Preconditioner Construction") - setupAtStart_;
   doc_["linear_solve_seconds"] = timerSeconds("NOX Total Linear Solve") - solveAtStart_;
+  // The parts of a Newton iteration outside the assembly, on this rank (bench/newton_profile.py).
+  for (std::size_t k = 0; k < partSecondsAtStart_.size(); ++k) {
+    const auto timer = assembly::partTimer(static_cast<assembly::TimedPart>(k));
+    doc_["time_split"][assembly::timedPartNames()[k]] = {
+        {"seconds", timer->totalElapsedTime() - partSecondsAtStart_[k]}, {"calls", timer->numCalls() - partCallsAtStart_[k]}};
+  }
   double peak = peakMemoryMegabytes(), peakMax = 0.0;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, peak, Teuchos::outArg(peakMax));
   doc_["peak_memory_mb_per_rank"] = peakMax;

@@ -4,6 +4,7 @@
 // (SIGTERM, SIGINT), on which summary.json says at once why the run ends and the run stops at
 // the next step boundary on every rank.
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -102,6 +103,8 @@ private:
   Clock::time_point start_, stepsStart_;
   double stepsStartTime_ = 0.0;         // the simulated time when the steps began (a restart's)
   double setupAtStart_, solveAtStart_; // NOX's timers when the run began
+  std::array<double, 7> partSecondsAtStart_{}; // the time split's timers (assembly/TimeSplit.hpp) then
+  std::array<int, 7> partCallsAtStart_{};
   std::filesystem::path dir_;
   nlohmann::json doc_;
   std::unique_ptr<io::SummaryWriter> summary_;

@@ -6,6 +6,7 @@
 #include "assembly/ContactResponse.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/ResultEvaluator.hpp"
+#include "assembly/TimeSplit.hpp"
 #include "model/Scene.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 #include "solvers/run/PathFollowing.hpp"
@@ -70,6 +71,7 @@ void Simulation::commit() {
   // The muscle history is committed after the output, whose stresses are those of the converged
   // state: this step's activation with the committed lambda_c it was solved with.
   auto output = run.report->holdOutput();
+  const assembly::PartTimer outputTimer(assembly::TimedPart::stepOutput);
   record(trial);
   if (run.controlled) run.controlled->committed(trial);
   run.history->commit();

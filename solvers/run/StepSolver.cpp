@@ -9,6 +9,7 @@
 #include "model/Scene.hpp"
 #include "model/SymmetryPlanes.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
+#include "solvers/linear/MumpsPreconditioner.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
 
 namespace glossa::solvers {
@@ -40,6 +41,7 @@ StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool qui
                               const std::vector<double> &inputs) const {
   StepAttempt out;
   if (keptScope_ == ReuseScope::step) parts_.newton.forgetLinearSolver();
+  MumpsPreconditionerFactory::beginStep(); // fresh factors for each step, retry and candidate
   parts_.assembler.applyDirichlet(state.u, time);
   parts_.model.beginStep(time, dt, inputs); // trial activation; lambda_c stays at its committed value
   parts_.model.setMultipliers(state.lambda);

@@ -36,7 +36,7 @@ public:
   // A fresh MUMPS factor for every bordered solve: a factor kept from the last iterate (Linear
   // solver/direct reuse iterations) made the sphere's path 9x slower (141 against 15 s), its
   // Krylov solves stalling as the tangent nears singularity at the load maximum.
-  void runPreIterate(const NOX::Solver::Generic &) override { MumpsPreconditionerFactory::beginNewtonSolve(); }
+  void runPreIterate(const NOX::Solver::Generic &) override { MumpsPreconditionerFactory::beginStep(); }
   void runPostIterate(const NOX::Solver::Generic &solver) override {
     const auto &x = dynamic_cast<const LOCA::MultiContinuation::ExtendedVector &>(solver.getSolutionGroup().getX());
     model_.advanceIterates(*displacementOf(*x.getXVec()));
@@ -89,7 +89,7 @@ public:
     // A failed corrector left its iterates in the three-field bases: back to the last point.
     if (status == LOCA::Abstract::Iterator::Unsuccessful && !last_.is_null()) model_.resetIterates(*last_);
     observer_.newton = 0;
-    MumpsPreconditionerFactory::beginNewtonSolve(); // for the predictor's solve
+    MumpsPreconditionerFactory::beginStep(); // for the predictor's solve
   }
   int steps() const { return std::max(steps_, 0); }
   bool stop = false;      // the caller ended the path, or it took its steps

@@ -1,5 +1,7 @@
 #include "assembly/ModelEvaluator.hpp"
 
+#include "assembly/TimeSplit.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -170,10 +172,12 @@ void ModelEvaluator::resetIterates(const Vector &u) {
   // With pressures as unknowns the kernel's volumetric energy is zero and the element pressure is
   // the multiplier itself: the three-field iterates would carry nothing.
   mixed_ = assembler_->scene().formulation == model::ElementFormulation::Q1P0 && pressure_.is_null();
+  const PartTimer timer(TimedPart::threeFieldBases);
   if (mixed_) bases_ = assembler_->mixedBases(u, lambda_, nullptr);
 }
 
 void ModelEvaluator::advanceIterates(const Vector &u) {
+  const PartTimer timer(TimedPart::threeFieldBases);
   if (mixed_) bases_ = assembler_->mixedBases(u, lambda_, &bases_);
   if (!accepted_.is_null() && accepted_->getMap()->isSameAs(*u.getMap())) accepted_->assign(u);
 }

@@ -4,6 +4,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "assembly/TimeSplit.hpp"
 #include "control/MusclePruning.hpp"
 #include "fem/HexShape.hpp"
 #include "model/TissuePointLaw.hpp"
@@ -11,6 +12,7 @@
 namespace glossa::assembly {
 
 MuscleFields updateMuscleHistory(const ResultEvaluator &results, const Vector &u, model::MuscleHistory &history) {
+  const PartTimer timer(TimedPart::muscleHistory);
   const model::Scene &scene = results.scene();
   const DistributedLayout &layout = results.assembler().layout();
   const auto &localElements = layout.localElements;

@@ -95,6 +95,34 @@ TEST(SolverChoices, AReusedFactorisationPreconditionsLaterNewtonIterations) {
   EXPECT_NEAR(topCentre(s), kDealII4, 1e-5 * std::abs(kDealII4));
 }
 
+// direct reuse scope = step: the factors of a step's first tangent also precondition the Newton
+// solves of its later Uzawa iterations (the multipliers change the tangent little), so a step
+// factors fewer tangents than with a fresh factorisation per Newton solve, still at least one (each
+// step starts afresh, which keeps restarts deterministic); the answer is the fresh factors' to the
+// solver's tolerances.
+TEST(SolverChoices, FactorsKeptForAStepServeItsUzawaIterations) {
+  auto run = [](const char *scope) {
+    return test::runDeck(test::inputPath("verification/step44_block.xml"),
+                         {"Mesh/Box/cells=4,4,4", "Linear solver/type=direct", "Incompressibility/method=augmented Lagrangian",
+                          std::string("Linear solver/direct reuse scope=") + scope},
+                         test::scratchDirectory(std::string("direct_scope_") + (scope[0] == 'N' ? "newton" : scope)));
+  };
+  const auto perSolve = run("Newton solve"), perStep = run("step");
+  ASSERT_TRUE(perSolve.at("converged").get<bool>());
+  ASSERT_TRUE(perStep.at("converged").get<bool>());
+  auto factorisations = [](const nlohmann::json &s) {
+    return s.at("time_split").at("direct_factorisation").at("calls").get<int>();
+  };
+  int newtonSolves = 0;
+  for (const auto &step : perSolve.at("steps")) newtonSolves += static_cast<int>(step.at("newton_solves").size());
+  const int steps = static_cast<int>(perStep.at("steps").size());
+  ASSERT_GT(newtonSolves, steps); // Uzawa iterations: more than one Newton solve per step
+  EXPECT_GE(factorisations(perSolve), newtonSolves);
+  EXPECT_GE(factorisations(perStep), steps);
+  EXPECT_LT(factorisations(perStep), factorisations(perSolve));
+  EXPECT_NEAR(topCentre(perStep), topCentre(perSolve), 1e-8 * std::abs(topCentre(perSolve)));
+}
+
 // A fixed component holds its prescribed value exactly, whatever the linear solver: its Newton
 // update solves a diagonal row with a zero right-hand side, which CG with MueLu meets only to its
 // tolerance (before: top_centre, on the x = 0 and z = 0 symmetry planes, moved by ux = -4.9e-12,
