@@ -32,12 +32,13 @@ Teuchos::ParameterList linearSolverParameters() {
                  "iteration of each Newton solve and keeps the factors as the Krylov method's preconditioner "
                  "while a solve takes at most k iterations (measured: doc/incompressibility.md)",
                  io::Range::atLeast(0));
-  io::declareString(p, "direct reuse scope", "step",
+  io::declareString(p, "direct reuse scope", "Newton solve",
                     "MUMPS, with 'direct reuse iterations' > 0: how long kept factors live: Newton solve "
-                    "(refactored at the first iteration of each Newton solve), step (the default: kept across "
+                    "(the default: refactored at the first iteration of each Newton solve), step (kept across "
                     "the Uzawa iterations of a step, refactored when a step, a retry or a controller's "
-                    "candidate starts; restarts stay deterministic; measured: doc/incompressibility.md) or run (kept across steps while they serve; a "
-                    "restarted run's iterates differ within the solver tolerances)",
+                    "candidate starts; restarts stay deterministic; faster, but a step's later Newton solves "
+                    "lose their quadratic convergence; measured: doc/incompressibility.md) or run (kept across "
+                    "steps while they serve; a restarted run's iterates differ within the solver tolerances)",
                     {"Newton solve", "step", "run"});
   io::declareString(p, "Krylov method", "auto",
                     "auto: CG while the tangent is symmetric, GMRES otherwise", {"auto", "cg", "gmres"});
