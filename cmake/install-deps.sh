@@ -3,7 +3,7 @@
 # downloaded, ever). Safe to run again: it does nothing when everything is there.
 set -euo pipefail
 packages=(
-  build-essential cmake ccache
+  build-essential cmake ccache ninja-build              # Ninja: the CI build's generator (cmake/test.sh)
   trilinos-all-dev libscotch-dev libptscotch-dev   # Trilinos' link lists name the scotch libraries
   libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
   libeigen3-dev libgtest-dev nlohmann-json3-dev hdf5-tools

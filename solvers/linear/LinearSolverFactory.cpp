@@ -3,15 +3,13 @@
 #include <algorithm>
 
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
-#include <Stratimikos_FROSch_def.hpp>
-#include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
-#include <Thyra_Ifpack2PreconditionerFactory.hpp>
 
 #include "io/deck/DeckError.hpp"
 #include "solvers/linear/CollectivePreconditioner.hpp"
 #include "solvers/linear/LinearSolverChoice.hpp"
 #include "solvers/linear/MumpsPreconditioner.hpp"
+#include "solvers/linear/PreconditionerRegistration.hpp"
 
 namespace glossa::solvers {
 
@@ -242,11 +240,10 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &
 
 namespace {
 void registerPreconditioners(Stratimikos::DefaultLinearSolverBuilder &builder) {
-  Stratimikos::enableMueLu<assembly::LO, assembly::GO, assembly::Node>(builder);
-  Stratimikos::enableFROSch<assembly::LO, assembly::GO, assembly::Node>(builder);
+  registerMueLu(builder);
+  registerFrosch(builder);
+  registerIfpack2(builder);
   using Base = Thyra::PreconditionerFactoryBase<double>;
-  using Impl = Thyra::Ifpack2PreconditionerFactory<assembly::CrsMatrix>;
-  builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, Impl>(), "Ifpack2");
   builder.setPreconditioningStrategyFactory(Teuchos::abstractFactoryStd<Base, MumpsPreconditionerFactory>(), "MUMPS");
 }
 } // namespace

@@ -3,8 +3,8 @@
 // through Stratimikos: Belos CG (symmetric tangent) or GMRES, preconditioned by MueLu smoothed
 // aggregation (rigid-body modes and coordinates supplied), FROSch two-level Schwarz, Ifpack2 alone,
 // or none; or a direct solve: MUMPS as an exact preconditioner (solvers/linear/MumpsPreconditioner), or
-// Amesos2 KLU2 for comparison. This unit holds the expensive template
-// instantiations (Stratimikos::enableMueLu and enableFROSch, Ifpack2 registration): edit it rarely.
+// Amesos2 KLU2 for comparison. The preconditioner families' expensive template instantiations are
+// each in a unit of their own (solvers/linear/PreconditionerRegistration.hpp).
 
 #include <optional>
 #include <string>
