@@ -8,6 +8,7 @@
 
 #include "contact/SurfaceFile.hpp"
 #include "input/DeckSets.hpp"
+#include "input/DeckVector.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 
@@ -16,8 +17,6 @@ namespace glossa::input {
 namespace {
 using Teuchos::Array;
 using Teuchos::ParameterList;
-
-Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 
 Array<double> unitY() {
   Array<double> y(3, 0.0);

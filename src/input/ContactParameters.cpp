@@ -18,6 +18,7 @@
 #include "input/DeckSets.hpp"
 #include "input/TimeFunctionParameters.hpp"
 #include "input/UnreadParameters.hpp"
+#include "input/DeckVector.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 
@@ -26,8 +27,6 @@ namespace glossa::input {
 namespace {
 using Teuchos::Array;
 using Teuchos::ParameterList;
-
-Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 
 Array<double> unitZ() {
   Array<double> z(3, 0.0);

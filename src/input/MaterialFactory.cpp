@@ -6,6 +6,7 @@
 #include <map>
 #include <tuple>
 
+#include "input/DeckVector.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "materials/ContractileCurveSets.hpp"
@@ -85,8 +86,6 @@ ParameterList muscleGroupParameters() {
   g.set("neural input", timeFunctionParameters("constant"), "the neural input's time course");
   return g;
 }
-
-Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 
 // One family as the deck gives it: where it is, which way it points, which group drives it.
 struct FamilySpec {

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "input/TimeFunctionParameters.hpp"
+#include "input/DeckVector.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/ParameterSpec.hpp"
 
@@ -34,8 +35,6 @@ ParameterList pointParameters() {
 }
 
 namespace {
-
-Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 
 // The table path's rows: 9 values of F per time, times strictly increasing, det F > 0.
 void readTable(const io::Deck &deck, const Array<double> &t, const Array<double> &F, PointParameters &point) {

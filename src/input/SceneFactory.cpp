@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "input/DeckVector.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/SpaceTimeExpression.hpp"
 #include "io/deck/ParameterSpec.hpp"
@@ -35,8 +36,6 @@ using namespace glossa::model;
 namespace {
 using Teuchos::Array;
 using Teuchos::ParameterList;
-
-Eigen::Vector3d vec3(const Array<double> &a) { return {a[0], a[1], a[2]}; }
 
 ParameterList meshParameters() {
   ParameterList p;
