@@ -64,8 +64,11 @@ Teuchos::ParameterList timeParameters() {
   io::declareString(p, "integrator", "generalized-alpha",
                     "dynamic: generalized-alpha (second order, its dissipation set by the spectral radius) or "
                     "backward Euler (first order, L-stable: a resolved mode loses about pi w dt of its log-amplitude "
-                    "a period; for stiff cases where the motion, not its oscillation, matters; doc/dynamics.md)",
-                    {"generalized-alpha", "backward Euler"});
+                    "a period; for stiff cases where the motion, not its oscillation, matters) or energy conserving "
+                    "(the trapezoidal rule with each element's force a discrete gradient of its stored energy: kinetic "
+                    "plus stored energy conserved to the solver's tolerance, for nearly incompressible vibration "
+                    "where the trapezoidal rule gains energy; doc/dynamics.md)",
+                    {"generalized-alpha", "backward Euler", "energy conserving"});
   io::declareDouble(p, "spectral radius", 1.0, "",
                     "dynamic: generalized-alpha's spectral radius at infinite frequency rho_inf; 1 is Newmark's "
                     "trapezoidal rule (no numerical dissipation, energy conserved in linear problems), smaller "
@@ -103,8 +106,10 @@ TimeParameters parseTimeParameters(const Teuchos::ParameterList &s) {
   t.stopAtDisplacement = s.get<double>("stop at displacement");
   DynamicsParameters &d = t.dynamics;
   d.analysis = s.get<std::string>("analysis") == "dynamic" ? Analysis::dynamic : Analysis::quasiStatic;
-  d.integrator = s.get<std::string>("integrator") == "backward Euler" ? Integrator::backwardEuler
-                                                                     : Integrator::generalizedAlpha;
+  const std::string integrator = s.get<std::string>("integrator");
+  d.integrator = integrator == "backward Euler"      ? Integrator::backwardEuler
+                 : integrator == "energy conserving" ? Integrator::energyConserving
+                                                     : Integrator::generalizedAlpha;
   d.spectralRadius = s.get<double>("spectral radius");
   d.mass = s.get<std::string>("mass matrix") == "lumped" ? fem::MassLumping::lumped : fem::MassLumping::consistent;
   d.rayleighMass = s.get<double>("Rayleigh mass coefficient");
@@ -125,9 +130,12 @@ void checkDynamicsParameters(const io::Deck &deck, const DynamicsParameters &dyn
                             "static; set Time/analysis = dynamic or remove it");
     return;
   }
-  if (dynamics.integrator == Integrator::backwardEuler && deck.given({"Time", "spectral radius"}))
+  if (dynamics.integrator != Integrator::generalizedAlpha && deck.given({"Time", "spectral radius"}))
     throw io::DeckError(deck.where({"Time", "spectral radius"}) + ": only generalized-alpha reads it, and "
-                        "Time/integrator is backward Euler; remove it or set Time/integrator = generalized-alpha");
+                        "Time/integrator is " +
+                        (dynamics.integrator == Integrator::backwardEuler ? std::string("backward Euler")
+                                                                          : std::string("energy conserving")) +
+                        "; remove it or set Time/integrator = generalized-alpha");
   const char *const names[3] = {"initial vx", "initial vy", "initial vz"};
   for (int c = 0; c < 3; ++c) {
     try {

@@ -22,12 +22,13 @@ enum class AtLimitPoint { stop, ignore, follow };
 enum class PathFollowing { loadControl, arcLength };
 
 enum class Analysis { quasiStatic, dynamic };
-enum class Integrator { generalizedAlpha, backwardEuler };
+enum class Integrator { generalizedAlpha, backwardEuler, energyConserving };
 
 // Time/analysis = dynamic: M a + C v + f_int(u) = f_ext by generalized-alpha (Chung & Hulbert
 // 1993) with the high-frequency spectral radius rho_inf, Rayleigh damping C = alpha M + beta K_0
 // (K_0 the tangent at the initial state) and an initial velocity field; or by backward Euler
-// (first order, strongly dissipative, for stiff cases).
+// (first order, strongly dissipative, for stiff cases); or by the energy-conserving step (the
+// trapezoidal rule with each element's force a discrete gradient of its stored energy).
 struct DynamicsParameters {
   Analysis analysis = Analysis::quasiStatic;
   Integrator integrator = Integrator::generalizedAlpha;

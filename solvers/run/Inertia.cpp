@@ -93,7 +93,8 @@ void initialVelocity(const assembly::Assembler &assembler, const DynamicsParamet
 } // namespace
 
 Inertia::Inertia(const assembly::Assembler &assembler, const DynamicsParameters &parameters, const StepState &initial)
-    : assembler_(assembler), parameters_(parameters), scheme_(parameters.spectralRadius) {
+    : assembler_(assembler), parameters_(parameters),
+      scheme_(parameters.integrator == Integrator::energyConserving ? 1.0 : parameters.spectralRadius) {
   using Constrained = assembly::Assembler::ConstrainedDofs;
   mass_ = assembler_.createMatrix();
   massTangent_ = assembler_.createMatrix();
@@ -121,6 +122,26 @@ Inertia::Inertia(const assembly::Assembler &assembler, const DynamicsParameters 
   constrained.update(-1.0, free, 1.0);
   rhs.scale(-1.0);
   solveMass(*massTangent_, constrained, rhs, *a_);
+  if (parameters_.integrator == Integrator::energyConserving) {
+    // Every condensed Q1-P0 element without muscle fibres (whose active stress stores no energy).
+    const model::Scene &scene = assembler_.scene();
+    const auto &elements = assembler_.layout().localElements;
+    std::vector<char> corrected(elements.size(), 0);
+    for (std::size_t i = 0; i < elements.size(); ++i)
+      corrected[i] = scene.formulation == model::ElementFormulation::Q1P0 &&
+                     !(scene.muscles.hasFibres() && scene.muscles.elementRegion[elements[i]] >= 0);
+    energyConserving_ = std::make_unique<EnergyConservingForces>(std::move(corrected), 1.0 / (1.0 - scheme_.alphaF()));
+    recordElements(initial);
+  }
+}
+
+void Inertia::recordElements(const StepState &state) {
+  if (!energyConserving_) return;
+  assembler_.forEachElement(
+      state.u, state.lambda, [&](std::size_t i) { return energyConserving_->corrects(i); },
+      [&](std::size_t i, const fem::NodeMatrix &ue, const fem::Q1P0Result &r, const materials::VolumetricEnergy &law) {
+        energyConserving_->record(i, ue, state.lambda[i], r, law);
+      });
 }
 
 Inertia::~Inertia() = default;
@@ -184,6 +205,7 @@ void Inertia::commit(const StepState &state, double time) {
   u_->assign(state.u);
   v_->assign(v);
   a_->assign(a);
+  recordElements(state);
 }
 
 double Inertia::kineticEnergy() const {
@@ -196,12 +218,13 @@ void Inertia::save(nlohmann::json &part) const {
   part["inertia"] = {{"u", ownedValues(*u_)}, {"v", ownedValues(*v_)}, {"a", ownedValues(*a_)}, {"g", ownedValues(*g_)}};
 }
 
-void Inertia::restore(const nlohmann::json &part) {
+void Inertia::restore(const nlohmann::json &part, const StepState &committed) {
   const nlohmann::json &j = part.at("inertia");
   assignOwnedValues(*u_, j.at("u"), "dynamic displacement");
   assignOwnedValues(*v_, j.at("v"), "velocity");
   assignOwnedValues(*a_, j.at("a"), "acceleration");
   assignOwnedValues(*g_, j.at("g"), "dynamic forces");
+  recordElements(committed);
 }
 
 } // namespace glossa::solvers

@@ -10,7 +10,9 @@
 //   r(u) = f(u) + C v(u) + M [wNew a(u) + wOld a_n] + wF g_n,   g_n = C v_n + f(u_n),
 // f the quasi-static residual (f_int - f_ext, Uzawa multipliers included), a(u), v(u) Newmark's
 // updates; the tangent K + massFactor M + dampingFactor C. Rayleigh damping C = alpha M + beta K_0,
-// K_0 the tangent at the initial state (constant, so C v stays linear in v).
+// K_0 the tangent at the initial state (constant, so C v stays linear in v). The energy-conserving
+// step is the trapezoidal rule (rho_inf = 1) with each element's force corrected inside the
+// assembly (EnergyConservingForces), from the committed state's element forces and energies.
 
 #include <memory>
 
@@ -19,6 +21,7 @@
 #include "assembly/InertiaTerm.hpp"
 #include "solvers/parameters/TimeParameters.hpp"
 #include "solvers/run/StepState.hpp"
+#include "solvers/stepping/EnergyConservingForces.hpp"
 #include "solvers/stepping/GeneralizedAlpha.hpp"
 
 namespace glossa::assembly {
@@ -37,6 +40,7 @@ public:
 
   void beginStep(double dt) override;
   void addTo(const assembly::Vector &u, assembly::Vector *f, assembly::FEMatrix *K) const override;
+  const assembly::ElementForceCorrection *elementCorrection() const override { return energyConserving_.get(); }
 
   // After a converged step to `time`: the velocity, acceleration and forces at `state` become the
   // committed ones. Collective.
@@ -47,15 +51,19 @@ public:
   // (1/2) v.M v of the committed state [J]. Collective.
   double kineticEnergy() const;
 
-  // A checkpoint's part: this rank's committed vectors.
+  // A checkpoint's part: this rank's committed vectors. `committed`: the restored state (its
+  // displacement and multipliers), from which the energy-conserving step's element state is
+  // computed again rather than stored. Collective.
   void save(nlohmann::json &part) const;
-  void restore(const nlohmann::json &part);
+  void restore(const nlohmann::json &part, const StepState &committed);
 
 private:
   // y = C x (zero at constrained dofs' rows is left to the caller).
   void applyDamping(const assembly::Vector &x, assembly::Vector &y) const;
   // g = C v + f(u, time) at the constrained-free rows (zero at constrained ones). Collective.
   void balanceForces(const StepState &state, double time, const assembly::Vector &v, assembly::Vector &g) const;
+  // The energy-conserving step's element state at the committed `state`. Collective.
+  void recordElements(const StepState &state);
   // a = c0 (u - u_n) - c1 v_n - c2 a_n, and v = v_n + vOld a_n + vNew a.
   void newmark(const assembly::Vector &u, assembly::Vector &a, assembly::Vector &v) const;
 
@@ -65,6 +73,7 @@ private:
   GeneralizedAlpha::Step step_{};
   Teuchos::RCP<assembly::FEMatrix> mass_, massTangent_, stiffness0_; // M (every entry), M (tangent's), K_0
   std::unique_ptr<assembly::Vector> u_, v_, a_, g_; // committed u_n, v_n, a_n, g_n
+  std::unique_ptr<EnergyConservingForces> energyConserving_; // Time/integrator = energy conserving
 };
 
 } // namespace glossa::solvers

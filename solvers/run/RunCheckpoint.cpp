@@ -190,7 +190,7 @@ void restoreRun(RunParts &run, const Restart &restart) {
   try {
     run.stepper->restore(restart.part, restart.run);
     run.history->restore(muscleSnapshotFromJson(restart.part.at("muscle")));
-    if (run.inertia) run.inertia->restore(restart.part);
+    if (run.inertia) run.inertia->restore(restart.part, run.stepper->committed());
     for (std::size_t c = 0; c < run.scene->contacts.size(); ++c)
       if (run.scene->contacts[c].state)
         run.scene->contacts[c].state->restore(contactSnapshotFromJson(restart.part.at("contact").at(c)));

@@ -235,7 +235,7 @@ std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::ve
 
 AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vector<double> &lambda,
                                    const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K,
-                                   BasePoint point) const {
+                                   BasePoint point, const ElementForceCorrection *correction) const {
   const mesh::HexMesh &mesh = scene_.mesh;
   const bool trialPoint = point == BasePoint::trial || K == nullptr;
   Vector uOverlap(layout_.overlapMap()), fOverlap(layout_.overlapMap());
@@ -271,6 +271,8 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
       fem::ElementVector re = r.residual;
       localForceSquares += r.forceScale * r.forceScale;
       fem::ElementMatrix ke = r.tangent;
+      if (correction)
+        correction->add(i, ue, lambda[i], volumetricLaw(static_cast<std::size_t>(e)), r, re, K ? &ke : nullptr);
       for (int l = 0; l < 24; ++l) {
         if (!constrained_[3 * hex[l / 3] + l % 3]) continue;
         re(l) = 0.0;
@@ -300,6 +302,20 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
   status.forceScale = std::sqrt(forceSquares);
   status.valid = globalValid == 1;
   return status;
+}
+
+void Assembler::forEachElement(const Vector &u, const std::vector<double> &lambda,
+                               const std::function<bool(std::size_t)> &which, const ElementVisit &visit) const {
+  Vector uOverlap(layout_.overlapMap());
+  importToOverlap(u, uOverlap);
+  auto uData = uOverlap.getData(0);
+  for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+    if (!which(i)) continue;
+    const fem::NodeMatrix X = scene_.mesh.elementCoordinates(layout_.localElements[i]);
+    const fem::NodeMatrix ue = elementDisplacement(i, uData);
+    visit(i, ue, evaluateElement(i, X, ue, lambda[i], nullptr, false, fem::Q1P0Output::ResidualOnly),
+          volumetricLaw(static_cast<std::size_t>(layout_.localElements[i])));
+  }
 }
 
 void Assembler::assembleMass(FEMatrix &M, fem::MassLumping lumping, ConstrainedDofs constrained) const {

@@ -24,6 +24,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "assembly/DistributedLayout.hpp"
+#include "assembly/ElementForceCorrection.hpp"
 #include "assembly/ElementScatter.hpp"
 #include "assembly/LoadContribution.hpp"
 #include "assembly/TpetraTypes.hpp"
@@ -93,10 +94,21 @@ public:
   // Residual f = f_int(u; Lambda) - f_ext(t) and, if K is given, the tangent. `lambda` is the
   // augmented Lagrange multiplier per local element. With `bases` (one per local element, Q1-P0
   // only) the pressure and dilatation are the three-field Newton iterates of fem::MixedBase, at
-  // `point`. Without `bases` they are condensed exactly from u. Collective.
+  // `point`. Without `bases` they are condensed exactly from u. A `correction` adds to each
+  // element's force and tangent after its kernel (a dynamic run's energy-conserving step).
+  // Collective.
   AssemblyStatus assemble(const Vector &u, double time, const std::vector<double> &lambda,
                           const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K,
-                          BasePoint point = BasePoint::byRequest) const;
+                          BasePoint point = BasePoint::byRequest,
+                          const ElementForceCorrection *correction = nullptr) const;
+
+  // Each local element that `which` admits, evaluated at the owned displacement u (with its
+  // ghosts; u holds its prescribed values) and condensed exactly, handed to `visit` with its
+  // displacement, kernel result and the volumetric law the kernel used. Collective (imports u).
+  using ElementVisit = std::function<void(std::size_t, const fem::NodeMatrix &, const fem::Q1P0Result &,
+                                          const materials::VolumetricEnergy &)>;
+  void forEachElement(const Vector &u, const std::vector<double> &lambda, const std::function<bool(std::size_t)> &which,
+                      const ElementVisit &visit) const;
 
   // The mass matrix into M (a createMatrix matrix): fem::hexMass of every element at its
   // tissue's density, the reference configuration's mass, constant in a Lagrangian run.

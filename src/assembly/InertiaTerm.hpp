@@ -4,6 +4,7 @@
 // (solvers/run/Inertia, generalized-alpha). The model evaluator asks for it after each assembly,
 // so Newton, the Uzawa loop and the linear solvers see the dynamic balance unchanged.
 
+#include "assembly/ElementForceCorrection.hpp"
 #include "assembly/TpetraTypes.hpp"
 
 namespace glossa::assembly {
@@ -16,6 +17,9 @@ public:
   // f += the dynamic terms at the owned displacement u (nothing at constrained dofs) and
   // K += their derivative (K assembled, on the Assembler's graph); either may be null. Collective.
   virtual void addTo(const Vector &u, Vector *f, FEMatrix *K) const = 0;
+  // What the integrator adds to each element's force inside the assembly (the energy-conserving
+  // step's discrete gradient), or null.
+  virtual const ElementForceCorrection *elementCorrection() const { return nullptr; }
 };
 
 } // namespace glossa::assembly

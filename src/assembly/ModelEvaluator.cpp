@@ -284,7 +284,7 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
   Vector fScratch(assembler_->layout().ownedMap());
   if (withTangent) {
     lastStatus_ = assembler_->assemble(*x, time, lambda, mixed_ ? &bases_ : nullptr, f.get(), matrix_.get(),
-                                       Assembler::BasePoint::trial);
+                                       Assembler::BasePoint::trial, elementCorrection());
     if (inertia_ && lastStatus_.valid) inertia_->addTo(*x, f.get(), matrix_.get());
     tangentCached_ = lastStatus_.valid;
     if (tangentCached_) {
@@ -298,7 +298,8 @@ void ModelEvaluator::evalModelImpl(const MEB::InArgs<double> &in, const MEB::Out
   } else {
     tangentCached_ = false;
     lastStatus_ = assembler_->assemble(*x, time, lambda, mixed_ ? &bases_ : nullptr,
-                                       f.is_null() ? (K ? &fScratch : nullptr) : f.get(), K);
+                                       f.is_null() ? (K ? &fScratch : nullptr) : f.get(), K,
+                                       Assembler::BasePoint::byRequest, elementCorrection());
     if (inertia_ && lastStatus_.valid) inertia_->addTo(*x, f.get(), K);
   }
   if (!lastStatus_.valid && !f.is_null()) f->putScalar(std::numeric_limits<double>::quiet_NaN());

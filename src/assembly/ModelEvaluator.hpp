@@ -119,6 +119,7 @@ private:
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> responseSpace_; // g0, locally replicated
   model::MuscleHistory *history_ = nullptr;
   InertiaTerm *inertia_ = nullptr;
+  const ElementForceCorrection *elementCorrection() const { return inertia_ ? inertia_->elementCorrection() : nullptr; }
   std::vector<mesh::NodeId> responseNodes_;
   int groups_ = 0;
   Teuchos::RCP<FEMatrix> matrix_;

@@ -149,6 +149,7 @@ Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const Mix
   double V = 0.0, v = 0.0;
   ElementVector g;
   volumeAndGradient(pts, V, v, g);
+  r.volumeGradient = g;
   double theta = base.theta, p = base.pressure;
   if (extrapolate) extrapolateState(base, u, V, volumetric, lambda, theta, p);
   if (!(theta > 0.0)) return r;
@@ -182,6 +183,7 @@ Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const Quadratu
   double V = 0.0, v = 0.0;
   ElementVector g;
   volumeAndGradient(pts, V, v, g);
+  r.volumeGradient = g;
   r.referenceVolume = V;
   r.theta = v / V;
   r.pressure = volumetric.dU(r.theta) + lambda;

@@ -32,6 +32,7 @@ struct Q1P0Result {
   double theta = 1.0;                             // element dilatation v/V
   double pressure = 0.0;                          // p = U'(theta) + Lambda [Pa]
   double referenceVolume = 0.0;
+  ElementVector volumeGradient = ElementVector::Zero(); // g = dv/du (the condensed kernels)
   double energy = 0.0;                            // int psi_iso dV + V U(theta) + Lambda V (theta-1)
   double minJ = 1.0;                              // smallest J at the quadrature points
   // Size of the terms that cancel in the residual: |residual| and the volumetric stiffness times
