@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "fem/DiscreteGradient.hpp"
+#include "UnitCube.hpp"
 #include "materials/NeoHookean.hpp"
 #include "materials/VolumetricEnergy.hpp"
 
@@ -25,14 +26,6 @@ NodeMatrix stepCube(std::mt19937 &rng) {
   for (int a = 0; a < 8; ++a)
     for (int i = 0; i < 3; ++i) X(a, i) = 0.01 * (0.5 * (fem::hexNodeXi(a)(i) + 1.0) + d(rng));
   return X;
-}
-
-NodeMatrix stepDisplacement(std::mt19937 &rng, double amplitude) {
-  std::uniform_real_distribution<double> d(-amplitude, amplitude);
-  NodeMatrix u;
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i) u(a, i) = d(rng);
-  return u;
 }
 
 ElementVector asVector(const NodeMatrix &u) {
@@ -74,7 +67,7 @@ TEST(DiscreteGradient, TheStepsWorkIsTheStoredEnergysChange) {
   for (double nu : {0.3, 0.49999})
     for (int sample = 0; sample < 6; ++sample) {
       const StepElement e = stepElement(nu, sample * 50.0, rng);
-      const NodeMatrix u0 = stepDisplacement(rng, 1e-3), u1 = u0 + stepDisplacement(rng, 5e-4);
+      const NodeMatrix u0 = fem::testing::randomNodalDisplacement(rng, 1e-3), u1 = u0 + fem::testing::randomNodalDisplacement(rng, 5e-4);
       ElementVector force;
       const auto c = e.step(u0, u1, force);
       const double dW = e.at(u1).energy - e.at(u0).energy;
@@ -95,7 +88,7 @@ TEST(DiscreteGradient, TheStepsWorkIsTheStoredEnergysChange) {
 TEST(DiscreteGradient, ARigidTranslationGetsNoCorrection) {
   std::mt19937 rng(12);
   const StepElement e = stepElement(0.45, 0.0, rng);
-  const NodeMatrix u0 = stepDisplacement(rng, 1e-3);
+  const NodeMatrix u0 = fem::testing::randomNodalDisplacement(rng, 1e-3);
   NodeMatrix u1 = u0;
   for (int a = 0; a < 8; ++a) u1.row(a) += Eigen::RowVector3d(2e-3, -1e-3, 5e-4);
   ElementVector force;
@@ -110,7 +103,7 @@ TEST(DiscreteGradient, TheCorrectionVanishesWithTheStepAtSecondOrder) {
   std::mt19937 rng(13);
   for (double nu : {0.3, 0.49999}) {
     const StepElement e = stepElement(nu, 0.0, rng);
-    const NodeMatrix u0 = stepDisplacement(rng, 1e-3), w = stepDisplacement(rng, 1e-3);
+    const NodeMatrix u0 = fem::testing::randomNodalDisplacement(rng, 1e-3), w = fem::testing::randomNodalDisplacement(rng, 1e-3);
     double previous = 0.0;
     // From s = 1/16 on: the asymptotic range, where the cubic term of the quadrature error leads.
     for (int k = 4; k < 9; ++k) {
@@ -133,7 +126,7 @@ TEST(DiscreteGradient, ItsTangentIsTheProjectionThatRemovesTranslations) {
   for (int a = 0; a < 8; ++a) translation(3 * a + 1) = 1.0;
   EXPECT_LT((K * translation).norm(), 1e-15);
   std::mt19937 rng(14);
-  const ElementVector du = asVector(stepDisplacement(rng, 1.0));
+  const ElementVector du = asVector(fem::testing::randomNodalDisplacement(rng, 1.0));
   ElementVector d = du;
   for (int i = 0; i < 3; ++i) {
     double mean = 0.0;

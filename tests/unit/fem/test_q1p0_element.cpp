@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "fem/Q1P0Element.hpp"
+#include "UnitCube.hpp"
 #include "materials/NeoHookean.hpp"
 #include "materials/VolumetricEnergy.hpp"
 
@@ -27,14 +28,6 @@ NodeMatrix distortedHex(std::mt19937 &rng) {
   for (int a = 0; a < 8; ++a)
     for (int i = 0; i < 3; ++i) X(a, i) += 1e-3 * d(rng);
   return X;
-}
-
-NodeMatrix randomDisplacement(std::mt19937 &rng, double amplitude) {
-  std::uniform_real_distribution<double> d(-amplitude, amplitude);
-  NodeMatrix u;
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i) u(a, i) = d(rng);
-  return u;
 }
 
 struct Fixture {
@@ -68,7 +61,7 @@ TEST(Q1P0Element, TangentMatchesFiniteDifferences) {
   std::mt19937 rng(7);
   for (int sample = 0; sample < 5; ++sample) {
     const NodeMatrix X = distortedHex(rng);
-    const NodeMatrix u = randomDisplacement(rng, 1e-4);
+    const NodeMatrix u = fem::testing::randomNodalDisplacement(rng, 1e-4);
     const double lambda = 1e5 * sample;
     expectConsistentTangent(
         [&](const NodeMatrix &v) { return fem::evaluateQ1P0(X, v, f.iso, f.vol, lambda); }, u, 1e-9);
@@ -79,7 +72,7 @@ TEST(Q1P0Element, PlainQ1TangentMatchesFiniteDifferences) {
   Fixture f;
   std::mt19937 rng(11);
   const NodeMatrix X = distortedHex(rng);
-  const NodeMatrix u = randomDisplacement(rng, 1e-4);
+  const NodeMatrix u = fem::testing::randomNodalDisplacement(rng, 1e-4);
   expectConsistentTangent([&](const NodeMatrix &v) { return fem::evaluatePlainQ1(X, v, f.iso, f.vol); },
                           u, 1e-9);
 }
@@ -171,7 +164,7 @@ TEST(Q1P0Element, MixedIterateAtConsistentBaseEqualsExactCondensation) {
   Fixture f;
   std::mt19937 rng(5);
   const NodeMatrix X = distortedHex(rng);
-  const NodeMatrix u = randomDisplacement(rng, 1e-4);
+  const NodeMatrix u = fem::testing::randomNodalDisplacement(rng, 1e-4);
   const double lambda = 3e5;
   const fem::MixedBase base = fem::mixedBase(X, u, nullptr, f.vol, lambda);
   ASSERT_TRUE(base.valid);
@@ -201,8 +194,8 @@ TEST(Q1P0Element, MixedIterateExtrapolatesLinearly) {
   Fixture f;
   std::mt19937 rng(9);
   const NodeMatrix X = distortedHex(rng);
-  const NodeMatrix u0 = randomDisplacement(rng, 1e-4);
-  const NodeMatrix du = randomDisplacement(rng, 1e-5);
+  const NodeMatrix u0 = fem::testing::randomNodalDisplacement(rng, 1e-4);
+  const NodeMatrix du = fem::testing::randomNodalDisplacement(rng, 1e-5);
   const fem::MixedBase base = fem::mixedBase(X, u0, nullptr, f.vol, 0.0);
   const auto r = fem::evaluateQ1P0Mixed(X, u0 + du, base, f.iso, f.vol, 0.0, true);
   double dv = 0.0;
@@ -225,7 +218,7 @@ TEST(Q1P0Element, MixedIterateExtrapolatesLinearly) {
 TEST(Q1P0Element, VolumeGradientIsTheDerivativeOfTheCurrentVolume) {
   std::mt19937 rng(7);
   const NodeMatrix X = distortedHex(rng);
-  const NodeMatrix u = randomDisplacement(rng, 1e-4);
+  const NodeMatrix u = fem::testing::randomNodalDisplacement(rng, 1e-4);
   double V = 0.0, v = 0.0;
   ElementVector g;
   ASSERT_TRUE(fem::elementVolumeGradient(X, u, V, v, g));
