@@ -14,6 +14,10 @@ std::vector<Eigen::Vector2d> inPlane(const CutCurve &c, const SectionPlane &p) {
 }
 }  // namespace
 
+bool sectionCloses(const LumenSection &lumen, const LumenSettings &settings) {
+  return lumen.area < settings.closingArea || lumen.touchesOver(settings.closingWidthFraction);
+}
+
 AirwayLumen::AirwayLumen(TriangleSet tongue, TriangleSet wall, const CentrelineSettings &centreline,
                          LumenSettings settings)
     : tongue_(std::move(tongue)), wall_(std::move(wall)),
@@ -30,8 +34,7 @@ LumenState AirwayLumen::measure(const std::vector<Eigen::Vector3d> &positions) c
       section.lumen = lumenBetween(inPlane(*t, plane), t->closed, inPlane(*w, plane), w->closed, settings_.contactGap);
       section.measured = section.lumen.spansWidth();
     }
-    section.closed = section.measured && (section.lumen.area < settings_.closingArea ||
-                                          section.lumen.touchesAcross());
+    section.closed = section.measured && sectionCloses(section.lumen, settings_);
     if (section.closed) ++state.closedSections;
     const int k = static_cast<int>(state.sections.size());
     if (section.measured &&

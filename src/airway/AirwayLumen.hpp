@@ -6,7 +6,8 @@
 // closed at the lateral limits both span (airway/LumenArea). The tongue's quadrilateral faces are
 // cut as two triangles each (split along the diagonal from their first corner), the same surface
 // at rest and deformed. A section is closed when its area is below the closing area or the gap is
-// at most the contact gap across its whole width.
+// at most the contact gap over the closing width fraction of its width (by default the whole
+// width; less lets a model without lateral walls close although its sides stay open).
 
 #include <Eigen/Core>
 #include <array>
@@ -21,7 +22,11 @@ namespace glossa::airway {
 struct LumenSettings {
   double closingArea = 1e-6;  // [m^2]
   double contactGap = 1e-5;   // [m]
+  double closingWidthFraction = 1.0;  // in (0, 1]
 };
+
+// Whether a measured section is closed under `settings`.
+bool sectionCloses(const LumenSection &lumen, const LumenSettings &settings);
 
 struct SectionState {
   bool measured = false;  // both surfaces cut the plane near its centre, over a common width

@@ -33,6 +33,10 @@ struct LumenSection {
   // Touching from side to side: no open width at all (exactly 0, not a sum compared with the
   // width, which round-off would miss).
   bool touchesAcross() const { return spansWidth() && openWidth == 0.0; }
+  // Touching over at least `fraction` (in (0, 1]) of the width; 1 is touchesAcross, exactly.
+  bool touchesOver(double fraction) const {
+    return fraction >= 1.0 ? touchesAcross() : spansWidth() && contactWidth >= fraction * (uRight - uLeft);
+  }
 };
 
 // The lumen between the tongue's curve and the wall's (each a polyline of (u, v) points, in

@@ -102,8 +102,13 @@ ParameterList airwayParameters() {
   io::declareDouble(p, "closing area", 1e-6, "m^2", "a section whose area is below this is closed",
                     io::Range::nonNegative());
   io::declareDouble(p, "contact gap", 1e-5, "m",
-                    "a section where the tongue is within this of the wall across the whole width is closed",
+                    "a section where the tongue is within this of the wall across the closing width fraction of "
+                    "its width is closed",
                     io::Range::nonNegative());
+  io::declareDouble(p, "closing width fraction", 1.0, "",
+                    "the fraction of a section's width the tongue must be within the contact gap of the wall over "
+                    "for the section to close (1: the whole width, side to side)",
+                    io::Range{0.0, 1.0, true, false});
   io::declareString(p, "contact", "",
                     "the contact (a Contact sublist) whose area airway.csv reports as the tongue-wall contact area");
   io::declareString(p, "closing pressure load", "",
@@ -138,7 +143,8 @@ std::shared_ptr<const model::AirwayOutput> buildAirway(const io::Deck &deck, con
   try {
     out->lumen = std::make_shared<airway::AirwayLumen>(std::move(tongue), wallTriangles(deck), centreline,
                                                        airway::LumenSettings{a.get<double>("closing area"),
-                                                                             a.get<double>("contact gap")});
+                                                                             a.get<double>("contact gap"),
+                                                                             a.get<double>("closing width fraction")});
   } catch (const std::invalid_argument &e) {
     throw io::DeckError(deck.where({"Airway"}) + ": " + e.what() +
                         " (check 'face set', 'wall file', 'midsagittal point', 'start point' and 'end point')");

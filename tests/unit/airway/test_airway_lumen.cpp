@@ -1,7 +1,8 @@
 // The lumen's sections on channels whose cross-sections are known exactly (to
 // 1e-10 relative): two parallel planes, a faceted cylinder (its halves the tongue and the wall)
 // and a channel tilted out of the axes with a wall wider than the tongue and shifted sideways.
-// The centreline and the planes come from the same code as the tongue's.
+// The centreline and the planes come from the same code as the tongue's. And the closing rule on
+// a section whose contact width is known.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -92,4 +93,31 @@ TEST(AirwayLumen, TiltedChannelWithShiftedWiderWall) {
   EXPECT_EQ(t.closedSections, 0);
   const AirwayLumen strict(tongue, wall, along(0.01 * d, 0.05 * d, 6), {65e-6, 1e-5});
   EXPECT_EQ(strict.measure(tilted).closedSections, 6);
+}
+
+TEST(AirwayLumen, ClosesWhenContactSpansTheClosingWidthFraction) {
+  // A flat tongue 20 mm wide; the wall lies on it over |u| <= 3 mm, rises with slope 1 to 2 mm
+  // above it at |u| = 5 mm and stays there to the sides: a lumen open at both sides (24 mm^2)
+  // with contact over 6 mm, 0.3 of the width; within a contact gap of 0.5 mm, over 7 mm (0.35).
+  using V = Eigen::Vector2d;
+  const std::vector<V> tongue{V(-0.01, 0), V(0.01, 0)};
+  const std::vector<V> wall{V(-0.01, 0.002), V(-0.005, 0.002), V(-0.003, 0), V(0.003, 0),
+                            V(0.005, 0.002), V(0.01, 0.002)};
+  const LumenSection exact = lumenBetween(tongue, false, wall, false, 0.0);
+  ASSERT_NEAR(exact.area, 24e-6, 1e-10 * 24e-6);
+  ASSERT_NEAR(exact.contactFraction(), 0.3, 1e-12);
+  LumenSettings rule{1e-6, 0.0, 1.0};
+  EXPECT_FALSE(sectionCloses(exact, rule));  // the default: contact from side to side
+  rule.closingWidthFraction = 0.29;
+  EXPECT_TRUE(sectionCloses(exact, rule));
+  rule.closingWidthFraction = 0.31;
+  EXPECT_FALSE(sectionCloses(exact, rule));
+  const LumenSection near = lumenBetween(tongue, false, wall, false, 0.0005);
+  ASSERT_NEAR(near.contactFraction(), 0.35, 1e-12);
+  rule.closingWidthFraction = 0.34;
+  EXPECT_TRUE(sectionCloses(near, rule));
+  rule.closingWidthFraction = 0.36;
+  EXPECT_FALSE(sectionCloses(near, rule));
+  // The area rule stands beside it: 24 mm^2 is below a closing area of 25 mm^2.
+  EXPECT_TRUE(sectionCloses(exact, LumenSettings{25e-6, 0.0, 1.0}));
 }
