@@ -6,17 +6,6 @@
 
 namespace glossa::solvers {
 
-namespace {
-
-fem::ElementVector asVector(const fem::NodeMatrix &u) {
-  fem::ElementVector v;
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i) v(3 * a + i) = u(a, i);
-  return v;
-}
-
-} // namespace
-
 EnergyConservingForces::EnergyConservingForces(std::vector<char> corrected, double weight)
     : corrected_(std::move(corrected)), weight_(weight), committed_(corrected_.size()) {}
 
@@ -46,7 +35,7 @@ void EnergyConservingForces::add(std::size_t i, const fem::NodeMatrix &ue, doubl
   const fem::ElementVector f1 = r.residual - (lambda - lambdaMid) * r.volumeGradient;
   const double W1 = r.energy - r.referenceVolume * (lambda - lambdaMid) * (r.theta - 1.0);
   const fem::DiscreteGradientCorrection correction =
-      fem::discreteGradientCorrection(asVector(ue - c.u), W0, W1, 0.5 * (f0 + f1));
+      fem::discreteGradientCorrection(fem::flattenNodes(ue - c.u), W0, W1, 0.5 * (f0 + f1));
   // The residual holds f(u_{n+1}; Lambda) and the step's committed part f(u_n; Lambda_n) with the
   // law at commit: what the step's force (f0 + f1)/2 + c d differs from their mean goes in.
   const fem::ElementVector committedForce = c.isochoricForce + (c.tangentPressure + c.lambda) * c.volumeGradient;

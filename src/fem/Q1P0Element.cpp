@@ -20,12 +20,6 @@ struct PointKinematics {
   double J = 1.0;
 };
 
-ElementVector flattenNodes(const NodeMatrix &u) {
-  ElementVector v;
-  for (int a = 0; a < 8; ++a) v.segment<3>(3 * a) = u.row(a).transpose();
-  return v;
-}
-
 Eigen::Matrix<double, 9, 1> flatten(const Eigen::Matrix3d &M) {
   Eigen::Matrix<double, 9, 1> v;
   for (int i = 0; i < 3; ++i)
@@ -79,6 +73,12 @@ void addPoint(Q1P0Result &r, const PointKinematics &pt, const Eigen::Matrix3d &P
 }
 
 } // namespace
+
+ElementVector flattenNodes(const NodeMatrix &u) {
+  ElementVector v;
+  for (int a = 0; a < 8; ++a) v.segment<3>(3 * a) = u.row(a).transpose();
+  return v;
+}
 
 namespace {
 // v = int J dV and g_a = dv/du_a = int J F^{-T} dN_a/dX dV.

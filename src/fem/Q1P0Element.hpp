@@ -23,6 +23,9 @@ namespace glossa::fem {
 using ElementVector = Eigen::Matrix<double, 24, 1>; // dof 3*a + i
 using ElementMatrix = Eigen::Matrix<double, 24, 24>;
 
+// A nodal matrix as an element vector (dof 3*a + i).
+ElementVector flattenNodes(const NodeMatrix &u);
+
 struct Q1P0Result {
   bool valid = false;        // false: J <= 0 at a quadrature point, a degenerate element, or a
                              // point law that failed (lawFailed)

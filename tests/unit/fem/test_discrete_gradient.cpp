@@ -28,12 +28,6 @@ NodeMatrix stepCube(std::mt19937 &rng) {
   return X;
 }
 
-ElementVector asVector(const NodeMatrix &u) {
-  ElementVector v;
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i) v(3 * a + i) = u(a, i);
-  return v;
-}
 
 struct StepElement {
   materials::NeoHookean iso{1e4};
@@ -48,7 +42,7 @@ struct StepElement {
     const auto r0 = at(u0), r1 = at(u1);
     EXPECT_TRUE(r0.valid && r1.valid);
     const ElementVector mean = 0.5 * (r0.residual + r1.residual);
-    const auto c = fem::discreteGradientCorrection(asVector(u1 - u0), r0.energy, r1.energy, mean);
+    const auto c = fem::discreteGradientCorrection(fem::flattenNodes(u1 - u0), r0.energy, r1.energy, mean);
     force = mean + c.force;
     return c;
   }
@@ -71,10 +65,10 @@ TEST(DiscreteGradient, TheStepsWorkIsTheStoredEnergysChange) {
       ElementVector force;
       const auto c = e.step(u0, u1, force);
       const double dW = e.at(u1).energy - e.at(u0).energy;
-      const double trapezoidal = 0.5 * (e.at(u0).residual + e.at(u1).residual).dot(asVector(u1 - u0));
+      const double trapezoidal = 0.5 * (e.at(u0).residual + e.at(u1).residual).dot(fem::flattenNodes(u1 - u0));
       // Without the correction the trapezoidal work misses dW by the quadrature error.
       EXPECT_GT(std::abs(trapezoidal - dW), 1e-9 * std::abs(dW)) << "nu " << nu;
-      EXPECT_NEAR(force.dot(asVector(u1 - u0)), dW, 1e-12 * (std::abs(e.at(u0).energy) + std::abs(e.at(u1).energy)))
+      EXPECT_NEAR(force.dot(fem::flattenNodes(u1 - u0)), dW, 1e-12 * (std::abs(e.at(u0).energy) + std::abs(e.at(u1).energy)))
           << "nu " << nu << " sample " << sample;
       EXPECT_NE(c.coefficient, 0.0);
       for (int i = 0; i < 3; ++i) {
@@ -126,7 +120,7 @@ TEST(DiscreteGradient, ItsTangentIsTheProjectionThatRemovesTranslations) {
   for (int a = 0; a < 8; ++a) translation(3 * a + 1) = 1.0;
   EXPECT_LT((K * translation).norm(), 1e-15);
   std::mt19937 rng(14);
-  const ElementVector du = asVector(fem::testing::randomNodalDisplacement(rng, 1.0));
+  const ElementVector du = fem::flattenNodes(fem::testing::randomNodalDisplacement(rng, 1.0));
   ElementVector d = du;
   for (int i = 0; i < 3; ++i) {
     double mean = 0.0;
