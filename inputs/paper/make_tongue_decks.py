@@ -100,7 +100,7 @@ class Xml:
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
          reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None,
          matrix=None, linear=None, face_sets=None, contact=None, neural=None, output=None,
-         time=None, group=None, incompressibility=None, gravity_table=None, airway=None):
+         time=None, group=None, incompressibility=None, gravity_table=None, airway=None, airflow=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
@@ -123,7 +123,9 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     group: None or {parameter: (type, value)} added to each active group (e.g. its rise time).
     gravity_table: None (gravity ramped linearly over the first second) or (times, values) of a
     table time function.
-    airway: None or {parameter: (type, value)} of the Airway section (doc/airway.md)."""
+    airway: None or {parameter: (type, value)} of the Airway section (doc/airway.md).
+    airflow: None or {parameter: (type, value or {sublist parameter: (type, value)})} of the Airflow
+    section (doc/airflow.md)."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -279,6 +281,17 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
         x.open("Airway")
         for key, (typ, value) in airway.items():
             x.add(key, typ, value)
+        x.close()
+    if airflow is not None:
+        x.open("Airflow")
+        for key, (typ, value) in airflow.items():
+            if typ == "sublist":
+                x.open(key)
+                for sub, (subtyp, subvalue) in value.items():
+                    x.add(sub, subtyp, subvalue)
+                x.close()
+            else:
+                x.add(key, typ, value)
         x.close()
     x.open("Named points")
     for pname, _, pos in POINTS:
@@ -566,6 +579,27 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
          f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
          {}, gravity=g, pressure=-500.0, end_time=2.0, step=0.25, reference="s8_1/reference_inverse.txt",
          face_sets=PALATE_SIDE, contact=PALATE_CONTACT, airway=AIRWAY_SECTION)
+
+FLOW_TRACHEAL = -1000.0
+FLOW = f"""
+The airflow through the airway (doc/airflow.md): the lumen of airway_{{posture}}.xml (20 sections
+between 'airway' and palate8.obj, the palate a frictionless penalty contact of 'palate side') is
+the channel of the 1D quasi-steady flow, from the nasal end under the velum (0 Pa) to the tracheal
+end at the vallecula, whose pressure is lowered from 0 at t = 1 s to {FLOW_TRACHEAL:g} Pa at t = 2 s
+(a hard inspiration); the flow's pressure acts on 'airway' in place of eq. 27's, coupled to the
+tongue at every step to 0.1 Pa. Passive, on the zero-strain configuration of s8_1, gravity ramped
+over [0, 1] s; steps of 0.125 s. airflow.csv: the flow rate, the smallest area and each section's
+pressure."""
+FLOW_SECTION = {"driven by": ("string", "pressures"), "nasal pressure": ("double", 0.0),
+                "tracheal pressure": ("double", FLOW_TRACHEAL),
+                "tracheal pressure time function": ("sublist", {"type": ("string", "table"),
+                                                                 "times": ("Array(double)", "{0, 1, 2}"),
+                                                                 "values": ("Array(double)", "{0, 0, 1}")})}
+for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
+    deck(f"tongue_flow_{posture}", f"The airflow through the tongue's airway, {posture}.\n" + COMMON +
+         FLOW.replace("{posture}", posture) + f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
+         {}, gravity=g, end_time=2.0, step=0.125, reference="s8_1/reference_inverse.txt",
+         face_sets=PALATE_SIDE, contact=PALATE_CONTACT, airway=AIRWAY_SECTION, airflow=FLOW_SECTION)
 
 PCRIT_SUCTION = -3000.0
 PCRIT = f"""

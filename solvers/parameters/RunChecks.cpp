@@ -81,6 +81,12 @@ void checkRunConfiguration(const io::Deck &deck, const RunConfiguration &config,
                           " asks for arc-length continuation; allowed with dynamic: path following = load control, "
                           "at a limit point = stop or ignore");
   }
+  // The arc-length path is LOCA's own solve, which the flow's coupling does not reach.
+  if (scene.airflowLoad >= 0 && (onPath || config.time.atLimitPoint == AtLimitPoint::follow))
+    throw io::DeckError(deck.where({"Airflow", "driven by"}) + ": the airflow is coupled to load steps; " +
+                        deck.where({"Time", onPath ? "path following" : "at a limit point"}) +
+                        " asks for arc-length continuation; allowed with airflow: path following = load control, "
+                        "at a limit point = stop or ignore");
   if (onPath || config.time.atLimitPoint == AtLimitPoint::follow)
     requireArcLengthCompatible(deck, config, scene, context.restart, onPath ? "path following" : "at a limit point");
   for (const auto &[key, sets] : {std::make_pair("resultant face sets", &config.output.resultantFaceSets),

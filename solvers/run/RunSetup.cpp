@@ -9,12 +9,14 @@
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/NullSpace.hpp"
 #include "assembly/ResultEvaluator.hpp"
+#include "input/AirflowParameters.hpp"
 #include "input/AirwayParameters.hpp"
 #include "input/SceneFactory.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/output/DirectoryLock.hpp"
 #include "model/Scene.hpp"
 #include "solvers/control/CommControlGroups.hpp"
+#include "solvers/run/AirflowCoupling.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 #include "solvers/linear/MixedBlockSolver.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
@@ -24,7 +26,9 @@ namespace glossa::solvers {
 
 RunParts::~RunParts() = default;
 
-StepSolverParts RunParts::stepSolverParts() const { return {*assembler, *model, *newton, *uzawa, *history}; }
+StepSolverParts RunParts::stepSolverParts() const {
+  return {*assembler, *model, *newton, *uzawa, *history, airflow.get()};
+}
 
 namespace {
 // The scene (a command's adjustment applied), then each tissue's augmentation from its physical
@@ -209,6 +213,9 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
     const model::FollowerPressureLoad &load = run->scene->pressures[static_cast<std::size_t>(run->airway->pressureLoad)];
     run->pcrit = std::make_unique<PcritSearch>(*run->airway, load.pressure, load.name);
   }
+  if (run->scene->airflowLoad >= 0) // input::buildScene has refused an airflow without an airway
+    run->airflow = std::make_unique<AirflowCoupling>(input::parseAirflowParameters(deck, run->config.time.rampEndTime),
+                                                     run->airway, *run->scene);
   // Control groups: the world splits into G groups of equal size, each with its own copy of the
   // whole solver on a sub-communicator (every group steps the same committed state; GA
   // candidates are dealt out among the groups and the winner's state is broadcast).

@@ -39,6 +39,7 @@ struct Scene;
 
 namespace glossa::solvers {
 
+class AirflowCoupling;
 class CommControlGroups;
 class NewtonSolver;
 class UzawaLoop;
@@ -53,6 +54,7 @@ struct RunParts {
   std::unique_ptr<const model::Scene> scene; // as built from the deck, never changed after
   std::shared_ptr<const model::AirwayOutput> airway; // the deck's Airway section; null without one
   std::unique_ptr<PcritSearch> pcrit; // the airway's closing-pressure search; null without one
+  std::unique_ptr<AirflowCoupling> airflow; // the airflow coupled to every solve; null without one
   // Each tissue's kappa_AL, rule and tangent law: raised by the Uzawa loop, read by the assembly.
   std::unique_ptr<Augmentation> augmentation;
   std::unique_ptr<CommControlGroups> groups;

@@ -9,6 +9,7 @@
 #include "assembly/TimeSplit.hpp"
 #include "model/Scene.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
+#include "solvers/run/AirflowCoupling.hpp"
 #include "solvers/run/PathFollowing.hpp"
 #include "solvers/run/RunSetup.hpp"
 
@@ -34,6 +35,9 @@ Simulation::Simulation(const io::Deck &deck, const RunConfiguration &config,
       run.recorder->record(0.0, state.u, state.lambda, true, initial, inputs);
       run.recorder->recordContacts(0.0, contacts);
       run.recorder->recordAirway(0.0, contacts);
+      if (run.airflow)
+        run.recorder->recordAirflow(
+            0.0, run.airflow->flowAt(0.0, assembly::ResultEvaluator(*run.assembler).gatherDisplacement(state.u)));
       recordEnergy(nullptr);
       run.report->write(assemblyCounters(*run.model));
     });
@@ -121,6 +125,7 @@ void Simulation::record(const StepTrial &trial) {
   run.recorder->recordContacts(run.stepper->time(), trial.attempt.uzawa.contacts);
   run.recorder->recordAirway(run.stepper->time(), trial.attempt.uzawa.contacts);
   nlohmann::json step, forces = nlohmann::json::object();
+  if (run.airflow) recordAirflow(trial, step);
   for (const auto &[name, row] : reactions) forces[name] = std::vector<double>(row.begin(), row.begin() + 3);
   step["reactions"] = forces;
   if (!run.scene->muscles.groups.empty()) {
@@ -162,6 +167,25 @@ void Simulation::recordContacts(const UzawaResult &uzawa, nlohmann::json &step) 
   // Over the run: every step's augmented contacts within their gap tolerance, and the largest
   // gap error any of them ended a step with.
   overall = {{"gap_tolerance_met", met}, {"largest_gap_error", largest}};
+}
+
+void Simulation::recordAirflow(const StepTrial &trial, nlohmann::json &step) {
+  RunParts &run = *run_;
+  // A controlled step's winner was solved among candidates: its flow is measured again at the
+  // committed state (the flow its pressures came from, to the coupling tolerance).
+  const AirflowStep airflow =
+      trial.attempt.airflow.on
+          ? trial.attempt.airflow
+          : run.airflow->flowAt(run.stepper->time(), assembly::ResultEvaluator(*run.assembler)
+                                                         .gatherDisplacement(run.stepper->committed().u));
+  run.recorder->recordAirflow(run.stepper->time(), airflow);
+  step["airflow"] = {{"flow_rate", airflow.flowRate},         {"smallest_area", airflow.smallestArea},
+                     {"smallest_section", airflow.smallestSection}, {"closed", airflow.closed},
+                     {"coupling_iterations", airflow.iterations}, {"coupling_change", airflow.residual}};
+  nlohmann::json &overall = run.report->doc()["airflow"];
+  if (!overall.is_object()) overall = {{"coupling_iterations", 0}, {"largest_coupling_iterations", 0}};
+  overall["coupling_iterations"] = overall["coupling_iterations"].get<int>() + airflow.iterations;
+  overall["largest_coupling_iterations"] = std::max(overall["largest_coupling_iterations"].get<int>(), airflow.iterations);
 }
 
 void Simulation::recordEnergy(nlohmann::json *step) {

@@ -47,6 +47,8 @@ private:
   // (summary.json: contact).
   void recordContacts(const UzawaResult &uzawa, nlohmann::json &step);
   // A dynamic run's energies at the committed state, to energy.csv and into the step's record.
+  // airflow.csv's row and the summary's of a step with airflow.
+  void recordAirflow(const StepTrial &trial, nlohmann::json &step);
   void recordEnergy(nlohmann::json *step);
   void followPath(); // by arc length from the committed state to the path's end
   // The closing-pressure search (PcritSearch): whether the converged trial closes the airway (it

@@ -1,5 +1,7 @@
 #include "solvers/run/StepRecorder.hpp"
 
+#include <limits>
+
 #include "assembly/ContactResponse.hpp"
 #include "io/output/OutputError.hpp"
 #include "materials/ActivationDynamics.hpp"
@@ -34,6 +36,14 @@ StepRecorder::StepRecorder(const assembly::ResultEvaluator &results, const std::
                                  "largest_gap_error [m]", "tangential_force [N]"},
         resumeAt("contact.csv"));
   if (airwayModel_) airway_ = std::make_unique<AirwayRecorder>(*airwayModel_, dir, resumeAt("airway.csv"));
+  if (airwayModel_ && results.scene().airflowLoad >= 0) {
+    std::vector<std::string> columns{"flow_rate [m^3/s]", "nasal_pressure [Pa]", "tracheal_pressure [Pa]",
+                                     "smallest_area [m^2]", "smallest_section [-]", "closed [-]", "choked [-]",
+                                     "coupling_iterations [-]", "coupling_change [Pa]"};
+    for (std::size_t k = 0; k < airwayModel_->lumen->numSections(); ++k)
+      columns.push_back("pressure_" + std::string(k < 10 ? "0" : "") + std::to_string(k) + " [Pa]");
+    airflow_ = std::make_unique<io::KeyedCsvWriter>(dir / "airflow.csv", "airway", columns, resumeAt("airflow.csv"));
+  }
   if (dynamic)
     energy_ = std::make_unique<io::KeyedCsvWriter>(
         dir / "energy.csv", "body",
@@ -79,7 +89,7 @@ OutputMark StepRecorder::mark() const {
   if (!root_) return m;
   m.csvBytes["traces.csv"] = traces_->bytes();
   for (const auto *csv : {resultants_.get(), volumes_.get(), reactions_.get(), activation_.get(), contacts_.get(),
-                          energy_.get()})
+                          energy_.get(), airflow_.get()})
     if (csv) m.csvBytes[csv->file().filename().string()] = csv->bytes();
   if (airway_) m.csvBytes["airway.csv"] = airway_->csv().bytes();
   if (results_) m.fieldSteps = results_->steps();
@@ -133,6 +143,22 @@ void StepRecorder::recordContacts(double time, const std::vector<contact::Contac
 
 void StepRecorder::recordAirway(double time, const std::vector<contact::ContactMeasures> &contacts) {
   if (root_ && airway_) airway_->record(time, airwayPositions_, contacts);
+}
+
+void StepRecorder::recordAirflow(double time, const AirflowStep &airflow) {
+  if (!root_ || !airflow_ || !airflow.on) return;
+  std::vector<double> row{airflow.flowRate,
+                          airflow.nasalPressure,
+                          airflow.trachealPressure,
+                          airflow.smallestArea,
+                          static_cast<double>(airflow.smallestSection),
+                          airflow.closed ? 1.0 : 0.0,
+                          airflow.choked ? 1.0 : 0.0,
+                          static_cast<double>(airflow.iterations),
+                          airflow.residual};
+  row.insert(row.end(), airflow.sectionPressure.begin(), airflow.sectionPressure.end());
+  row.resize(9 + airwayModel_->lumen->numSections(), std::numeric_limits<double>::quiet_NaN());
+  airflow_->append(time, {{"airway", row}});
 }
 
 void StepRecorder::recordEnergy(double time, const StepEnergy &energy) {

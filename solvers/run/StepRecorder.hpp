@@ -23,6 +23,7 @@
 #include "io/output/KeyedCsvWriter.hpp"
 #include "io/output/ResultWriter.hpp"
 #include "io/output/TraceWriter.hpp"
+#include "solvers/run/AirflowStep.hpp"
 #include "solvers/run/AirwayRecorder.hpp"
 
 namespace glossa::solvers {
@@ -91,6 +92,10 @@ public:
   // The airway's lumen at the state the last record() was given, with the contacts' areas (a
   // scene with an Airway section; writer rank only; doc/airway.md).
   void recordAirway(double time, const std::vector<contact::ContactMeasures> &contacts);
+  // One row of airflow.csv (a scene with airflow; writer rank only; doc/airflow.md): the flow rate,
+  // the end pressures, the smallest section, the coupling's iterations and last change, and every
+  // section's pressure.
+  void recordAirflow(double time, const AirflowStep &airflow);
 
 private:
   // The node fields of a step: the displacement (all nodes) and, with contacts, their pressure
@@ -101,7 +106,7 @@ private:
   bool root_, fields_;
   std::unique_ptr<io::ResultWriter> results_;
   std::unique_ptr<io::TraceWriter> traces_;
-  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_, resultants_, volumes_, contacts_, energy_;
+  std::unique_ptr<io::KeyedCsvWriter> activation_, reactions_, resultants_, volumes_, contacts_, energy_, airflow_;
   std::shared_ptr<const model::AirwayOutput> airwayModel_;
   std::unique_ptr<AirwayRecorder> airway_;
   std::vector<Eigen::Vector3d> airwayPositions_; // the tongue surface's vertices at the last record()

@@ -8,6 +8,7 @@
 #include "fem/TurnedOverVolume.hpp"
 #include "model/Scene.hpp"
 #include "model/SymmetryPlanes.hpp"
+#include "solvers/run/AirflowCoupling.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 #include "solvers/linear/MumpsPreconditioner.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
@@ -39,6 +40,40 @@ std::string failureReason(const StepAttempt &a) {
 
 StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool quiet,
                               const std::vector<double> &inputs) const {
+  if (!parts_.airflow) return solveSolid(time, dt, state, quiet, inputs);
+  const assembly::ResultEvaluator results(parts_.assembler);
+  StepAttempt last;
+  UzawaResult counted; // the coupling's earlier solves, added to the last one's counts
+  const AirflowStep coupled = parts_.airflow->couple(
+      time, results.gatherDisplacement(state.u),
+      [&](std::vector<double> &uAll) {
+        if (!last.uzawa.newton.empty()) {
+          counted.solves += last.uzawa.solves;
+          counted.newtonIterations += last.uzawa.newtonIterations;
+          counted.linearIterations += last.uzawa.linearIterations;
+          counted.contactUpdates += last.uzawa.contactUpdates;
+        }
+        last = solveSolid(time, dt, state, quiet, inputs);
+        if (last.ok) uAll = results.gatherDisplacement(state.u);
+        return last.ok;
+      },
+      progress_ && !quiet);
+  last.uzawa.solves += counted.solves;
+  last.uzawa.newtonIterations += counted.newtonIterations;
+  last.uzawa.linearIterations += counted.linearIterations;
+  last.uzawa.contactUpdates += counted.contactUpdates;
+  if (!coupled.converged && last.ok) { // the solid converged; the coupling did not, or the flow failed
+    last.ok = false;
+    last.why = coupled.why;
+  } else if (!coupled.converged && last.why.empty()) {
+    last.why = coupled.why;
+  }
+  last.airflow = coupled;
+  return last;
+}
+
+StepAttempt StepSolver::solveSolid(double time, double dt, StepState &state, bool quiet,
+                                   const std::vector<double> &inputs) const {
   StepAttempt out;
   if (keptScope_ == ReuseScope::step) parts_.newton.forgetLinearSolver();
   MumpsPreconditionerFactory::beginStep(); // fresh factors for each step, retry and candidate

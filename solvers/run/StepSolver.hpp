@@ -21,6 +21,7 @@ struct SymmetryPlane;
 
 namespace glossa::solvers {
 
+class AirflowCoupling;
 class NewtonSolver;
 class UzawaLoop;
 
@@ -31,6 +32,7 @@ struct StepSolverParts {
   NewtonSolver &newton;
   const UzawaLoop &uzawa;
   model::MuscleHistory &history;
+  const AirflowCoupling *airflow = nullptr; // a scene with airflow: every solve is coupled to it
 };
 
 class StepSolver {
@@ -45,7 +47,8 @@ public:
   // Solves from `state` (the start on entry) to `time` into `state`; the muscle history's trial
   // values are this step's, at the neural inputs `inputs` (one per muscle group; empty: the
   // deck's u(t)), which reach the model as its p2. `quiet`: no per-iteration output (a
-  // controller's candidates). Collective.
+  // controller's candidates). With airflow, the solve is coupled to the flow (AirflowCoupling):
+  // the solid is solved once per coupling iteration, from the last. Collective.
   StepAttempt solve(double time, double dt, StepState &state, bool quiet, const std::vector<double> &inputs = {}) const;
   // A converged state in which material has crossed a symmetry plane is refused
   // (model/SymmetryPlanes.hpp): `attempt` then fails, saying where. Collective.
@@ -57,6 +60,9 @@ public:
   void measureCorners(const StepState &state, double time, StepAttempt &attempt) const;
 
 private:
+  // One solve of the solid under the loads as they stand.
+  StepAttempt solveSolid(double time, double dt, StepState &state, bool quiet, const std::vector<double> &inputs) const;
+
   StepSolverParts parts_;
   const model::Scene &scene_;
   ReuseScope keptScope_;

@@ -14,6 +14,7 @@
 #include "assembly/TpetraTypes.hpp"
 #include "solvers/control/ControlStepResult.hpp"
 #include "solvers/nonlinear/SolveStatistics.hpp"
+#include "solvers/run/AirflowStep.hpp"
 
 namespace glossa::solvers {
 
@@ -45,6 +46,7 @@ struct StepAttempt {
   double pathStiffness = std::numeric_limits<double>::quiet_NaN(); // S (LimitPointMonitor); NaN: not measured
   bool unstable = false;            // converged, but past a limit point (S <= 0)
   nlohmann::json insideOut;         // converged inside out: where (model/SymmetryPlanes.hpp)
+  AirflowStep airflow;              // a scene with airflow: the coupling (its solves' counts summed in `uzawa`)
 };
 
 // The step being attempted: to `time` by `dt`, its state the start on entry and the trial state

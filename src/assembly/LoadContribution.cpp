@@ -98,12 +98,13 @@ public:
   Kind kind() const override { return Kind::follower; }
   bool onSurface() const override { return true; }
   bool addTo(const LoadTarget &target, double time) const override {
-    for (const auto &face : load_.faces) {
+    for (std::size_t k = 0; k < load_.faces.size(); ++k) {
+      const mesh::ElementFace &face = load_.faces[k];
       if (target.layout.elementOwner[face.element] != target.layout.rank) continue;
       const FaceAtTarget f = faceAt(target, face);
       loads::FaceTangent Kf; // filled, and read, only with a tangent
-      const loads::FaceForces ff =
-          loads::followerPressureForces(f.X, f.u, load_.pressure.atGaussPoints(f.X, time), target.K ? &Kf : nullptr);
+      const std::array<double, 4> p = load_.given ? (*load_.given)[k] : load_.pressure.atGaussPoints(f.X, time);
+      const loads::FaceForces ff = loads::followerPressureForces(f.X, f.u, p, target.K ? &Kf : nullptr);
       target.subtract(f.nodes.data(), 4, ff.data(), target.K ? Kf.data() : nullptr);
     }
     return true;

@@ -48,8 +48,13 @@ Teuchos::ParameterList airflowParameters() {
                     "the flow and the solid are coupled when no section's pressure changes by more than this "
                     "between two coupling iterations",
                     io::Range::positive());
+  io::declareString(p, "coupling method", "Aitken",
+                    "how the sections' pressures are updated between coupling iterations: Aitken's dynamic "
+                    "relaxation, constant relaxation, or the interface quasi-Newton method IQN-ILS (doc/airflow.md)",
+                    {"Aitken", "constant relaxation", "quasi-Newton"});
   io::declareDouble(p, "relaxation", 0.5, "",
-                    "the first coupling iteration's relaxation of the sections' pressures (later ones adapt it)",
+                    "the relaxation of the sections' pressures: constant relaxation's factor, Aitken's and the "
+                    "quasi-Newton method's first one (later ones adapt it)",
                     {0.0, 1.0, true, false});
   io::declareInt(p, "maximum coupling iterations", 30, "coupling iterations of a step before it is cut back",
                  io::Range::closed(1, 1000));
@@ -69,6 +74,7 @@ AirflowParameters parseAirflowParameters(const io::Deck &deck, double endTime) {
                                               {"recovery coefficient", driven},
                                               {"pressure mapping", driven},
                                               {"coupling tolerance", driven},
+                                              {"coupling method", driven},
                                               {"relaxation", driven},
                                               {"maximum coupling iterations", driven}};
   refuseUnreadParameters(deck, {"Airflow"}, kDrivenBy, readers);
@@ -87,6 +93,10 @@ AirflowParameters parseAirflowParameters(const io::Deck &deck, double endTime) {
   p.recoveryCoefficient = a.get<double>("recovery coefficient");
   p.mapping = a.get<std::string>("pressure mapping") == "linear" ? AirflowMapping::linear : AirflowMapping::nearestSection;
   p.couplingTolerance = a.get<double>("coupling tolerance");
+  const auto method = a.get<std::string>("coupling method");
+  p.couplingMethod = method == "Aitken"                ? airflow::CouplingMethod::aitken
+                     : method == "constant relaxation" ? airflow::CouplingMethod::constantRelaxation
+                                                       : airflow::CouplingMethod::quasiNewton;
   p.relaxation = a.get<double>("relaxation");
   p.maximumCouplingIterations = a.get<int>("maximum coupling iterations");
   return p;

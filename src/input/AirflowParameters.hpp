@@ -8,6 +8,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "airflow/CouplingIteration.hpp"
 #include "io/deck/Deck.hpp"
 #include "model/TimeFunction.hpp"
 
@@ -28,6 +29,7 @@ struct AirflowParameters {
   double recoveryCoefficient = 0.0;  // past the throat, in [0, 1]
   AirflowMapping mapping = AirflowMapping::linear;
   double couplingTolerance = 0.1;    // [Pa]
+  airflow::CouplingMethod couplingMethod = airflow::CouplingMethod::aitken;
   double relaxation = 0.5;           // the first iteration's, in (0, 1]
   int maximumCouplingIterations = 30;
 };

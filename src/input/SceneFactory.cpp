@@ -22,6 +22,7 @@
 #include "mesh/ThickCylinderGenerator.hpp"
 #include "mesh/ThickSphereGenerator.hpp"
 #include "input/TimeFunctionParameters.hpp"
+#include "input/AirflowParameters.hpp"
 #include "input/AirwayParameters.hpp"
 #include "input/ContactParameters.hpp"
 #include "input/DeckSets.hpp"
@@ -363,6 +364,8 @@ void declareSceneParameters(ParameterList &schema) {
                "one face set against one rigid obstacle, another face set or itself");
   schema.set("Contact", contacts, "contact with rigid obstacles, one sublist each (doc/contact.md)");
   schema.set("Airway", airwayParameters(), "the airway's lumen between the tongue and a rigid wall (doc/airway.md)");
+  schema.set("Airflow", airflowParameters(),
+             "the 1D airflow through the airway's lumen, its pressure on the airway faces (doc/airflow.md)");
   ParameterList points;
   points.set(io::kAnySublist, namedPointParameters(), "one named point");
   schema.set("Named points", points,
@@ -480,6 +483,23 @@ void buildLoads(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Sc
   }
 }
 
+// The airflow's pressure on the Airway section's face set: a follower pressure whose Gauss-point
+// values the run sets from the flow at every coupling iteration (doc/airflow.md).
+void addAirflowLoad(const io::Deck &deck, const mesh::HexMesh &m, double endTime, Scene &scene) {
+  if (parseAirflowParameters(deck, endTime).drive == AirflowDrive::off) return;
+  if (deck.root().sublist("Airway").get<std::string>("face set").empty())
+    throw io::DeckError(deck.where({"Airflow", "driven by"}) +
+                        ": the airflow runs through the airway's lumen, which the Airway section defines: give "
+                        "Airway/face set, wall file, start point and end point (doc/airway.md)");
+  FollowerPressureLoad load;
+  load.name = "Airflow";
+  load.faces = faceSetAt(deck, m, {"Airway", "face set"});
+  load.given = std::make_shared<std::vector<std::array<double, 4>>>(load.faces.size(), std::array<double, 4>{});
+  scene.airflowLoad = static_cast<int>(scene.pressures.size());
+  scene.pressures.push_back(std::move(load));
+  scene.symmetricTangent = false; // a follower load's tangent is not symmetric: GMRES
+}
+
 // The traced points: the generator's named points and the deck's, each at a node or interpolated
 // in the element that holds it.
 void traceNamedPoints(const io::Deck &deck, Scene &scene) {
@@ -532,6 +552,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
 
   scene.dirichlet = buildBoundaryConditions(deck, m, endTime);
   buildLoads(deck, m, endTime, scene);
+  addAirflowLoad(deck, m, endTime, scene);
   buildContacts(deck, m, endTime, scene);
   traceNamedPoints(deck, scene);
   if (scene.tracedPoints.empty())

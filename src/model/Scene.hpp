@@ -79,6 +79,11 @@ struct FollowerPressureLoad {
   std::string name;
   std::vector<mesh::ElementFace> faces;
   loads::PressureField pressure = loads::PressureField::uniform(0.0);
+  // When set, the pressures at each face's four Gauss points (index as `faces`, order as
+  // loads::followerPressureGaussPoints) replace `pressure`: the airflow's, which the run sets
+  // between solves (doc/airflow.md). Shared and mutable through a const scene, as
+  // RigidContact::state, because it is the run's state.
+  std::shared_ptr<std::vector<std::array<double, 4>>> given;
 };
 
 // How a contact's condition g >= 0 is enforced (doc/contact.md, "Penalty and augmented Lagrangian").
@@ -129,6 +134,7 @@ struct Scene {
   std::vector<DeadTractionLoad> tractions;
   std::vector<BodyForceLoad> bodyForces;
   std::vector<FollowerPressureLoad> pressures;
+  int airflowLoad = -1; // the pressure load the airflow sets (index into `pressures`); -1: no airflow
   std::vector<RigidContact> contacts;
   std::vector<std::string> tracedPoints; // names in mesh.namedPoints, in deck order
   // What the mesh reader changed on the way in (ImportedMesh::notes), for the run to print.

@@ -1,8 +1,11 @@
 #pragma once
 // A CSV file written by glossa (header "name [unit],..."), read back as rows keyed by column name
-// without its unit, for tests that check its values.
+// without its unit, for tests that check its values; a column that is not a number (the key of a
+// keyed CSV, e.g. "airway") reads as NaN.
 
+#include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -25,7 +28,9 @@ inline std::vector<std::map<std::string, double>> readCsvRows(const std::filesys
     std::string c;
     for (const auto &n : names) {
       std::getline(s, c, ',');
-      row[n] = std::stod(c);
+      char *end = nullptr;
+      const double value = std::strtod(c.c_str(), &end);
+      row[n] = end == c.c_str() ? std::numeric_limits<double>::quiet_NaN() : value;
     }
     rows.push_back(row);
   }

@@ -1,0 +1,57 @@
+#pragma once
+// The airflow coupled to the solid at every step (doc/airflow.md, "Coupling"): a partitioned
+// fixed-point iteration on the pressures of the lumen's sections. Each iteration maps the
+// sections' pressures onto the airway faces (the scene's airflow load), solves the solid, measures
+// the lumen of the deformed tongue and solves the flow through it; the step is coupled when no
+// section's pressure changes by more than the deck's tolerance, the solid then in equilibrium under
+// pressures the flow reproduces to that tolerance. The update between iterations is the deck's
+// coupling method (airflow/CouplingIteration). The first iterate is the flow through the lumen of
+// the step's starting state, so a step depends on nothing but that state (a restart needs no
+// coupling history). Every rank measures the same lumen from the gathered displacement, so all
+// ranks take the same decisions.
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "airflow/AirwayFlow.hpp"
+#include "input/AirflowParameters.hpp"
+#include "model/AirwayOutput.hpp"
+#include "model/Scene.hpp"
+#include "solvers/run/AirflowStep.hpp"
+
+namespace glossa::solvers {
+
+class AirflowCoupling {
+public:
+  // `scene.airflowLoad` the load the coupling sets; `airway` the lumen (the Airway section).
+  AirflowCoupling(const input::AirflowParameters &parameters, std::shared_ptr<const model::AirwayOutput> airway,
+                  const model::Scene &scene);
+
+  // Solves the solid under the face pressures as set into `uAll` (every node's displacement, on
+  // every rank); false: the solve failed (the coupling stops there).
+  using SolidSolve = std::function<bool(std::vector<double> &uAll)>;
+
+  // The step to `time` coupled, from the starting state's displacement `uStart`. `progress`: a
+  // line per coupling iteration. Collective through `solve`.
+  AirflowStep couple(double time, const std::vector<double> &uStart, const SolidSolve &solve, bool progress) const;
+
+  // The flow through the lumen at `uAll` under the drive at `time`, uncoupled (the t = 0 record).
+  AirflowStep flowAt(double time, const std::vector<double> &uAll) const;
+
+  const input::AirflowParameters &parameters() const { return parameters_; }
+  std::size_t numSections() const { return flow_.numSections(); }
+
+private:
+  airflow::FlowDrive drive(double time) const;
+  airflow::AirwayFlowState measure(double time, const std::vector<double> &uAll) const;
+
+  input::AirflowParameters parameters_;
+  std::shared_ptr<const model::AirwayOutput> airway_;
+  const model::Scene &scene_;
+  airflow::AirwayFlow flow_;
+  std::shared_ptr<std::vector<std::array<double, 4>>> facePressures_; // the airflow load's
+};
+
+} // namespace glossa::solvers
