@@ -110,7 +110,8 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda, d
 
 UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
                              const NewtonSolver::ToleranceRule &toleranceRule,
-                             const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const {
+                             const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa,
+                             const OuterCondition &outer) const {
   UzawaResult result;
   // The tight tolerance, fixed by the first solve's initial residual. Inexact: while the
   // multipliers are still far from their fixed point, solving each Newton problem to 1e-8 is
@@ -127,7 +128,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
   };
   bool tight = !inexact_;
   std::vector<double> previousErrors; // after the last tight solve, per tissue
-  for (int k = 1; k <= (measuresPhysicalLaw() || augmentedContact_ ? maxIterations_ : 1); ++k) {
+  for (int k = 1; k <= (measuresPhysicalLaw() || augmentedContact_ || outer ? maxIterations_ : 1); ++k) {
     newton_.model().setMultipliers(lambda);
     NewtonResult n = tight ? newton_.solve(u, NewtonSolver::ToleranceRule(tightTolerance), onNewton)
                            : newton_.solveToResidual(u, NewtonSolver::ToleranceRule(looseTolerance), onNewton,
@@ -152,6 +153,15 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     updateTimer.reset(); // the callback records the solve: not the update's cost
     if (onUzawa) onUzawa(k, result.newton.back(), result.dilatation, result.contacts);
     const bool volumeMet = !measuresPhysicalLaw() || result.dilatation.max < tolerance_;
+    const OuterVerdict outerVerdict = outer ? outer(u) : OuterVerdict::met;
+    if (outerVerdict == OuterVerdict::failed) {
+      result.outerFailed = true;
+      return result;
+    }
+    if (outerVerdict == OuterVerdict::updated && volumeMet && gapMet) {
+      tight = true; // only the outer condition's loads moved
+      continue;
+    }
     if (volumeMet && gapMet) {
       if (tight) {
         result.converged = true;

@@ -41,8 +41,15 @@ public:
                                            const std::vector<contact::ContactMeasures> &)>;
   UzawaResult solve(assembly::Vector &u, std::vector<double> &lambda, double residualTolerance,
                     const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const;
+  // A further condition iterated in the same loop (the airflow's coupling, doc/airflow.md): after
+  // every converged Newton solve it is shown the displacement, updates its own loads if it is not
+  // met, and says so; the loop ends when it, the volume and the contacts are all met, or when it
+  // fails (the loop then returns unconverged, `outerFailed` set).
+  enum class OuterVerdict { met, updated, failed };
+  using OuterCondition = std::function<OuterVerdict(const assembly::Vector &u)>;
   UzawaResult solve(assembly::Vector &u, std::vector<double> &lambda, const NewtonSolver::ToleranceRule &residualTolerance,
-                    const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa) const;
+                    const NewtonSolver::IterationCallback &onNewton, const UzawaCallback &onUzawa,
+                    const OuterCondition &outer = {}) const;
 
   DilatationError dilatationError(const assembly::ElementFields &fields) const;
   // The multipliers the next update would set from these element fields, beta p_e per local

@@ -45,6 +45,7 @@ struct UzawaResult {
   // Per scene contact, at the last converged solve (its gaps recorded in the contact's state).
   std::vector<contact::ContactMeasures> contacts;
   int contactUpdates = 0; // Uzawa updates of contact multipliers in this step
+  bool outerFailed = false; // the loop's outer condition (UzawaLoop::OuterCondition) failed
   bool gapMet() const {
     for (const auto &c : contacts)
       if (!c.gapMet()) return false;

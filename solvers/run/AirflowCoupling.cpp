@@ -89,49 +89,75 @@ AirflowStep AirflowCoupling::flowAt(double time, const std::vector<double> &uAll
   return out;
 }
 
+void AirflowCoupling::setFacePressures(const Eigen::VectorXd &sectionPressure) const {
+  *facePressures_ = flow_.facePressures(std::vector<double>(sectionPressure.data(), sectionPressure.data() + sectionPressure.size()));
+}
+
+AirflowCoupling::StepCoupling::StepCoupling(const AirflowCoupling &coupling, double time,
+                                            const std::vector<double> &uStart, bool progress)
+    : coupling_(coupling), time_(time), progress_(progress),
+      iteration_(coupling.parameters_.couplingMethod, coupling.parameters_.relaxation) {
+  result_.on = true;
+  try { // the first iterate: the flow through the lumen the step starts from
+    pressure_ = asVector(coupling_.measure(time, uStart).sectionPressure);
+    coupling_.setFacePressures(pressure_);
+  } catch (const std::exception &e) { // a lumen the flow cannot pass (the same on every rank)
+    result_.why = std::string("the airflow: ") + e.what();
+  }
+}
+
+AirflowCoupling::StepCoupling::Verdict AirflowCoupling::StepCoupling::afterSolve(const std::vector<double> &uAll) {
+  const input::AirflowParameters &parameters = coupling_.parameters_;
+  ++result_.iterations;
+  try {
+    const airflow::AirwayFlowState f = coupling_.measure(time_, uAll);
+    const Eigen::VectorXd image = asVector(f.sectionPressure);
+    result_.residual = largestChange(image, pressure_);
+    result_.residuals.push_back(result_.residual);
+    if (progress_)
+      std::printf("  airflow %d: flow rate %.6g L/s  smallest area %.4g mm^2%s  largest pressure change %.3e Pa\n",
+                  result_.iterations, 1e3 * f.flow.flowRate, 1e6 * f.smallestArea, f.flow.closed ? " (closed)" : "",
+                  result_.residual);
+    if (result_.residual <= parameters.couplingTolerance) {
+      describe(f, result_);
+      // What the solid carries; the flow's own pressures are within the tolerance of them.
+      result_.sectionPressure.assign(pressure_.data(), pressure_.data() + pressure_.size());
+      result_.converged = true;
+      result_.why.clear();
+      return Verdict::coupled;
+    }
+    result_.converged = false;
+    if (result_.iterations >= parameters.maximumCouplingIterations) {
+      char why[300];
+      std::snprintf(why, sizeof why,
+                    "the airflow coupling did not converge in %d iterations ('maximum coupling iterations'): a "
+                    "section's pressure still changed by %.3g Pa, above the 'coupling tolerance' of %.3g Pa",
+                    parameters.maximumCouplingIterations, result_.residual, parameters.couplingTolerance);
+      result_.why = why;
+      return Verdict::failed;
+    }
+    pressure_ = iteration_.next(pressure_, image);
+    coupling_.setFacePressures(pressure_);
+    return Verdict::again;
+  } catch (const std::exception &e) {
+    result_.why = std::string("the airflow: ") + e.what();
+    return Verdict::failed;
+  }
+}
+
 AirflowStep AirflowCoupling::couple(double time, const std::vector<double> &uStart, const SolidSolve &solve,
                                     bool progress) const {
-  AirflowStep out;
-  out.on = true;
-  airflow::CouplingIteration iteration(parameters_.couplingMethod, parameters_.relaxation);
+  StepCoupling step(*this, time, uStart, progress);
+  if (!step.started()) return step.result();
   std::vector<double> uAll = uStart;
-  try {
-    // The first iterate: the flow through the lumen the step starts from.
-    Eigen::VectorXd p = asVector(measure(time, uAll).sectionPressure);
-    for (int k = 1; k <= parameters_.maximumCouplingIterations; ++k) {
-      const std::vector<double> pk(p.data(), p.data() + p.size());
-      *facePressures_ = flow_.facePressures(pk);
-      out.iterations = k;
-      if (!solve(uAll)) {
-        out.why = "the solid's solve failed at coupling iteration " + std::to_string(k);
-        return out;
-      }
-      const airflow::AirwayFlowState f = measure(time, uAll);
-      const Eigen::VectorXd image = asVector(f.sectionPressure);
-      out.residual = largestChange(image, p);
-      out.residuals.push_back(out.residual);
-      if (progress)
-        std::printf("  airflow %d: flow rate %.6g L/s  smallest area %.4g mm^2%s  largest pressure change %.3e Pa\n", k,
-                    1e3 * f.flow.flowRate, 1e6 * f.smallestArea, f.flow.closed ? " (closed)" : "", out.residual);
-      if (out.residual <= parameters_.couplingTolerance) {
-        describe(f, out);
-        out.sectionPressure = pk; // what the solid carries; the flow's own are within the tolerance
-        out.converged = true;
-        return out;
-      }
-      p = iteration.next(p, image);
+  for (;;) {
+    if (!solve(uAll)) {
+      AirflowStep out = step.result();
+      out.why = "the solid's solve failed at coupling iteration " + std::to_string(out.iterations + 1);
+      return out;
     }
-  } catch (const std::exception &e) { // a lumen the flow cannot pass (same on every rank)
-    out.why = std::string("the airflow: ") + e.what();
-    return out;
+    if (step.afterSolve(uAll) != StepCoupling::Verdict::again) return step.result();
   }
-  char why[300];
-  std::snprintf(why, sizeof why,
-                "the airflow coupling did not converge in %d iterations ('maximum coupling iterations'): a section's "
-                "pressure still changed by %.3g Pa, above the 'coupling tolerance' of %.3g Pa",
-                parameters_.maximumCouplingIterations, out.residual, parameters_.couplingTolerance);
-  out.why = why;
-  return out;
 }
 
 } // namespace glossa::solvers

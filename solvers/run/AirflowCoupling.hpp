@@ -5,10 +5,12 @@
 // the lumen of the deformed tongue and solves the flow through it; the step is coupled when no
 // section's pressure changes by more than the deck's tolerance, the solid then in equilibrium under
 // pressures the flow reproduces to that tolerance. The update between iterations is the deck's
-// coupling method (airflow/CouplingIteration). The first iterate is the flow through the lumen of
-// the step's starting state, so a step depends on nothing but that state (a restart needs no
-// coupling history). Every rank measures the same lumen from the gathered displacement, so all
-// ranks take the same decisions.
+// coupling method (airflow/CouplingIteration). The iterations run either around whole step solves
+// (each a converged Uzawa loop) or inside the Uzawa loop, one per Newton solve beside the
+// multipliers' update (StepCoupling::afterSolve as the loop's outer condition). The first iterate
+// is the flow through the lumen of the step's starting state, so a step depends on nothing but that
+// state (a restart needs no coupling history). Every rank measures the same lumen from the
+// gathered displacement, so all ranks take the same decisions.
 
 #include <array>
 #include <functional>
@@ -29,12 +31,35 @@ public:
   AirflowCoupling(const input::AirflowParameters &parameters, std::shared_ptr<const model::AirwayOutput> airway,
                   const model::Scene &scene);
 
+  // One step's coupling iterations.
+  class StepCoupling {
+  public:
+    enum class Verdict { coupled, again, failed };
+    // Sets the face pressures to the flow through the lumen at `uStart` (every node's
+    // displacement), the step's start; a lumen the flow cannot pass fails at once (result()).
+    StepCoupling(const AirflowCoupling &coupling, double time, const std::vector<double> &uStart, bool progress);
+    bool started() const { return result_.why.empty(); }
+    // After a solid solve that reached `uAll`: the flow through its lumen; coupled when no
+    // section's pressure changes by more than the tolerance, else the next face pressures are
+    // set (again), or the iterations are spent or the flow fails (failed).
+    Verdict afterSolve(const std::vector<double> &uAll);
+    const AirflowStep &result() const { return result_; }
+
+  private:
+    const AirflowCoupling &coupling_;
+    double time_;
+    bool progress_;
+    airflow::CouplingIteration iteration_;
+    Eigen::VectorXd pressure_; // the sections' pressures the solid is being solved with
+    AirflowStep result_;
+  };
+
   // Solves the solid under the face pressures as set into `uAll` (every node's displacement, on
   // every rank); false: the solve failed (the coupling stops there).
   using SolidSolve = std::function<bool(std::vector<double> &uAll)>;
 
-  // The step to `time` coupled, from the starting state's displacement `uStart`. `progress`: a
-  // line per coupling iteration. Collective through `solve`.
+  // The step to `time` coupled around whole solid solves, from the starting state's displacement
+  // `uStart`. `progress`: a line per coupling iteration. Collective through `solve`.
   AirflowStep couple(double time, const std::vector<double> &uStart, const SolidSolve &solve, bool progress) const;
 
   // The flow through the lumen at `uAll` under the drive at `time`, uncoupled (the t = 0 record).
@@ -44,6 +69,8 @@ public:
   std::size_t numSections() const { return flow_.numSections(); }
 
 private:
+  // Sets the airflow load's face pressures from the sections'.
+  void setFacePressures(const Eigen::VectorXd &sectionPressure) const;
   airflow::FlowDrive drive(double time) const;
   airflow::AirwayFlowState measure(double time, const std::vector<double> &uAll) const;
 

@@ -41,6 +41,50 @@ std::string failureReason(const StepAttempt &a) {
 StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool quiet,
                               const std::vector<double> &inputs) const {
   if (!parts_.airflow) return solveSolid(time, dt, state, quiet, inputs);
+  return parts_.airflow->parameters().loop == input::AirflowLoop::uzawaLoop
+             ? solveCoupledInUzawaLoop(time, dt, state, quiet, inputs)
+             : solveCoupledAroundSolves(time, dt, state, quiet, inputs);
+}
+
+namespace {
+// A step whose solid converged but whose coupling did not (or whose flow failed) fails with the
+// coupling's reason; the coupling's outcome goes with the attempt.
+void takeCoupling(const AirflowStep &coupled, StepAttempt &attempt) {
+  attempt.airflow = coupled;
+  if (coupled.converged) return;
+  attempt.ok = false;
+  // A Newton solve that failed is the reason (solveSolid said why).
+  if (!attempt.uzawa.newton.empty() && !attempt.uzawa.newton.back().converged) return;
+  attempt.why = !coupled.why.empty() ? coupled.why
+                                     : "the airflow coupling did not converge within 'maximum Uzawa iterations' "
+                                       "Newton solves";
+}
+} // namespace
+
+StepAttempt StepSolver::solveCoupledInUzawaLoop(double time, double dt, StepState &state, bool quiet,
+                                                const std::vector<double> &inputs) const {
+  const assembly::ResultEvaluator results(parts_.assembler);
+  AirflowCoupling::StepCoupling coupling(*parts_.airflow, time, results.gatherDisplacement(state.u),
+                                         progress_ && !quiet);
+  StepAttempt out;
+  if (!coupling.started()) {
+    takeCoupling(coupling.result(), out);
+    return out;
+  }
+  const UzawaLoop::OuterCondition outer = [&](const assembly::Vector &u) {
+    switch (coupling.afterSolve(results.gatherDisplacement(u))) {
+    case AirflowCoupling::StepCoupling::Verdict::coupled: return UzawaLoop::OuterVerdict::met;
+    case AirflowCoupling::StepCoupling::Verdict::again: return UzawaLoop::OuterVerdict::updated;
+    default: return UzawaLoop::OuterVerdict::failed;
+    }
+  };
+  out = solveSolid(time, dt, state, quiet, inputs, outer);
+  takeCoupling(coupling.result(), out);
+  return out;
+}
+
+StepAttempt StepSolver::solveCoupledAroundSolves(double time, double dt, StepState &state, bool quiet,
+                                                 const std::vector<double> &inputs) const {
   const assembly::ResultEvaluator results(parts_.assembler);
   StepAttempt last;
   UzawaResult counted; // the coupling's earlier solves, added to the last one's counts
@@ -62,18 +106,12 @@ StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool qui
   last.uzawa.newtonIterations += counted.newtonIterations;
   last.uzawa.linearIterations += counted.linearIterations;
   last.uzawa.contactUpdates += counted.contactUpdates;
-  if (!coupled.converged && last.ok) { // the solid converged; the coupling did not, or the flow failed
-    last.ok = false;
-    last.why = coupled.why;
-  } else if (!coupled.converged && last.why.empty()) {
-    last.why = coupled.why;
-  }
-  last.airflow = coupled;
+  takeCoupling(coupled, last);
   return last;
 }
 
 StepAttempt StepSolver::solveSolid(double time, double dt, StepState &state, bool quiet,
-                                   const std::vector<double> &inputs) const {
+                                   const std::vector<double> &inputs, const UzawaLoop::OuterCondition &outer) const {
   StepAttempt out;
   if (keptScope_ == ReuseScope::step) parts_.newton.forgetLinearSolver();
   MumpsPreconditionerFactory::beginStep(); // fresh factors for each step, retry and candidate
@@ -108,7 +146,7 @@ StepAttempt StepSolver::solveSolid(double time, double dt, StepState &state, boo
     std::printf("\n");
   };
   const std::vector<double> ratios = parts_.uzawa.penaltyRatios();
-  out.uzawa = parts_.uzawa.solve(state.u, state.lambda, tolerance, onNewton, onUzawa);
+  out.uzawa = parts_.uzawa.solve(state.u, state.lambda, tolerance, onNewton, onUzawa, outer);
   for (std::size_t t = 0; talk_ && t < ratios.size(); ++t)
     if (parts_.uzawa.penaltyRatios()[t] != ratios[t])
       std::printf("  note: the Uzawa loop contracts slowly in tissue '%s': kappa_AL raised to %.3g mu for the rest of "

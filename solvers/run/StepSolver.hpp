@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "solvers/incompressibility/UzawaLoop.hpp"
 #include "solvers/linear/LinearSolverFactory.hpp"
 #include "solvers/run/StepState.hpp"
 
@@ -60,8 +61,15 @@ public:
   void measureCorners(const StepState &state, double time, StepAttempt &attempt) const;
 
 private:
-  // One solve of the solid under the loads as they stand.
-  StepAttempt solveSolid(double time, double dt, StepState &state, bool quiet, const std::vector<double> &inputs) const;
+  // One solve of the solid under the loads as they stand; `outer`: a condition iterated in its
+  // Uzawa loop (the airflow's coupling).
+  StepAttempt solveSolid(double time, double dt, StepState &state, bool quiet, const std::vector<double> &inputs,
+                         const UzawaLoop::OuterCondition &outer = {}) const;
+  // The step coupled to the airflow, around whole solid solves or inside their Uzawa loop.
+  StepAttempt solveCoupledAroundSolves(double time, double dt, StepState &state, bool quiet,
+                                       const std::vector<double> &inputs) const;
+  StepAttempt solveCoupledInUzawaLoop(double time, double dt, StepState &state, bool quiet,
+                                      const std::vector<double> &inputs) const;
 
   StepSolverParts parts_;
   const model::Scene &scene_;

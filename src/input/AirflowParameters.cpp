@@ -48,6 +48,11 @@ Teuchos::ParameterList airflowParameters() {
                     "the flow and the solid are coupled when no section's pressure changes by more than this "
                     "between two coupling iterations",
                     io::Range::positive());
+  io::declareString(p, "coupling loop", "Uzawa loop",
+                    "where the coupling iterates: Uzawa loop: one coupling iteration after every Newton solve, "
+                    "beside the update of the volume multipliers; step solve: one after every converged step "
+                    "solve (doc/airflow.md)",
+                    {"Uzawa loop", "step solve"});
   io::declareString(p, "coupling method", "Aitken",
                     "how the sections' pressures are updated between coupling iterations: Aitken's dynamic "
                     "relaxation, constant relaxation, or the interface quasi-Newton method IQN-ILS (doc/airflow.md)",
@@ -74,6 +79,7 @@ AirflowParameters parseAirflowParameters(const io::Deck &deck, double endTime) {
                                               {"recovery coefficient", driven},
                                               {"pressure mapping", driven},
                                               {"coupling tolerance", driven},
+                                              {"coupling loop", driven},
                                               {"coupling method", driven},
                                               {"relaxation", driven},
                                               {"maximum coupling iterations", driven}};
@@ -93,6 +99,7 @@ AirflowParameters parseAirflowParameters(const io::Deck &deck, double endTime) {
   p.recoveryCoefficient = a.get<double>("recovery coefficient");
   p.mapping = a.get<std::string>("pressure mapping") == "linear" ? AirflowMapping::linear : AirflowMapping::nearestSection;
   p.couplingTolerance = a.get<double>("coupling tolerance");
+  p.loop = a.get<std::string>("coupling loop") == "Uzawa loop" ? AirflowLoop::uzawaLoop : AirflowLoop::stepSolve;
   const auto method = a.get<std::string>("coupling method");
   p.couplingMethod = method == "Aitken"                ? airflow::CouplingMethod::aitken
                      : method == "constant relaxation" ? airflow::CouplingMethod::constantRelaxation

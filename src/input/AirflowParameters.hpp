@@ -18,6 +18,9 @@ Teuchos::ParameterList airflowParameters();
 
 enum class AirflowDrive { off, pressures, flowRate };
 enum class AirflowMapping { linear, nearestSection };
+// Where the coupling iterates: one iteration per Newton solve inside the Uzawa loop, or one per
+// converged step solve.
+enum class AirflowLoop { uzawaLoop, stepSolve };
 
 struct AirflowParameters {
   AirflowDrive drive = AirflowDrive::off;
@@ -30,6 +33,7 @@ struct AirflowParameters {
   AirflowMapping mapping = AirflowMapping::linear;
   double couplingTolerance = 0.1;    // [Pa]
   airflow::CouplingMethod couplingMethod = airflow::CouplingMethod::aitken;
+  AirflowLoop loop = AirflowLoop::uzawaLoop;
   double relaxation = 0.5;           // the first iteration's, in (0, 1]
   int maximumCouplingIterations = 30;
 };

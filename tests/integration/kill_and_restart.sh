@@ -4,7 +4,8 @@
 # and, once its latest checkpoint is after step K and a step more is on disk, kills every
 # rank with SIGKILL (nothing is flushed or cleaned up; STOP_SIGNAL=TERM sends SIGTERM instead,
 # after which the run writes a checkpoint of its last step); restarts it with --restart OUT/killed.
-# Passes when the restarted run converged and its traces.csv, reactions.csv, activation.csv, contact.csv, energy.csv and
+# Passes when the restarted run converged and its traces.csv, reactions.csv, activation.csv, contact.csv, energy.csv,
+# airway.csv, airflow.csv and
 # controls.csv (those the run writes) are byte for byte the uninterrupted run's, summary.json
 # lists the same steps (times, Newton, Krylov and Uzawa counts, control inputs), results.xdmf
 # the same field steps, and the summary records the restart.
@@ -32,7 +33,7 @@ echo "killed after $(steps) steps on disk, the latest checkpoint after step $(ch
 "$@" --restart "$out/killed" --quiet >"$out/restart.log" 2>&1 || { echo "the restarted run failed"; cat "$out/restart.log"; exit 1; }
 
 status=0
-for f in traces.csv reactions.csv activation.csv controls.csv resultants.csv volumes.csv contact.csv energy.csv; do
+for f in traces.csv reactions.csv activation.csv controls.csv resultants.csv volumes.csv contact.csv energy.csv airway.csv airflow.csv; do
   [ -f "$out/whole/$f" ] || continue
   if cmp -s "$out/whole/$f" "$out/killed/$f"; then echo "$f: identical"; else echo "$f differs"; diff "$out/whole/$f" "$out/killed/$f" | head -5; status=1; fi
 done

@@ -2,7 +2,8 @@
 # Regenerates the stored reference trace of a deck, on purpose only (never called by a test):
 #   sh tests/regression/regenerate.sh inputs/paper/s7_1_a_internal.xml [build [NAME [--set path=value ...]]]
 # runs the deck on 1 rank and copies its traces.csv to tests/regression/NAME.csv (NAME: the deck's
-# name); the --set options are those of the test (e.g. a shortened end time).
+# name), and a scene with airflow's airflow.csv to NAME_flow.csv; the --set options are those of
+# the test (e.g. a shortened end time).
 # Review the difference (git diff) and say why in the commit message.
 set -e
 deck="$1"
@@ -14,3 +15,7 @@ out=$(mktemp -d)
 "$build/glossa" run "$deck" --output "$out" --quiet --set Output/fields=false "$@"
 cp "$out/traces.csv" "$(dirname "$0")/$name.csv"
 echo "wrote $(dirname "$0")/$name.csv"
+if [ -f "$out/airflow.csv" ]; then
+  cp "$out/airflow.csv" "$(dirname "$0")/${name}_flow.csv"
+  echo "wrote $(dirname "$0")/${name}_flow.csv"
+fi

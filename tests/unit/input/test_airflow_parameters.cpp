@@ -43,6 +43,8 @@ TEST(AirflowParameters, OffByDefaultWithTheAirOfTheBrief) {
   EXPECT_EQ(on.couplingTolerance, 0.1);
   EXPECT_EQ(on.relaxation, 0.5);
   EXPECT_EQ(on.maximumCouplingIterations, 30);
+  EXPECT_EQ(on.loop, AirflowLoop::uzawaLoop);
+  EXPECT_EQ(on.couplingMethod, airflow::CouplingMethod::aitken);
   EXPECT_EQ(on.nasalPressure(0.7), 0.0);
   EXPECT_EQ(on.trachealPressure(0.7), 0.0);
 }
@@ -64,9 +66,13 @@ TEST(AirflowParameters, PressuresAsValuesTimesTheirTimeFunctions) {
   <Parameter name="coupling tolerance" type="double" value="0.02"/>
   <Parameter name="relaxation" type="double" value="1"/>
   <Parameter name="maximum coupling iterations" type="int" value="12"/>
+  <Parameter name="coupling loop" type="string" value="step solve"/>
+  <Parameter name="coupling method" type="string" value="quasi-Newton"/>
 </ParameterList>
 )X");
   EXPECT_EQ(p.drive, AirflowDrive::pressures);
+  EXPECT_EQ(p.loop, AirflowLoop::stepSolve);
+  EXPECT_EQ(p.couplingMethod, airflow::CouplingMethod::quasiNewton);
   EXPECT_EQ(p.nasalPressure(1.3), 5.0);
   EXPECT_DOUBLE_EQ(p.trachealPressure(0.25), -200.0);
   EXPECT_DOUBLE_EQ(p.trachealPressure(1.5), -400.0);
