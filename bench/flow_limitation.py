@@ -46,12 +46,19 @@ def glossa(deck, out, sets):
 
 
 def vmax(deck, out, nasal, sweep, times, step):
+    # Both end pressures reach the nasal pressure when the sweep starts (on the tongue, after the
+    # gravity ramp: the two-point table has no such wait); the tracheal one then falls by `sweep`.
     two = times.count(",") == 1
-    values = f"{{{nasal}, {nasal - sweep}}}" if two else f"{{{nasal}, {nasal}, {nasal - sweep}}}"
-    summary = glossa(deck, out, [f"Airflow/nasal pressure={nasal}", "Airflow/tracheal pressure=1",
+    tracheal = f"{{{nasal}, {nasal - sweep}}}" if two else f"{{0, {nasal}, {nasal - sweep}}}"
+    nasal_shape = "{1, 1}" if two else "{0, 1, 1}"
+    summary = glossa(deck, out, ["Airflow/nasal pressure=" + str(nasal),
+                                 "Airflow/nasal pressure time function/type=table",
+                                 f"Airflow/nasal pressure time function/times={times}",
+                                 f"Airflow/nasal pressure time function/values={nasal_shape}",
+                                 "Airflow/tracheal pressure=1",
                                  "Airflow/tracheal pressure time function/type=table",
                                  f"Airflow/tracheal pressure time function/times={times}",
-                                 f"Airflow/tracheal pressure time function/values={values}",
+                                 f"Airflow/tracheal pressure time function/values={tracheal}",
                                  f"Time/step size={step}"])
     with open(os.path.join(out, "airflow.csv")) as f:
         rows = list(csv.DictReader(f))

@@ -580,10 +580,15 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
          {}, gravity=g, pressure=-500.0, end_time=2.0, step=0.25, reference="s8_1/reference_inverse.txt",
          face_sets=PALATE_SIDE, contact=PALATE_CONTACT, airway=AIRWAY_SECTION)
 
+# With smoothed normals, as the Pcrit decks: the faceted palate's normals jump between facets, and
+# a tongue point sliding across an edge makes Newton cycle between two states (measured: the supine
+# flow deck swept to -3000 Pa stopped so at -522 Pa).
+SMOOTHED_PALATE_CONTACT = {"palate": {**PALATE_CONTACT["palate"], "normal field": ("string", "smoothed")}}
 FLOW_TRACHEAL = -1000.0
 FLOW = f"""
 The airflow through the airway (doc/airflow.md): the lumen of airway_{{posture}}.xml (20 sections
-between 'airway' and palate8.obj, the palate a frictionless penalty contact of 'palate side') is
+between 'airway' and palate8.obj, the palate a frictionless penalty contact of 'palate side' with
+smoothed normals) is
 the channel of the 1D quasi-steady flow, from the nasal end under the velum (0 Pa) to the tracheal
 end at the vallecula, whose pressure is lowered from 0 at t = 1 s to {FLOW_TRACHEAL:g} Pa at t = 2 s
 (a hard inspiration); the flow's pressure acts on 'airway' in place of eq. 27's, coupled to the
@@ -599,7 +604,37 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
     deck(f"tongue_flow_{posture}", f"The airflow through the tongue's airway, {posture}.\n" + COMMON +
          FLOW.replace("{posture}", posture) + f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
          {}, gravity=g, end_time=2.0, step=0.125, reference="s8_1/reference_inverse.txt",
-         face_sets=PALATE_SIDE, contact=PALATE_CONTACT, airway=AIRWAY_SECTION, airflow=FLOW_SECTION)
+         face_sets=PALATE_SIDE, contact=SMOOTHED_PALATE_CONTACT, airway=AIRWAY_SECTION, airflow=FLOW_SECTION)
+
+FLOW_BREATHING = """
+The breath driven by the airflow (doc/airflow.md, "A breath"): s8_5's scene, but the pressure on
+'airway' is the 1D flow's through the airway's lumen instead of eq. 27's prescribed profile: 20
+sections between 'airway' and the palate and pharyngeal wall (palate8.obj), as in
+airway_{posture}.xml, the palate a frictionless penalty contact of 'palate side' with smoothed
+normals. The nasal end under the velum is at 0 Pa and the tracheal end at the vallecula follows
+eq. 27's breath: from t0 = 1.25 s, p_t = -350 Pa max(sin(2 pi (t - t0)/T), 0)^1.75 with
+T = 2.5 s, until 8.75 s; the flow and the tongue are coupled at every step (and every controller
+candidate) to 0.1 Pa. On the zero-strain configuration of s8_1, gravity over the first second;
+steps of T/8 = 0.3125 s. airflow.csv: the flow rate, the smallest area and each section's
+pressure."""
+FLOW_BREATH_SECTION = {"driven by": ("string", "pressures"), "nasal pressure": ("double", 0.0),
+                       "tracheal pressure": ("double", -350.0),
+                       "tracheal pressure time function": ("sublist", {"type": ("string", "breathing"),
+                                                                        "breathing period": ("double", 2.5),
+                                                                        "breathing exponent": ("double", 1.75),
+                                                                        "breathing start": ("double", 1.25)})}
+for posture, g in POSTURES:
+    gravity = f"\nGravity {posture}: along {vec(g)} in this mesh's axes."
+    common = dict(gravity=g, end_time=8.75, step=0.3125, reference="s8_1/reference_inverse.txt",
+                  face_sets=PALATE_SIDE, contact=SMOOTHED_PALATE_CONTACT, airway=AIRWAY_SECTION,
+                  airflow=FLOW_BREATH_SECTION)
+    deck(f"s8_5_flow_passive_{posture}", f"Paper §8.5's breathing driven by the airflow, {posture} posture, passive.\n" +
+         COMMON + FLOW_BREATHING.replace("{posture}", posture) + PASSIVE_BREATHING + gravity +
+         " Every muscle group passive (u = 0).", {}, **common)
+    deck(f"s8_5_flow_gradient_{posture}",
+         f"Paper §8.5's breathing driven by the airflow, {posture} posture, position maintenance by neural\n"
+         "control.\n" + COMMON + FLOW_BREATHING.replace("{posture}", posture) + CONTROLLED + GRADIENT + gravity,
+         {}, control=CONTROLLERS["gradient"][1], **common)
 
 PCRIT_SUCTION = -3000.0
 PCRIT = f"""
