@@ -14,11 +14,12 @@ Only the steps with a flow count (on the tongue, t > 1 s, after gravity).
 Writes bench/results/airflow_coupling.csv. Needs build/glossa.
 """
 import argparse
-import csv
 import json
 import os
 import statistics
 import subprocess
+
+from result_table import write_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 GLOSSA = os.path.join(ROOT, "build", "glossa")
@@ -79,12 +80,7 @@ def main():
                       f"newton {r['newton_iterations']:4d} {r['seconds']:.2f} s "
                       f"({r['seconds'] / explicit['seconds']:.2f} x explicit) Q {1e3 * r['flow_rate_m3_s']:.5f} L/s",
                       flush=True)
-    os.makedirs(os.path.dirname(args.table), exist_ok=True)
-    with open(args.table, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
-    print(f"wrote {args.table}")
+    write_rows(args.table, rows)
 
 
 if __name__ == "__main__":

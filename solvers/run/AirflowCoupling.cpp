@@ -93,6 +93,10 @@ void AirflowCoupling::setFacePressures(const Eigen::VectorXd &sectionPressure) c
   *facePressures_ = flow_.facePressures(std::vector<double>(sectionPressure.data(), sectionPressure.data() + sectionPressure.size()));
 }
 
+void AirflowCoupling::showPressures(const std::vector<double> &sectionPressure) const {
+  *facePressures_ = flow_.facePressures(sectionPressure);
+}
+
 AirflowCoupling::StepCoupling::StepCoupling(const AirflowCoupling &coupling, double time,
                                             const std::vector<double> &uStart, bool progress)
     : coupling_(coupling), time_(time), progress_(progress),

@@ -62,8 +62,12 @@ public:
   // `uStart`. `progress`: a line per coupling iteration. Collective through `solve`.
   AirflowStep couple(double time, const std::vector<double> &uStart, const SolidSolve &solve, bool progress) const;
 
-  // The flow through the lumen at `uAll` under the drive at `time`, uncoupled (the t = 0 record).
+  // The flow through the lumen at `uAll` under the drive at `time`, uncoupled (the t = 0 record,
+  // and a controlled step's winner, solved among other candidates).
   AirflowStep flowAt(double time, const std::vector<double> &uAll) const;
+  // Sets the airflow load's face pressures from the sections' (a controlled step's winner's, for
+  // its output fields).
+  void showPressures(const std::vector<double> &sectionPressure) const;
 
   const input::AirflowParameters &parameters() const { return parameters_; }
   std::size_t numSections() const { return flow_.numSections(); }

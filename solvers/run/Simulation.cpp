@@ -120,12 +120,13 @@ void Simulation::record(const StepTrial &trial) {
   RunParts &run = *run_;
   const StepState &state = run.stepper->committed();
   const bool fields = run.stepper->finished() || run.stepper->stepNumber() % run.config.output.every == 0;
+  const AirflowStep airflow = run.airflow ? committedAirflow(trial) : AirflowStep{};
   const auto reactions = run.recorder->record(run.stepper->time(), state.u, state.lambda, fields, trial.attempt.muscle,
                                               run.history->trialInput(), fieldsStamp());
   run.recorder->recordContacts(run.stepper->time(), trial.attempt.uzawa.contacts);
   run.recorder->recordAirway(run.stepper->time(), trial.attempt.uzawa.contacts);
   nlohmann::json step, forces = nlohmann::json::object();
-  if (run.airflow) recordAirflow(trial, step);
+  if (run.airflow) recordAirflow(airflow, step);
   for (const auto &[name, row] : reactions) forces[name] = std::vector<double>(row.begin(), row.begin() + 3);
   step["reactions"] = forces;
   if (!run.scene->muscles.groups.empty()) {
@@ -169,15 +170,20 @@ void Simulation::recordContacts(const UzawaResult &uzawa, nlohmann::json &step) 
   overall = {{"gap_tolerance_met", met}, {"largest_gap_error", largest}};
 }
 
-void Simulation::recordAirflow(const StepTrial &trial, nlohmann::json &step) {
+AirflowStep Simulation::committedAirflow(const StepTrial &trial) {
   RunParts &run = *run_;
+  if (trial.attempt.airflow.on) return trial.attempt.airflow;
   // A controlled step's winner was solved among candidates: its flow is measured again at the
-  // committed state (the flow its pressures came from, to the coupling tolerance).
-  const AirflowStep airflow =
-      trial.attempt.airflow.on
-          ? trial.attempt.airflow
-          : run.airflow->flowAt(run.stepper->time(), assembly::ResultEvaluator(*run.assembler)
-                                                         .gatherDisplacement(run.stepper->committed().u));
+  // committed state (the flow its pressures came from, to the coupling tolerance), and its face
+  // pressures set again for the output fields (the last candidate solved left its own).
+  AirflowStep airflow = run.airflow->flowAt(
+      run.stepper->time(), assembly::ResultEvaluator(*run.assembler).gatherDisplacement(run.stepper->committed().u));
+  if (!airflow.sectionPressure.empty()) run.airflow->showPressures(airflow.sectionPressure);
+  return airflow;
+}
+
+void Simulation::recordAirflow(const AirflowStep &airflow, nlohmann::json &step) {
+  RunParts &run = *run_;
   run.recorder->recordAirflow(run.stepper->time(), airflow);
   step["airflow"] = {{"flow_rate", airflow.flowRate},         {"smallest_area", airflow.smallestArea},
                      {"smallest_section", airflow.smallestSection}, {"closed", airflow.closed},

@@ -47,8 +47,9 @@ private:
   // (summary.json: contact).
   void recordContacts(const UzawaResult &uzawa, nlohmann::json &step);
   // A dynamic run's energies at the committed state, to energy.csv and into the step's record.
-  // airflow.csv's row and the summary's of a step with airflow.
-  void recordAirflow(const StepTrial &trial, nlohmann::json &step);
+  // The flow of the committed step (a scene with airflow), and its airflow.csv row and summary.
+  AirflowStep committedAirflow(const StepTrial &trial);
+  void recordAirflow(const AirflowStep &airflow, nlohmann::json &step);
   void recordEnergy(nlohmann::json *step);
   void followPath(); // by arc length from the committed state to the path's end
   // The closing-pressure search (PcritSearch): whether the converged trial closes the airway (it

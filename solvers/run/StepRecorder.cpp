@@ -3,6 +3,8 @@
 #include <limits>
 
 #include "assembly/ContactResponse.hpp"
+#include "contact/DeformablePair.hpp"
+#include "model/Scene.hpp"
 #include "io/output/OutputError.hpp"
 #include "materials/ActivationDynamics.hpp"
 #include "solvers/run/Inertia.hpp"
@@ -165,12 +167,35 @@ void StepRecorder::recordEnergy(double time, const StepEnergy &energy) {
   if (root_ && energy_) energy_->append(time, {{"all", {energy.kinetic, energy.stored, energy.total()}}});
 }
 
+namespace {
+// The airflow's pressure at every node: the mean over the airway faces at the node of each face's
+// mean Gauss-point pressure, as last set (the converged step's); 0 off the airway faces. Every
+// rank holds every face's pressures.
+std::vector<double> airflowNodePressure(const model::Scene &scene) {
+  const model::FollowerPressureLoad &load = scene.pressures[static_cast<std::size_t>(scene.airflowLoad)];
+  std::vector<double> sum(scene.mesh.numNodes(), 0.0), count(scene.mesh.numNodes(), 0.0);
+  for (std::size_t k = 0; k < load.faces.size(); ++k) {
+    const auto &p = (*load.given)[k];
+    const double mean = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+    for (const auto n : contact::faceNodeIds(scene.mesh, load.faces[k])) {
+      sum[static_cast<std::size_t>(n)] += mean;
+      count[static_cast<std::size_t>(n)] += 1.0;
+    }
+  }
+  for (std::size_t n = 0; n < sum.size(); ++n)
+    if (count[n] > 0.0) sum[n] /= count[n];
+  return sum;
+}
+} // namespace
+
 std::vector<io::Field> StepRecorder::nodeFields(const std::vector<double> &uAll) const {
   std::vector<io::Field> fields{{"displacement", 3, uAll}};
   if (inertia_) { // collective gathers
     fields.push_back({"velocity", 3, evaluator_.gatherDisplacement(inertia_->velocity())});
     fields.push_back({"acceleration", 3, evaluator_.gatherDisplacement(inertia_->acceleration())});
   }
+  if (evaluator_.scene().airflowLoad >= 0)
+    fields.push_back({"airflow_pressure", 1, airflowNodePressure(evaluator_.scene())});
   if (evaluator_.scene().contacts.empty()) return fields;
   // Collective; as the Uzawa loop's last solve recorded them at this state.
   assembly::ContactNodeFields contact = assembly::contactNodeFields(evaluator_);

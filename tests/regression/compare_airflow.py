@@ -10,18 +10,12 @@ T x its largest pressure magnitude; the closed and choked flags and the smallest
 The coupling's iteration count and last change are not compared: they follow the solver's
 round-off near the coupling tolerance. Exit status 0 when it matches, 1 when not, 2 for
 unreadable input."""
-import csv
 import sys
+
+from reference_csv import arguments, read
 
 EXACT = ("closed", "choked", "smallest_section")
 SKIPPED = ("coupling_iterations", "coupling_change", "airway")
-
-
-def rows(path):
-    with open(path, newline="") as f:
-        table = list(csv.reader(f))
-    names = [h.split(" [")[0] for h in table[0]]
-    return names, [dict(zip(names, r)) for r in table[1:] if r]
 
 
 def largest(table, columns):
@@ -29,13 +23,13 @@ def largest(table, columns):
 
 
 def main(argv):
-    if len(argv) not in (3, 5) or (len(argv) == 5 and argv[3] != "--tolerance"):
-        print(__doc__, file=sys.stderr)
+    given = arguments(argv, __doc__)
+    if given is None:
         return 2
-    tolerance = float(argv[4]) if len(argv) == 5 else 1e-6
+    reference, run_dir, tolerance = given
     try:
-        names, ref = rows(argv[1])
-        run_names, run = rows(argv[2] + "/airflow.csv")
+        names, ref = read(reference)
+        run_names, run = read(run_dir + "/airflow.csv")
     except (OSError, IndexError) as e:
         print(f"compare_airflow: {e}", file=sys.stderr)
         return 2

@@ -8,26 +8,20 @@ Every row of the reference (one a recorded step) must be in RUN_DIR/airway.csv a
 area within T x (the reference's largest area), the same smallest section, the same closed flag
 and count ('nan' where the reference has 'nan'); no row may be missing or extra. Exit status 0
 when it matches, 1 when not, 2 for unreadable input."""
-import csv
 import math
 import sys
 
-
-def read(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header = [h.split(" [")[0] for h in rows[0]]
-    return header, [dict(zip(header, r)) for r in rows[1:] if r]
+from reference_csv import arguments, read
 
 
 def main(argv):
-    if len(argv) not in (3, 5) or (len(argv) == 5 and argv[3] != "--tolerance"):
-        print(__doc__, file=sys.stderr)
+    given = arguments(argv, __doc__)
+    if given is None:
         return 2
-    tolerance = float(argv[4]) if len(argv) == 5 else 1e-6
+    reference, run_dir, tolerance = given
     try:
-        ref_header, ref = read(argv[1])
-        run_header, run = read(argv[2] + "/airway.csv")
+        ref_header, ref = read(reference)
+        run_header, run = read(run_dir + "/airway.csv")
     except (OSError, IndexError) as e:
         print(f"compare_airway: {e}", file=sys.stderr)
         return 2
