@@ -92,3 +92,29 @@ TEST(StepSolver, AStateWithAFoldedElementIsRefusedNamingIt) {
   EXPECT_NE(a.why.find("element " + std::to_string(element) + " "), std::string::npos) << a.why;
   EXPECT_NE(a.why.find("folded through itself"), std::string::npos) << a.why;
 }
+
+// The Uzawa loop's outer condition (the airflow's coupling, doc/airflow.md): the loop goes on past
+// the dilatation tolerance while the condition is not met, ends on a solve where everything is,
+// and stops unconverged, saying so, when the condition fails.
+TEST(StepSolver, TheUzawaLoopIteratesItsOuterConditionToo) {
+  Stack s;
+  StepState state(s.assembler->layout().ownedMap(), s.assembler->layout().numLocalElements());
+  const NewtonSolver::ToleranceRule rule = [](double initial) { return 1e-8 * std::max(initial, 1.0); };
+  const UzawaResult plain = s.uzawa->solve(state.u, state.lambda, rule, {}, {});
+  ASSERT_TRUE(plain.converged);
+  // From the converged state the volume needs no more solves; the condition asks for 3 more.
+  int calls = 0;
+  const UzawaLoop::OuterCondition threeUpdates = [&](const assembly::Vector &) {
+    return ++calls <= 3 ? UzawaLoop::OuterVerdict::updated : UzawaLoop::OuterVerdict::met;
+  };
+  const UzawaResult more = s.uzawa->solve(state.u, state.lambda, rule, {}, {}, threeUpdates);
+  EXPECT_TRUE(more.converged);
+  EXPECT_EQ(calls, 4);
+  EXPECT_EQ(more.solves, 4);
+  EXPECT_LT(more.dilatation.max, 1e-6);
+  const UzawaLoop::OuterCondition failing = [](const assembly::Vector &) { return UzawaLoop::OuterVerdict::failed; };
+  const UzawaResult failed = s.uzawa->solve(state.u, state.lambda, rule, {}, {}, failing);
+  EXPECT_FALSE(failed.converged);
+  EXPECT_TRUE(failed.outerFailed);
+  EXPECT_EQ(failed.solves, 1);
+}
