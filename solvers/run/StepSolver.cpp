@@ -8,10 +8,10 @@
 #include "fem/TurnedOverVolume.hpp"
 #include "model/Scene.hpp"
 #include "model/SymmetryPlanes.hpp"
-#include "solvers/run/AirflowCoupling.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 #include "solvers/linear/MumpsPreconditioner.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
+#include "solvers/run/AirflowCoupling.hpp"
 
 namespace glossa::solvers {
 
