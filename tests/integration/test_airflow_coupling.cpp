@@ -32,14 +32,17 @@ std::string two(int k) { return (k < 10 ? "0" : "") + std::to_string(k); }
 struct ChannelRun {
   nlohmann::json summary;
   std::vector<std::map<std::string, double>> airflow, airway;
+  std::vector<double> arcLengths; // of the sections (airway_sections.csv)
 };
 
+// Each test its own `tag`: ctest runs the tests of this file side by side.
 ChannelRun runChannel(const std::string &tag, const std::vector<std::string> &overrides = {}) {
   const auto dir = test::scratchDirectory("airflow_collapsible_" + tag);
   ChannelRun run;
   run.summary = test::runDeck(test::inputPath("verification/airflow_collapsible_channel.xml"), overrides, dir);
   run.airflow = test::readCsvRows(dir / "airflow.csv");
   run.airway = test::readCsvRows(dir / "airway.csv");
+  for (const auto &r : test::readCsvRows(dir / "airway_sections.csv")) run.arcLengths.push_back(r.at("arc_length"));
   return run;
 }
 
@@ -52,21 +55,14 @@ airflow::FlowSolution flowThrough(const std::map<std::string, double> &lumen, do
     channel.push_back({arcLengths[static_cast<std::size_t>(k)], lumen.at("area_" + two(k)), 0.0, false});
   return airflow::AirflowModel(channel, airflow::AirSettings{}).withPressures(0.0, trachealPressure);
 }
-
-std::vector<double> arcLengths() {
-  const auto rows = test::readCsvRows(test::scratchDirectory("airflow_collapsible_base") / "airway_sections.csv");
-  std::vector<double> s;
-  for (const auto &r : rows) s.push_back(r.at("arc_length"));
-  return s;
-}
 } // namespace
 
 TEST(AirflowCoupling, CollapsibleChannelSatisfiesTheFlowAndTheSolidEveryStep) {
-  const ChannelRun run = runChannel("base");
+  const ChannelRun run = runChannel("both_models");
   ASSERT_TRUE(run.summary.at("converged").get<bool>());
   ASSERT_EQ(run.airflow.size(), 11u); // t = 0 and 10 steps
   ASSERT_EQ(run.airway.size(), run.airflow.size());
-  const std::vector<double> s = arcLengths();
+  const std::vector<double> &s = run.arcLengths;
   ASSERT_EQ(s.size(), static_cast<std::size_t>(kSections));
   for (std::size_t i = 1; i < run.airflow.size(); ++i) {
     const auto &row = run.airflow[i];
@@ -86,9 +82,9 @@ TEST(AirflowCoupling, CollapsibleChannelSatisfiesTheFlowAndTheSolidEveryStep) {
 }
 
 TEST(AirflowCoupling, CollapsibleChannelLimitsTheFlowWhereTheRigidOneKeepsGaining) {
-  const ChannelRun run = runChannel("base");
+  const ChannelRun run = runChannel("limitation");
   ASSERT_TRUE(run.summary.at("converged").get<bool>());
-  const std::vector<double> s = arcLengths();
+  const std::vector<double> &s = run.arcLengths;
   const auto &atRest = run.airway.front();
   const std::size_t n = run.airflow.size();
   const double pLast = run.airflow[n - 1].at("tracheal_pressure"), pBefore = run.airflow[n - 3].at("tracheal_pressure");
