@@ -117,7 +117,6 @@ AirflowCoupling::StepCoupling::Verdict AirflowCoupling::StepCoupling::afterSolve
     const airflow::AirwayFlowState f = coupling_.measure(time_, uAll);
     const Eigen::VectorXd image = asVector(f.sectionPressure);
     result_.residual = largestChange(image, pressure_);
-    result_.residuals.push_back(result_.residual);
     if (progress_)
       std::printf("  airflow %d: flow rate %.6g L/s  smallest area %.4g mm^2%s  largest pressure change %.3e Pa\n",
                   result_.iterations, 1e3 * f.flow.flowRate, 1e6 * f.smallestArea, f.flow.closed ? " (closed)" : "",
@@ -127,10 +126,8 @@ AirflowCoupling::StepCoupling::Verdict AirflowCoupling::StepCoupling::afterSolve
       // What the solid carries; the flow's own pressures are within the tolerance of them.
       result_.sectionPressure.assign(pressure_.data(), pressure_.data() + pressure_.size());
       result_.converged = true;
-      result_.why.clear();
       return Verdict::coupled;
     }
-    result_.converged = false;
     if (result_.iterations >= parameters.maximumCouplingIterations) {
       char why[300];
       std::snprintf(why, sizeof why,

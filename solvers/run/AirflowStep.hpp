@@ -13,7 +13,6 @@ struct AirflowStep {
   std::string why;                      // not converged: why
   int iterations = 0;                   // coupling iterations (solid solves) of the step
   double residual = 0.0;                // the largest change of a section's pressure at the end [Pa]
-  std::vector<double> residuals;        // after each iteration [Pa]
   double flowRate = 0.0;                // [m^3/s]
   double nasalPressure = 0.0, trachealPressure = 0.0;  // [Pa]
   std::vector<double> sectionPressure;  // the pressures the solid was solved with, per lumen section [Pa]

@@ -12,7 +12,7 @@ round-off near the coupling tolerance. Exit status 0 when it matches, 1 when not
 unreadable input."""
 import sys
 
-from reference_csv import arguments, read
+from reference_csv import arguments, load
 
 EXACT = ("closed", "choked", "smallest_section")
 SKIPPED = ("coupling_iterations", "coupling_change", "airway")
@@ -27,12 +27,10 @@ def main(argv):
     if given is None:
         return 2
     reference, run_dir, tolerance = given
-    try:
-        names, ref = read(reference)
-        run_names, run = read(run_dir + "/airflow.csv")
-    except (OSError, IndexError) as e:
-        print(f"compare_airflow: {e}", file=sys.stderr)
+    tables = load(reference, run_dir, "airflow.csv", "compare_airflow")
+    if tables is None:
         return 2
+    names, ref, run_names, run = tables
     if names != run_names or len(ref) != len(run):
         print(f"compare_airflow: {len(run)} rows of {run_names}; the reference has {len(ref)} of {names}")
         return 1

@@ -11,7 +11,7 @@ when it matches, 1 when not, 2 for unreadable input."""
 import math
 import sys
 
-from reference_csv import arguments, read
+from reference_csv import arguments, load
 
 
 def main(argv):
@@ -19,12 +19,10 @@ def main(argv):
     if given is None:
         return 2
     reference, run_dir, tolerance = given
-    try:
-        ref_header, ref = read(reference)
-        run_header, run = read(run_dir + "/airway.csv")
-    except (OSError, IndexError) as e:
-        print(f"compare_airway: {e}", file=sys.stderr)
+    tables = load(reference, run_dir, "airway.csv", "compare_airway")
+    if tables is None:
         return 2
+    ref_header, ref, run_header, run = tables
     if ref_header != run_header:
         print(f"compare_airway: columns differ: {ref_header} against {run_header}")
         return 1

@@ -1,6 +1,6 @@
 """What the regression scripts that compare one of a run's CSV files with a stored reference share:
-their command line (REFERENCE.csv RUN_DIR [--tolerance T]) and reading a glossa CSV into its
-column names (units dropped) and rows keyed by them."""
+their command line (REFERENCE.csv RUN_DIR [--tolerance T]) and reading the reference and the
+run's file, each into its column names (units dropped) and rows keyed by them."""
 import csv
 import sys
 
@@ -11,6 +11,15 @@ def arguments(argv, doc):
         print(doc, file=sys.stderr)
         return None
     return argv[1], argv[2], float(argv[4]) if len(argv) == 5 else 1e-6
+
+
+def load(reference, run_dir, name, tool):
+    """The reference's and the run's RUN_DIR/name as read() gives them, or None after saying why."""
+    try:
+        return read(reference) + read(run_dir + "/" + name)
+    except (OSError, IndexError) as e:
+        print(f"{tool}: {e}", file=sys.stderr)
+        return None
 
 
 def read(path):
