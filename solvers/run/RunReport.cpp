@@ -38,15 +38,25 @@ std::string interruption(int signal, std::size_t steps, double time) {
          std::to_string(time) + ")";
 }
 
-// A summary (as last written) marked as ended by `signal` after its last step.
-void markInterrupted(nlohmann::json &summary, int signal) {
+// A summary (as last written) marked as ended by `signal` after its last step; `cut`: the next
+// step's output was under way (RunReport::interrupted).
+void markInterrupted(nlohmann::json &summary, int signal, bool cut = false) {
   const std::size_t steps = summary.contains("steps") ? summary["steps"].size() : 0;
   const double time = steps > 0 ? summary["steps"].back().value("time", 0.0) : 0.0;
   summary["running"] = false;
   summary["converged"] = false;
   summary["interrupted"] = signalName(signal);
-  summary["failure"] = interruption(signal, steps, time) + "; the files hold the steps up to there";
+  summary["failure"] = interruption(signal, steps, time) +
+                       (cut ? " while the next step was being written; the files hold the steps up to there, and some "
+                              "may hold that next step too"
+                            : "; the files hold the steps up to there");
+  if (cut) summary["interrupted_while_writing"] = true;
 }
+
+// How long the signal watcher waits for a commit's output. Open MPI's mpiexec kills the ranks a
+// second after it forwards a signal (odls_base_sigkill_timeout): the summary must be on disk by
+// then, even when the disk is so slow that one fsync takes most of that second.
+constexpr std::chrono::milliseconds kOutputWait{400};
 } // namespace
 
 std::string readableDuration(double seconds) {
@@ -114,12 +124,27 @@ void RunReport::write(const AssemblyCounters &counters) {
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, peak, Teuchos::outArg(peakMax));
   doc_["peak_memory_mb_per_rank"] = peakMax;
   if (!root_) return;
-  std::lock_guard<std::recursive_mutex> lock(mutex_);
-  if (!summary_) summary_ = std::make_unique<io::SummaryWriter>(dir_ / "summary.json");
-  summary_->root() = doc_;
+  std::lock_guard<std::recursive_timed_mutex> lock(mutex_);
+  nlohmann::json root = doc_;
   // The watcher wrote "interrupted" already; a step committed since keeps saying so.
-  if (interruptedBy_ != 0 && !doc_.contains("interrupted")) markInterrupted(summary_->root(), interruptedBy_);
-  summary_->write();
+  if (interruptedBy_ != 0 && !doc_.contains("interrupted")) markInterrupted(root, interruptedBy_);
+  publish(std::move(root), io::Durability::synced, ".tmp");
+}
+
+bool RunReport::publish(nlohmann::json root, io::Durability durability, const std::string &suffix,
+                        std::optional<unsigned long> onlyOver) {
+  auto next = std::make_unique<io::SummaryWriter>(dir_ / "summary.json");
+  next->root() = std::move(root);
+  next->stage(suffix, durability); // the slow part (a sync), outside publishMutex_
+  std::lock_guard<std::mutex> lock(publishMutex_);
+  if (onlyOver && *onlyOver != publishedVersion_) {
+    std::filesystem::remove(next->file().string() + suffix);
+    return false;
+  }
+  next->publish(suffix);
+  published_ = std::move(next);
+  ++publishedVersion_;
+  return true;
 }
 
 void RunReport::beginSteps(double t) {
@@ -130,12 +155,27 @@ void RunReport::beginSteps(double t) {
 }
 
 void RunReport::interrupted(int signal) {
-  std::lock_guard<std::recursive_mutex> lock(mutex_);
-  interruptedBy_ = signal;
-  if (!summary_) return;
-  markInterrupted(summary_->root(), signal);
+  interruptedBy_ = signal; // from here the run's own summary writes say so too
+  // Waiting for a commit's output keeps summary.json's last step that of traces.csv; past
+  // kOutputWait the last published summary is marked at once, saying that a step was being
+  // written. It is not synced: a rename is atomic against the kill, which is what comes next.
+  std::unique_lock<std::recursive_timed_mutex> output(mutex_, std::defer_lock);
+  const bool whole = output.try_lock_for(kOutputWait);
   try {
-    summary_->write();
+    while (true) {
+      nlohmann::json root;
+      unsigned long version = 0;
+      {
+        std::lock_guard<std::mutex> lock(publishMutex_);
+        if (!published_) return; // nothing written yet: the run's thread writes the first summary
+        root = published_->root();
+        version = publishedVersion_;
+      }
+      if (root.contains("interrupted")) return; // the run's thread marked it already
+      markInterrupted(root, signal, !whole);
+      // A summary the run's thread published meanwhile may not say it: mark that one instead.
+      if (publish(std::move(root), io::Durability::renamedOnly, ".interrupted.tmp", version)) return;
+    }
   } catch (const std::exception &) {
     // Nothing more can be done on this thread; the main thread reports output errors.
   }
@@ -249,15 +289,13 @@ void RunReport::recordingOutputFailure(const std::function<void()> &work) {
 void RunReport::outputFailed(const std::string &what) {
   // Before the output directory is known (it could not be made) there is no summary to write.
   if (!root_ || dir_.empty()) return;
-  std::lock_guard<std::recursive_mutex> lock(mutex_);
+  std::lock_guard<std::recursive_timed_mutex> lock(mutex_);
   doc_["running"] = false;
   doc_["converged"] = false;
   doc_["failure"] = "an output file could not be written: " + what + "; the files hold what was written before it";
   doc_["output_failure"] = what;
   try {
-    if (!summary_) summary_ = std::make_unique<io::SummaryWriter>(dir_ / "summary.json");
-    summary_->root() = doc_;
-    summary_->write();
+    publish(doc_, io::Durability::synced, ".tmp");
   } catch (const std::exception &e) {
     const std::filesystem::path file = dir_ / "summary.json";
     std::fprintf(stderr, "glossa: error: %s could not be written either (%s)%s\n", file.c_str(), e.what(),

@@ -5,11 +5,13 @@
 // the next step boundary on every rank.
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,7 @@ class ModelEvaluator;
 }
 namespace glossa::io {
 class SummaryWriter;
+enum class Durability;
 }
 
 namespace glossa::solvers {
@@ -55,9 +58,11 @@ public:
 
   // Writes summary.json with the model's counters and the timers so far. Collective.
   void write(const AssemblyCounters &counters);
-  // Held over a commit's whole output, so that an interrupted summary.json never lags a step
-  // behind traces.csv.
-  std::unique_lock<std::recursive_mutex> holdOutput() { return std::unique_lock<std::recursive_mutex>(mutex_); }
+  // Held over a commit's whole output, so that an interrupted summary.json does not lag a step
+  // behind traces.csv (unless the output outlasts kOutputWait: interrupted()).
+  std::unique_lock<std::recursive_timed_mutex> holdOutput() {
+    return std::unique_lock<std::recursive_timed_mutex>(mutex_);
+  }
 
   // From here a stop signal ends the run at the next step boundary; the time steps begin at t.
   void beginSteps(double t);
@@ -94,6 +99,10 @@ public:
 
 private:
   void interrupted(int signal); // on the signal watcher thread (rank 0)
+  // Writes `root` as summary.json (fsync'ed when `durability` says so), unless `onlyOver` is given
+  // and another summary was published since that version; returns whether it was published.
+  bool publish(nlohmann::json root, io::Durability durability, const std::string &suffix,
+               std::optional<unsigned long> onlyOver = std::nullopt);
   void outputFailed(const std::string &what);
 
   using Clock = std::chrono::steady_clock;
@@ -107,10 +116,14 @@ private:
   std::array<int, 7> partCallsAtStart_{};
   std::filesystem::path dir_;
   nlohmann::json doc_;
-  std::unique_ptr<io::SummaryWriter> summary_;
-  // summary_ and interruptedBy_, shared with the signal watcher.
-  std::recursive_mutex mutex_;
-  int interruptedBy_ = 0; // the stop signal, once received
+  // The output lock: a commit's output and the summary writes on the run's thread.
+  std::recursive_timed_mutex mutex_;
+  // The summary last published and its version (0: none yet), shared with the signal watcher.
+  // publishMutex_ is held only over a rename and a copy, never over a sync.
+  std::mutex publishMutex_;
+  std::unique_ptr<io::SummaryWriter> published_;
+  unsigned long publishedVersion_ = 0;
+  std::atomic<int> interruptedBy_{0}; // the stop signal, once received
   int stoppedBy_ = 0;     // the signal the run loop stopped for (every rank)
   std::string failure_;
 };

@@ -38,16 +38,16 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path &target) {
   return temporary;
 }
 
-void replaceFileAtomically(const std::filesystem::path &target, std::string_view contents) {
+void stageFile(const std::filesystem::path &temporary, const std::filesystem::path &target, std::string_view contents,
+               Durability durability) {
   // Errors name the target (the file the user knows), not its temporary.
-  const std::filesystem::path temporary = temporaryPathFor(target);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail("create", target, errno);
   try {
     writeAll(fd, contents, target);
     // Without fsync a crash of the machine (not just of the run) could leave the renamed file
     // empty on some file systems; the cost is one sync of a small file per call.
-    if (::fsync(fd) != 0) fail("sync", target, errno);
+    if (durability == Durability::synced && ::fsync(fd) != 0) fail("sync", target, errno);
   } catch (...) {
     ::close(fd);
     ::unlink(temporary.c_str());
@@ -58,11 +58,20 @@ void replaceFileAtomically(const std::filesystem::path &target, std::string_view
     ::unlink(temporary.c_str());
     fail("close", target, error);
   }
+}
+
+void publishFile(const std::filesystem::path &temporary, const std::filesystem::path &target) {
   if (::rename(temporary.c_str(), target.c_str()) != 0) {
     const int error = errno;
     ::unlink(temporary.c_str());
     fail("rename onto", target, error);
   }
+}
+
+void replaceFileAtomically(const std::filesystem::path &target, std::string_view contents) {
+  const std::filesystem::path temporary = temporaryPathFor(target);
+  stageFile(temporary, target, contents, Durability::synced);
+  publishFile(temporary, target);
 }
 
 } // namespace glossa::io

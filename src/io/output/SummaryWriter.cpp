@@ -2,8 +2,6 @@
 
 #include <utility>
 
-#include "io/output/AtomicFile.hpp"
-
 namespace glossa::io {
 
 SummaryWriter::SummaryWriter(std::filesystem::path file) : file_(std::move(file)) {}
@@ -15,9 +13,16 @@ void SummaryWriter::appendStep(const nlohmann::json &step) {
 }
 
 void SummaryWriter::write() const {
+  stage(".tmp", Durability::synced);
+  publish(".tmp");
+}
+
+void SummaryWriter::stage(const std::string &suffix, Durability durability) const {
   if (file_.has_parent_path()) std::filesystem::create_directories(file_.parent_path());
   const std::string text = root_.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + '\n';
-  replaceFileAtomically(file_, text);
+  stageFile(file_.string() + suffix, file_, text, durability);
 }
+
+void SummaryWriter::publish(const std::string &suffix) const { publishFile(file_.string() + suffix, file_); }
 
 } // namespace glossa::io

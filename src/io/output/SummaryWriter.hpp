@@ -5,8 +5,11 @@
 // on disk is always complete JSON, from either the previous or the latest write(). Rank 0 writes.
 
 #include <filesystem>
+#include <string>
 
 #include <nlohmann/json.hpp>
+
+#include "io/output/AtomicFile.hpp"
 
 namespace glossa::io {
 
@@ -25,6 +28,10 @@ public:
   // NaN); invalid UTF-8 in strings is replaced rather than failing the run at its last moment.
   // Throws std::runtime_error if the file cannot be written.
   void write() const;
+  // write() in its two halves (AtomicFile.hpp): stage writes the file as "<file><suffix>", publish
+  // renames that onto the file. For a writer that must decide in between whether it still applies.
+  void stage(const std::string &suffix, Durability durability) const;
+  void publish(const std::string &suffix) const;
 
   const std::filesystem::path &file() const { return file_; }
 
