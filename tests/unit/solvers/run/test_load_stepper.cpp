@@ -20,7 +20,7 @@ using namespace glossa::solvers;
 namespace {
 constexpr std::size_t kElements = 3;
 
-Teuchos::RCP<const assembly::Map> map() {
+Teuchos::RCP<const assembly::Map> stepperMap() {
   static const auto m = Teuchos::rcp(new assembly::Map(8, 0, Tpetra::getDefaultComm()));
   return m;
 }
@@ -30,9 +30,9 @@ double exactU(std::size_t gid, double t) { return (static_cast<double>(gid) + 1.
 double exactLambda(std::size_t e, double t) { return 10.0 * (static_cast<double>(e) + 1.0) * t; }
 
 StepState stateAt(double t) {
-  StepState s(map(), kElements);
+  StepState s(stepperMap(), kElements);
   auto data = s.u.getDataNonConst();
-  for (std::size_t i = 0; i < data.size(); ++i) data[i] = exactU(map()->getGlobalElement(i), t);
+  for (std::size_t i = 0; i < data.size(); ++i) data[i] = exactU(stepperMap()->getGlobalElement(i), t);
   for (std::size_t e = 0; e < kElements; ++e) s.lambda[e] = exactLambda(e, t);
   return s;
 }

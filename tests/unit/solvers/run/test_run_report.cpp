@@ -21,7 +21,7 @@ using namespace glossa;
 using namespace glossa::solvers;
 
 namespace {
-Teuchos::RCP<const assembly::Map> map() {
+Teuchos::RCP<const assembly::Map> reportMap() {
   static const auto m = Teuchos::rcp(new assembly::Map(4, 0, Tpetra::getDefaultComm()));
   return m;
 }
@@ -32,7 +32,7 @@ nlohmann::json readSummary(const std::filesystem::path &dir) {
 }
 
 StepTrial trialTo(double time, double dt) {
-  StepTrial trial(time, dt, 0.5, StepState(map(), 2));
+  StepTrial trial(time, dt, 0.5, StepState(reportMap(), 2));
   UzawaResult &r = trial.attempt.uzawa;
   r.newtonIterations = 5;
   r.linearIterations = 40;
