@@ -10,11 +10,12 @@
 
 #include "io/deck/Deck.hpp"
 #include "io/deck/DeckError.hpp"
+#include "ProcessScratch.hpp"
 
 namespace glossa::test {
 
-// The file `name` in the temporary directory, as a deck's messages name it.
-inline std::string deckPath(const std::string &name) { return ::testing::TempDir() + name; }
+// The file `name` in the test process's temporary directory, as a deck's messages name it.
+inline std::string deckPath(const std::string &name) { return (processScratch() / name).string(); }
 
 // `sections`: the XML inside <ParameterList name="Glossa">, which is line 1, so that the first
 // line of `sections` is line 2. Validated against `schema` (every default filled in).

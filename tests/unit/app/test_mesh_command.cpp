@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "ProcessScratch.hpp"
+
 #include "app/MeshCommand.hpp"
 #include "io/deck/DeckError.hpp"
 #include "mesh/BoxGenerator.hpp"
@@ -16,7 +18,7 @@ namespace {
 
 // A 1 x 2 x 3 m box of 2 x 2 x 2 cells: 27 nodes, 8 elements, 6 m^3.
 std::string boxFile() {
-  const std::string file = ::testing::TempDir() + "mesh_command_box.msh";
+  const std::string file = (test::processScratch() / "mesh_command_box.msh").string();
   mesh::writeGmsh(mesh::generateBox(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3), {2, 2, 2}), file);
   return file;
 }
@@ -46,7 +48,7 @@ TEST(MeshCommand, RefiningSplitsEveryHexahedronInEight) {
 }
 
 TEST(MeshCommand, AnAbaqusFileWrittenReadsBackTheSame) {
-  const std::filesystem::path inp = std::filesystem::path(::testing::TempDir()) / "mesh_command_box.inp";
+  const std::filesystem::path inp = test::processScratch() / "mesh_command_box.inp";
   std::filesystem::remove(inp);
   const nlohmann::json written = describeMesh(boxFile(), {"auto", 0, inp});
   EXPECT_EQ(written.at("written"), inp.string());
@@ -58,7 +60,7 @@ TEST(MeshCommand, AnAbaqusFileWrittenReadsBackTheSame) {
 }
 
 TEST(MeshCommand, AnOutputOfAnotherFormatIsRefusedNotMadeADirectory) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "mesh_command_output";
+  const std::filesystem::path dir = test::processScratch() / "mesh_command_output";
   std::filesystem::remove_all(dir);
   try {
     describeMesh(boxFile(), {"auto", 0, dir / "out.vtk"});

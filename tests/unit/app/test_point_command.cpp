@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "ProcessScratch.hpp"
+
 #include "CsvRows.hpp"
 #include "DeckOnFile.hpp"
 #include "app/DeckSchema.hpp"
@@ -39,7 +41,7 @@ io::Deck neoHookeanDeck(const std::string &name, const std::vector<std::string> 
 
 TEST(PointCommand, NeoHookeanUniaxialStretchAtEveryStep) {
   const io::Deck deck = neoHookeanDeck("point_neo_hookean.xml");
-  const auto csv = std::filesystem::path(::testing::TempDir()) / "point_neo_hookean.csv";
+  const auto csv = test::processScratch() / "point_neo_hookean.csv";
   const int written = runPointDriver(deck, solvers::parseRunConfiguration(deck).time, csv);
   const auto rows = test::readCsvRows(csv);
   ASSERT_EQ(written, 5); // t = 0, 0.25, 0.5, 0.75, 1
@@ -59,7 +61,7 @@ TEST(PointCommand, NeoHookeanUniaxialStretchAtEveryStep) {
 
 TEST(PointCommand, ARefusedDeckWritesNoFile) {
   const io::Deck deck = neoHookeanDeck("point_refused.xml", {"Point/direction=0,0,0"});
-  const auto csv = std::filesystem::path(::testing::TempDir()) / "point_refused.csv";
+  const auto csv = test::processScratch() / "point_refused.csv";
   std::filesystem::remove(csv);
   EXPECT_EQ(test::deckErrorOf([&] { runPointDriver(deck, solvers::parseRunConfiguration(deck).time, csv); }),
             "deck " + test::deckPath("point_refused.xml") +

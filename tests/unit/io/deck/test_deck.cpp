@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "io/deck/Deck.hpp"
+#include "ProcessScratch.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/DeckReference.hpp"
 #include "io/deck/ParameterSpec.hpp"
@@ -31,7 +32,7 @@ Teuchos::ParameterList schema() {
 }
 
 std::string writeDeck(const std::string &name, const std::string &body) {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = (glossa::test::processScratch() / name).string();
   std::ofstream(path) << "<ParameterList name=\"Glossa\">\n" << body << "</ParameterList>\n";
   return path;
 }
@@ -218,7 +219,7 @@ TEST(Deck, WrittenDeckReadsBack) {
   </ParameterList>
 )X"));
   deck.validate(schema());
-  const std::string path = ::testing::TempDir() + "written_back.xml";
+  const std::string path = (glossa::test::processScratch() / "written_back.xml").string();
   std::ofstream(path) << deck.toXml();
   auto again = Deck::fromFile(path);
   again.validate(schema());
