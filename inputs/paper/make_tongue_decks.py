@@ -635,6 +635,10 @@ for posture, g in POSTURES:
          f"Paper §8.5's breathing driven by the airflow, {posture} posture, position maintenance by neural\n"
          "control.\n" + COMMON + FLOW_BREATHING.replace("{posture}", posture) + CONTROLLED + GRADIENT + gravity,
          {}, control=CONTROLLERS["gradient"][1], **common)
+    deck(f"s8_5_flow_ga_{posture}",
+         f"Paper §8.5's breathing driven by the airflow, {posture} posture, position maintenance by neural\n"
+         "control.\n" + COMMON + FLOW_BREATHING.replace("{posture}", posture) + CONTROLLED + GA + gravity,
+         {}, control=CONTROLLERS["ga"][1], **common)
 
 PCRIT_SUCTION = -3000.0
 PCRIT = f"""

@@ -107,6 +107,8 @@ control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const s
     search.result.inputs = inputs;
     search.result.pointErrors = errors;
     search.result.solve = solve.statistics;
+    search.result.couplingIterations = solve.couplingIterations;
+    search.result.couplingChange = solve.couplingChange;
     plant_.keepLast();
   }
   return e;

@@ -21,6 +21,10 @@ struct CandidateSolve {
   std::string why;                   // when not ok
   Eigen::Matrix3Xd pointDisplacement; // when ok: one column per control point
   UzawaResult statistics;
+  // With an airflow (doc/airflow.md): the candidate's coupling iterations and the largest change
+  // of a section's pressure at the last (0 and 0 without one).
+  int couplingIterations = 0;
+  double couplingChange = 0.0;
 };
 
 // d x_p / d u_M at the kept state: 3 rows per point (x, y, z), one column per group asked.

@@ -48,6 +48,8 @@ template <class Io, class R> void resultFields(Io &io, R &r) {
   io(r.stop);
   io(r.pointErrors);
   io(r.solve);
+  io(r.couplingIterations);
+  io(r.couplingChange);
 }
 
 // Counts, flags and characters are stored as doubles: exact below 2^53. A sequence is its

@@ -29,6 +29,8 @@ struct ControlStepResult {
   std::string stop;            // why the search stopped
   Eigen::VectorXd pointErrors; // ||x_p - xbar_p|| per control point at the winner
   UzawaResult solve;           // the winning solve's statistics
+  int couplingIterations = 0;  // its airflow coupling iterations (doc/airflow.md; 0 without)
+  double couplingChange = 0.0; // and its last change of a section's pressure [Pa]
 
   bool found() const; // a candidate converged (the objective is finite)
 };

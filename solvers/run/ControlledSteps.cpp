@@ -66,6 +66,8 @@ CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
   out.ok = a.ok;
   out.why = a.why;
   out.statistics = std::move(a.uzawa);
+  out.couplingIterations = a.airflow.iterations;
+  out.couplingChange = a.airflow.residual;
   if (a.ok) out.pointDisplacement = pointDisplacement(last_);
   return out;
 }

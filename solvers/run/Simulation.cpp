@@ -179,6 +179,9 @@ AirflowStep Simulation::committedAirflow(const StepTrial &trial) {
   AirflowStep airflow = run.airflow->flowAt(
       run.stepper->time(), assembly::ResultEvaluator(*run.assembler).gatherDisplacement(run.stepper->committed().u));
   if (!airflow.sectionPressure.empty()) run.airflow->showPressures(airflow.sectionPressure);
+  // The winner's coupling, as its control group solved it.
+  airflow.iterations = trial.control.couplingIterations;
+  airflow.residual = trial.control.couplingChange;
   return airflow;
 }
 

@@ -30,6 +30,8 @@ ControlStepResult awkwardResult() {
   r.sensitivityKrylov = 41;
   r.sensitivityCheck = -1.0;
   r.failedCandidates = 3;
+  r.couplingIterations = 7;
+  r.couplingChange = 0.0371;
   r.firstFailure = "CG met negative curvature";
   r.stop = "objective tolerance \xc3\xbc"; // a UTF-8 u-umlaut: two bytes above 127
   r.pointErrors = Eigen::Vector3d(2.5e-8, std::numeric_limits<double>::infinity(), 0.0);
@@ -77,6 +79,8 @@ TEST(ControlStepResult, RoundTripIsBitForBit) {
   EXPECT_EQ(back.sensitivityKrylov, r.sensitivityKrylov);
   EXPECT_TRUE(sameBits(back.sensitivityCheck, r.sensitivityCheck));
   EXPECT_EQ(back.failedCandidates, r.failedCandidates);
+  EXPECT_EQ(back.couplingIterations, r.couplingIterations);
+  EXPECT_TRUE(sameBits(back.couplingChange, r.couplingChange));
   EXPECT_EQ(back.firstFailure, r.firstFailure);
   EXPECT_EQ(back.stop, r.stop);
   ASSERT_EQ(back.pointErrors.size(), r.pointErrors.size());
