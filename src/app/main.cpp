@@ -17,6 +17,7 @@
 #include "app/DeckSchema.hpp"
 #include "app/MeshCommand.hpp"
 #include "app/PointCommand.hpp"
+#include "app/SingletonSession.hpp"
 #include "app/ZeroStrainCommand.hpp"
 #include "io/deck/Deck.hpp"
 #include "io/deck/DeckError.hpp"
@@ -215,6 +216,7 @@ int main(int argc, char **argv) {
       std::fputs(usage(argv[1]).c_str(), stdout);
       return 0;
     }
+  glossa::app::separateIsolatedSingletonSession();
   Tpetra::ScopeGuard mpi(&argc, &argv);
   // A write past the file size limit (ulimit -f, a batch system's) fails with EFBIG, which ends
   // the run as a full disk does (exit status 4, the files so far whole, summary.json saying so),

@@ -4,10 +4,12 @@
 #include <Tpetra_Core.hpp>
 
 #include "WorldComm.hpp"
+#include "app/SingletonSession.hpp"
 
 Teuchos::RCP<const Teuchos::Comm<int>> glossa::test::worldComm() { return Tpetra::getDefaultComm(); }
 
 int main(int argc, char **argv) {
+  glossa::app::separateIsolatedSingletonSession();
   Tpetra::ScopeGuard scope(&argc, &argv);
   ::testing::InitGoogleTest(&argc, argv);
   // Only rank 0 reports, so ctest's output stays readable under mpiexec.
