@@ -18,14 +18,12 @@ of each step's smallest), whether a section closed, and the peak flow rate.
 import argparse
 import json
 import os
-import subprocess
 import sys
 
 from result_table import write_rows
-from tongue_control import CYCLES_START, distances, finished, over_cycles, read_csv
+from tongue_control import CYCLES_START, distances, execute, finished, over_cycles, read_csv
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-PAPER = os.path.join(ROOT, "inputs", "paper")
 CONTROLLERS = {"passive": "passive", "gradient": "gradient", "ga": "GA"}
 
 
@@ -33,15 +31,6 @@ def runs():
     """(name, deck, controller, posture) of every run."""
     return [(f"{kind}_{posture}", f"s8_5_flow_{kind}_{posture}.xml", controller, posture)
             for posture in ("supine", "upright") for kind, controller in CONTROLLERS.items()]
-
-
-def execute(glossa, deck, controller, directory, ga_ranks):
-    cmd = [glossa, "run", os.path.join(PAPER, deck), "--output", directory, "--quiet", "--set", "Output/fields=false"]
-    if controller == "GA" and ga_ranks > 1:
-        cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ga_ranks)] + cmd + \
-              ["--control-groups", str(ga_ranks)]
-    print("running", " ".join(cmd), flush=True)
-    subprocess.run(cmd, check=True)
 
 
 def summarise(name, controller, posture, directory):
@@ -83,7 +72,7 @@ def main():
         directory = os.path.join(a.runs, name)
         wanted = not only or name in only
         if wanted and (a.force or not finished(directory)):
-            execute(a.glossa, deck, controller, directory, a.ga_ranks)
+            execute(a.glossa, name, deck, [], controller, directory, a.ga_ranks)
         if finished(directory):
             rows.append(summarise(name, controller, posture, directory))
     if not rows:

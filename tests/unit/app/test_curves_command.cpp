@@ -6,10 +6,9 @@
 #include <sstream>
 #include <vector>
 
-#include <unistd.h>
-
 #include <gtest/gtest.h>
 
+#include "ProcessScratch.hpp"
 #include "app/CurvesCommand.hpp"
 #include "materials/ContractileCurveSets.hpp"
 #include "materials/ParallelElement.hpp"
@@ -36,25 +35,16 @@ Table readTable(const std::filesystem::path &file) {
   return t;
 }
 
-// The tables, written once per process into a directory of its own (ctest runs each test in its
-// own process, two at once: with a shared directory one removed the other's tables while it read
-// them), removed when the process ends.
-struct CurveTables {
-  std::filesystem::path dir =
-      std::filesystem::path(::testing::TempDir()) / ("curves-" + std::to_string(::getpid()));
-  CurveTables() {
-    std::filesystem::remove_all(dir);
-    EXPECT_EQ(writeCurveTables(dir).size(), 3u);
-  }
-  ~CurveTables() {
-    std::error_code ignored;
-    std::filesystem::remove_all(dir, ignored);
-  }
-};
-
+// The tables, written once per process into its own scratch directory (ctest runs each test in
+// its own process, two at once: with a shared directory one removed the other's tables while it
+// read them), removed when the process ends.
 const std::filesystem::path &tables() {
-  static const CurveTables written;
-  return written.dir;
+  static const std::filesystem::path written = [] {
+    const std::filesystem::path dir = test::processScratch() / "curves";
+    EXPECT_EQ(writeCurveTables(dir).size(), 3u);
+    return dir;
+  }();
+  return written;
 }
 
 TEST(CurvesCommand, ForceLengthOverItsRangeIsBothCurveSets) {

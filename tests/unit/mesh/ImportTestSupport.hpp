@@ -19,34 +19,12 @@
 #include <string>
 #include <vector>
 
+#include "ScratchDir.hpp"
 #include "mesh/HexMesh.hpp"
 
 namespace glossa::mesh::testing {
 
-// A fresh directory per test under the system temp dir, removed at the end (kept if
-// GLOSSA_KEEP_SCRATCH is set, for debugging). The process id keeps concurrent runs apart.
-class ScratchDir {
- public:
-  explicit ScratchDir(const std::string &name)
-      : path_(std::filesystem::temp_directory_path() /
-              ("glossa_mesh_" + name + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    if (!std::getenv("GLOSSA_KEEP_SCRATCH")) std::filesystem::remove_all(path_);
-  }
-  // Writes `content` byte for byte (so tests control CRLF and final newlines).
-  std::string write(const std::string &name, const std::string &content) const {
-    const std::string file = (path_ / name).string();
-    std::ofstream(file, std::ios::binary) << content;
-    return file;
-  }
-  std::string file(const std::string &name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
+using ScratchDir = glossa::test::ScratchDir; // a fresh directory per test (tests/unit/ScratchDir.hpp)
 
 // Runs f, expects std::runtime_error whose message contains every fragment.
 inline void expectError(const std::function<void()> &f, const std::vector<std::string> &fragments) {
