@@ -207,6 +207,7 @@ NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleran
   }
 
   auto solver = NOX::Solver::buildSolver(group, tests, params);
+  lastGroup_ = group;
   // The model skips the tangent where the update test is about to pass (ModelEvaluator::
   // setConvergenceForecast), with the test's own formula; cleared when the solve ends. Without
   // an update test nothing forecasts the residual's: every pass assembles the tangent.
@@ -271,6 +272,34 @@ int NewtonSolver::solveTangentWithKeptSolver(const assembly::Vector &u, const as
   return 0;
 }
 
+int NewtonSolver::solveWith(Thyra::LinearOpWithSolveBase<double> &lows, const assembly::MultiVector &rhs,
+                           assembly::MultiVector &x, double relativeTolerance, const char *what) const {
+  const auto space = model_->get_x_space();
+  const auto B = Thyra::createConstMultiVector<double, assembly::LO, assembly::GO, assembly::Node>(
+      Teuchos::rcpFromRef(rhs), space);
+  x.putScalar(0.0);
+  const auto X = Thyra::createMultiVector<double, assembly::LO, assembly::GO, assembly::Node>(Teuchos::rcpFromRef(x), space);
+  Thyra::SolveCriteria<double> criteria;
+  criteria.solveMeasureType =
+      Thyra::SolveMeasureType(Thyra::SOLVE_MEASURE_NORM_RESIDUAL, Thyra::SOLVE_MEASURE_NORM_RHS);
+  criteria.requestedTol = relativeTolerance > 0.0 ? relativeTolerance : linearTolerance_;
+  const auto status = lows.solve(Thyra::NOTRANS, *B, X.ptr(), Teuchos::ptrFromRef(criteria));
+  if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED)
+    throw std::runtime_error(std::string(what) + " did not converge: " + status.message);
+  int iterations = 0;
+  if (!status.extraParameters.is_null() && status.extraParameters->isParameter("Iteration Count"))
+    iterations = status.extraParameters->get<int>("Iteration Count");
+  return iterations;
+}
+
+int NewtonSolver::solveWithLastTangent(const assembly::MultiVector &rhs, assembly::MultiVector &x,
+                                       double relativeTolerance) const {
+  const RCP<Thyra::LinearOpWithSolveBase<double>> lows =
+      lastGroup_.is_null() ? Teuchos::null : lastGroup_->getNonconstJacobian();
+  if (lows.is_null() || lows->range().is_null()) throw std::runtime_error("no Newton solve has left a linear solver");
+  return solveWith(*lows, rhs, x, relativeTolerance, "the solve with the last tangent");
+}
+
 int NewtonSolver::solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs,
                                assembly::MultiVector &x, double relativeTolerance) const {
   TEUCHOS_TEST_FOR_EXCEPTION(!model_->mixedPressure().is_null(), std::logic_error,
@@ -285,22 +314,7 @@ int NewtonSolver::solveTangent(const assembly::Vector &u, const assembly::MultiV
   model_->evalModel(in, out);
   if (!model_->lastStatus().valid) throw std::runtime_error("tangent solve: an element is inverted at the state");
   const auto lows = Thyra::linearOpWithSolve<double>(*model_->get_W_factory(), W);
-  const auto space = model_->get_x_space();
-  const auto B = Thyra::createConstMultiVector<double, assembly::LO, assembly::GO, assembly::Node>(
-      Teuchos::rcpFromRef(rhs), space);
-  x.putScalar(0.0);
-  const auto X = Thyra::createMultiVector<double, assembly::LO, assembly::GO, assembly::Node>(Teuchos::rcpFromRef(x), space);
-  Thyra::SolveCriteria<double> criteria;
-  criteria.solveMeasureType =
-      Thyra::SolveMeasureType(Thyra::SOLVE_MEASURE_NORM_RESIDUAL, Thyra::SOLVE_MEASURE_NORM_RHS);
-  criteria.requestedTol = relativeTolerance > 0.0 ? relativeTolerance : linearTolerance_;
-  const auto status = lows->solve(Thyra::NOTRANS, *B, X.ptr(), Teuchos::ptrFromRef(criteria));
-  if (status.solveStatus == Thyra::SOLVE_STATUS_UNCONVERGED)
-    throw std::runtime_error("tangent solve did not converge: " + status.message);
-  int iterations = 0;
-  if (!status.extraParameters.is_null() && status.extraParameters->isParameter("Iteration Count"))
-    iterations = status.extraParameters->get<int>("Iteration Count");
-  return iterations;
+  return solveWith(*lows, rhs, x, relativeTolerance, "tangent solve");
 }
 
 } // namespace glossa::solvers

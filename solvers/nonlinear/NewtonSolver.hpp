@@ -14,6 +14,9 @@
 namespace NOX::Thyra {
 class Group;
 }
+namespace Thyra {
+template <class Scalar> class LinearOpWithSolveBase;
+}
 
 namespace glossa::solvers {
 
@@ -59,6 +62,16 @@ public:
   int solveTangentWithKeptSolver(const assembly::Vector &u, const assembly::Vector &rhs, assembly::Vector &x,
                                  double relativeTolerance) const;
 
+  // Solves with the linear solver the last Newton solve left as it stands: its last assembled
+  // tangent and its preconditioner (for a direct solve its factors), nothing assembled or
+  // factored anew, to `relativeTolerance`. That tangent is the one at the solve's last iterate
+  // but one or two, so this is for quantities that need a few digits near a converged state (the
+  // airflow coupling's Jacobian, solvers/run/AirflowCoupling), at the cost of some back-
+  // substitutions instead of an assembly and a factorisation. Returns the Krylov iterations;
+  // throws std::runtime_error when no Newton solve has left a linear solver (none yet, or the
+  // last one had converged before its first iteration) or the solve fails.
+  int solveWithLastTangent(const assembly::MultiVector &rhs, assembly::MultiVector &x, double relativeTolerance) const;
+
   // The next solve builds its linear solver and preconditioner afresh (MueLu reuse scope = step:
   // called when a step solve starts, so a step's iterates do not depend on earlier steps' solves).
   void forgetLinearSolver() const { group_ = Teuchos::null; }
@@ -76,6 +89,10 @@ private:
   // Eisenstat-Walker forcing's first and largest value.
   NewtonResult run(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration,
                    bool updateTest, double maximumForcing) const;
+  // Solves lows x_j = b_j for every column to `relativeTolerance` (<= 0: the deck's linear
+  // tolerance); `what` names the solve in the error it throws when it does not converge.
+  int solveWith(Thyra::LinearOpWithSolveBase<double> &lows, const assembly::MultiVector &rhs, assembly::MultiVector &x,
+                double relativeTolerance, const char *what) const;
   // The deck's update test as a forecast for the model, for the update from the last accepted iterate.
   assembly::ModelEvaluator::ConvergenceForecast updateForecast(double floor) const;
 
@@ -85,6 +102,7 @@ private:
   double linearTolerance_;
   bool keepLinearSolver_;
   mutable Teuchos::RCP<NOX::Thyra::Group> group_; // kept between solves when keepLinearSolver_
+  mutable Teuchos::RCP<NOX::Thyra::Group> lastGroup_; // the last solve's that iterated: its linear solver
 };
 
 } // namespace glossa::solvers

@@ -34,7 +34,8 @@ Teuchos::ParameterList linearSolverParameters() {
                  io::Range::atLeast(0));
   io::declareString(p, "direct reuse scope", "Newton solve",
                     "MUMPS, with 'direct reuse iterations' > 0: how long kept factors live: Newton solve "
-                    "(the default: refactored at the first iteration of each Newton solve), step (kept across "
+                    "(the default: refactored at the first iteration of each Newton solve; step when the airflow "
+                    "is coupled inside the Uzawa loop), step (kept across "
                     "the Uzawa iterations of a step, refactored when a step, a retry or a controller's "
                     "candidate starts; restarts stay deterministic; faster, but a step's later Newton solves "
                     "lose their quadratic convergence; measured: doc/incompressibility.md) or run (kept across "

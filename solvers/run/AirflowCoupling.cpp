@@ -110,7 +110,45 @@ AirflowCoupling::StepCoupling::StepCoupling(const AirflowCoupling &coupling, dou
   }
 }
 
-AirflowCoupling::StepCoupling::Verdict AirflowCoupling::StepCoupling::afterSolve(const std::vector<double> &uAll) {
+void AirflowCoupling::forEachUnitSectionPressure(const std::function<void(std::size_t)> &visit) const {
+  const std::vector<std::array<double, 4>> kept = *facePressures_;
+  std::vector<double> unit(numSections(), 0.0);
+  try {
+    for (std::size_t i = 0; i < unit.size(); ++i) {
+      unit[i] = 1.0;
+      *facePressures_ = flow_.facePressures(unit);
+      unit[i] = 0.0;
+      visit(i);
+    }
+  } catch (...) {
+    *facePressures_ = kept;
+    throw;
+  }
+  *facePressures_ = kept;
+}
+
+Eigen::MatrixXd AirflowCoupling::mapJacobian(double time, const std::vector<double> &uAll, const Eigen::VectorXd &image,
+                                             const std::vector<std::vector<double>> &responses) const {
+  const auto n = static_cast<Eigen::Index>(numSections());
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(n, n);
+  std::vector<double> probe(uAll.size());
+  for (Eigen::Index i = 0; i < n && static_cast<std::size_t>(i) < responses.size(); ++i) {
+    const std::vector<double> &du = responses[static_cast<std::size_t>(i)];
+    double largest = 0.0;
+    for (const double d : du) largest = std::max(largest, std::abs(d));
+    if (!(largest > 0.0) || du.size() != uAll.size()) continue; // a section without faces
+    const double step = kProbeDisplacement / largest; // [Pa]
+    for (std::size_t k = 0; k < probe.size(); ++k) probe[k] = uAll[k] + step * du[k];
+    try {
+      jacobian.col(i) = (asVector(measure(time, probe).sectionPressure) - image) / step;
+    } catch (const std::exception &) { // the probe's lumen shut or lost a section: no slope there
+    }
+  }
+  return jacobian;
+}
+
+AirflowCoupling::StepCoupling::Verdict AirflowCoupling::StepCoupling::afterSolve(const std::vector<double> &uAll,
+                                                                                const SectionResponses &responses) {
   const input::AirflowParameters &parameters = coupling_.parameters_;
   ++result_.iterations;
   try {
@@ -137,6 +175,12 @@ AirflowCoupling::StepCoupling::Verdict AirflowCoupling::StepCoupling::afterSolve
       result_.why = why;
       return Verdict::failed;
     }
+    if (iteration_.needsJacobian() && responses) {
+      try {
+        iteration_.setJacobian(coupling_.mapJacobian(time_, uAll, image, responses()));
+      } catch (const std::exception &) { // no tangent solve (it failed, or the mixed method has none, on
+      }                                    // every rank alike): this update relaxes, the next asks again
+    }
     pressure_ = iteration_.next(pressure_, image);
     coupling_.setFacePressures(pressure_);
     return Verdict::again;
@@ -147,7 +191,7 @@ AirflowCoupling::StepCoupling::Verdict AirflowCoupling::StepCoupling::afterSolve
 }
 
 AirflowStep AirflowCoupling::couple(double time, const std::vector<double> &uStart, const SolidSolve &solve,
-                                    bool progress) const {
+                                    bool progress, const StepCoupling::SectionResponses &responses) const {
   StepCoupling step(*this, time, uStart, progress);
   if (!step.started()) return step.result();
   std::vector<double> uAll = uStart;
@@ -157,7 +201,7 @@ AirflowStep AirflowCoupling::couple(double time, const std::vector<double> &uSta
       out.why = "the solid's solve failed at coupling iteration " + std::to_string(out.iterations + 1);
       return out;
     }
-    if (step.afterSolve(uAll) != StepCoupling::Verdict::again) return step.result();
+    if (step.afterSolve(uAll, responses) != StepCoupling::Verdict::again) return step.result();
   }
 }
 

@@ -39,10 +39,15 @@ public:
     // displacement), the step's start; a lumen the flow cannot pass fails at once (result()).
     StepCoupling(const AirflowCoupling &coupling, double time, const std::vector<double> &uStart, bool progress);
     bool started() const { return result_.why.empty(); }
+    // The displacement of every node per pascal on each section's faces (one vector per section,
+    // as `uAll`), through the solid's tangent at the state just solved: what Newton's coupling
+    // method measures its Jacobian from. Collective.
+    using SectionResponses = std::function<std::vector<std::vector<double>>()>;
     // After a solid solve that reached `uAll`: the flow through its lumen; coupled when no
     // section's pressure changes by more than the tolerance, else the next face pressures are
-    // set (again), or the iterations are spent or the flow fails (failed).
-    Verdict afterSolve(const std::vector<double> &uAll);
+    // set (again), or the iterations are spent or the flow fails (failed). Newton's method asks
+    // `responses` once a step, at its first update; without them it relaxes.
+    Verdict afterSolve(const std::vector<double> &uAll, const SectionResponses &responses = {});
     const AirflowStep &result() const { return result_; }
 
   private:
@@ -60,7 +65,13 @@ public:
 
   // The step to `time` coupled around whole solid solves, from the starting state's displacement
   // `uStart`. `progress`: a line per coupling iteration. Collective through `solve`.
-  AirflowStep couple(double time, const std::vector<double> &uStart, const SolidSolve &solve, bool progress) const;
+  AirflowStep couple(double time, const std::vector<double> &uStart, const SolidSolve &solve, bool progress,
+                     const StepCoupling::SectionResponses &responses = {}) const;
+
+  // Sets the airflow load's face pressures to 1 Pa on each section in turn and none elsewhere,
+  // calls `visit(section)` for each, then puts back the pressures they had (the solid's
+  // response to one section's pressure, for Newton's method).
+  void forEachUnitSectionPressure(const std::function<void(std::size_t)> &visit) const;
 
   // The flow through the lumen at `uAll` under the drive at `time`, uncoupled (the t = 0 record,
   // and a controlled step's winner, solved among other candidates).
@@ -77,6 +88,14 @@ private:
   void setFacePressures(const Eigen::VectorXd &sectionPressure) const;
   airflow::FlowDrive drive(double time) const;
   airflow::AirwayFlowState measure(double time, const std::vector<double> &uAll) const;
+  // dF/dp of the coupling's map at the solved state `uAll` whose flow gave `image`: column i the
+  // flow's pressures through the lumen moved by a small multiple of `responses[i]` (a probe of
+  // kProbeDisplacement at the node that moves most), less `image`, per pascal. A probe the flow
+  // cannot pass leaves its column zero.
+  Eigen::MatrixXd mapJacobian(double time, const std::vector<double> &uAll, const Eigen::VectorXd &image,
+                              const std::vector<std::vector<double>> &responses) const;
+  // Small against the lumen (millimetres) and its mesh, large against round-off in its areas.
+  static constexpr double kProbeDisplacement = 1e-6; // [m]
 
   input::AirflowParameters parameters_;
   std::shared_ptr<const model::AirwayOutput> airway_;

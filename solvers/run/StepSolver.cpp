@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "assembly/Assembler.hpp"
+#include "assembly/LoadContribution.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/ResultEvaluator.hpp"
 #include "fem/TurnedOverVolume.hpp"
@@ -72,7 +73,7 @@ StepAttempt StepSolver::solveCoupledInUzawaLoop(double time, double dt, StepStat
     return out;
   }
   const UzawaLoop::OuterCondition outer = [&](const assembly::Vector &u) {
-    switch (coupling.afterSolve(results.gatherDisplacement(u))) {
+    switch (coupling.afterSolve(results.gatherDisplacement(u), [&] { return sectionResponses(u, time); })) {
     case AirflowCoupling::StepCoupling::Verdict::coupled: return UzawaLoop::OuterVerdict::met;
     case AirflowCoupling::StepCoupling::Verdict::again: return UzawaLoop::OuterVerdict::updated;
     default: return UzawaLoop::OuterVerdict::failed;
@@ -101,13 +102,33 @@ StepAttempt StepSolver::solveCoupledAroundSolves(double time, double dt, StepSta
         if (last.ok) uAll = results.gatherDisplacement(state.u);
         return last.ok;
       },
-      progress_ && !quiet);
+      progress_ && !quiet, [&] { return sectionResponses(state.u, time); });
   last.uzawa.solves += counted.solves;
   last.uzawa.newtonIterations += counted.newtonIterations;
   last.uzawa.linearIterations += counted.linearIterations;
   last.uzawa.contactUpdates += counted.contactUpdates;
   takeCoupling(coupled, last);
   return last;
+}
+
+std::vector<std::vector<double>> StepSolver::sectionResponses(const assembly::Vector &u, double time) const {
+  const std::size_t sections = parts_.airflow->numSections();
+  const auto load = assembly::followerPressureContribution(scene_.pressures.at(static_cast<std::size_t>(scene_.airflowLoad)));
+  assembly::MultiVector rhs(u.getMap(), sections), x(u.getMap(), sections);
+  // K du = -df/dp, and the load's residual is -f_ext: du = K^{-1} f_ext of the section's 1 Pa.
+  parts_.airflow->forEachUnitSectionPressure([&](std::size_t i) {
+    rhs.getVectorNonConst(i)->update(-1.0, parts_.assembler.loadResidual(u, time, load.get()), 0.0);
+  });
+  // The factors the step's last Newton solve left (no assembly, no factorisation), else afresh.
+  try {
+    parts_.newton.solveWithLastTangent(rhs, x, kResponseTolerance);
+  } catch (const std::runtime_error &) {
+    parts_.newton.solveTangent(u, rhs, x, kResponseTolerance);
+  }
+  const assembly::ResultEvaluator results(parts_.assembler);
+  std::vector<std::vector<double>> responses(sections);
+  for (std::size_t i = 0; i < sections; ++i) responses[i] = results.gatherDisplacement(*x.getVector(i));
+  return responses;
 }
 
 StepAttempt StepSolver::solveSolid(double time, double dt, StepState &state, bool quiet,

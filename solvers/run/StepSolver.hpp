@@ -71,6 +71,14 @@ private:
   StepAttempt solveCoupledInUzawaLoop(double time, double dt, StepState &state, bool quiet,
                                       const std::vector<double> &inputs) const;
 
+  // The displacement of every node per pascal on each airflow section's faces at the solved state
+  // u: the tangent at u solved for the airflow load of each section alone (Newton's coupling
+  // method, AirflowCoupling). Collective.
+  std::vector<std::vector<double>> sectionResponses(const assembly::Vector &u, double time) const;
+  // Their solves' relative tolerance: a Jacobian of the coupling needs a few digits (its update is
+  // tested by the coupling's own residual).
+  static constexpr double kResponseTolerance = 1e-2;
+
   StepSolverParts parts_;
   const model::Scene &scene_;
   ReuseScope keptScope_;

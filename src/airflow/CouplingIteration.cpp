@@ -1,5 +1,6 @@
 #include "airflow/CouplingIteration.hpp"
 
+#include <Eigen/LU>
 #include <Eigen/QR>
 #include <cmath>
 #include <stdexcept>
@@ -17,6 +18,14 @@ void CouplingIteration::restart() {
   omega_ = relaxation_;
   residuals_.clear();
   images_.clear();
+  jacobian_.resize(0, 0);
+}
+
+void CouplingIteration::setJacobian(const Eigen::MatrixXd &mapJacobian) {
+  if (mapJacobian.rows() != mapJacobian.cols())
+    throw std::invalid_argument("coupling iteration: the map's Jacobian must be square");
+  jacobian_ = mapJacobian - Eigen::MatrixXd::Identity(mapJacobian.rows(), mapJacobian.cols());
+  calls_ = 0; // Broyden's updates start from this Jacobian
 }
 
 Eigen::VectorXd CouplingIteration::next(const Eigen::VectorXd &iterate, const Eigen::VectorXd &image) {
@@ -39,6 +48,19 @@ Eigen::VectorXd CouplingIteration::next(const Eigen::VectorXd &iterate, const Ei
     const Eigen::VectorXd alpha = V.completeOrthogonalDecomposition().solve(-r);
     omega_ = 1.0;
     return image + W * alpha;
+  }
+  if (method_ == CouplingMethod::newton && jacobian_.size() != 0) {
+    if (jacobian_.rows() != r.size()) throw std::invalid_argument("coupling iteration: the Jacobian's size is not the pressures'");
+    if (calls_ > 0) {
+      const Eigen::VectorXd dp = iterate - lastIterate_;
+      const double dp2 = dp.squaredNorm();
+      if (dp2 > 0.0) jacobian_ += ((r - lastResidual_) - jacobian_ * dp) * dp.transpose() / dp2;
+    }
+    ++calls_;
+    lastResidual_ = r;
+    lastIterate_ = iterate;
+    omega_ = 1.0;
+    return iterate - jacobian_.fullPivLu().solve(r);
   }
   if (method_ == CouplingMethod::aitken && calls_ > 0) {
     const Eigen::VectorXd dr = r - lastResidual_;

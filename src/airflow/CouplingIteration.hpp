@@ -11,7 +11,13 @@
 //    V = [r_k - r_i] and of the images W = [F(p_k) - F(p_i)] over this step's earlier iterates
 //    i < k give alpha = argmin |V alpha + r_k|, and p_{k+1} = F(p_k) + W alpha (the first iteration
 //    relaxes as above). A Newton iteration on the pressures whose Jacobian is learned from the
-//    iterates: no derivative of the solid or the flow is needed.
+//    iterates: no derivative of the solid or the flow is needed;
+//  - Newton's method with the Jacobian of F measured once a step (setJacobian: the solid's
+//    response to each section's pressure through its tangent, then the flow's through the lumen;
+//    solvers/run/AirflowCoupling): p_{k+1} = p_k - J^{-1} r_k with J = F' - I, and J updated by
+//    Broyden's rank-one ("good") update from the iterates that follow, J += (dr - J dp) dp^T / |dp|^2,
+//    so that the step's later solves sharpen a Jacobian taken at its first (Broyden 1965). Until a
+//    Jacobian is set it relaxes as constant relaxation does.
 // Eigen only.
 
 #include <Eigen/Core>
@@ -19,7 +25,7 @@
 
 namespace glossa::airflow {
 
-enum class CouplingMethod { constantRelaxation, aitken, quasiNewton };
+enum class CouplingMethod { constantRelaxation, aitken, quasiNewton, newton };
 
 class CouplingIteration {
  public:
@@ -30,6 +36,10 @@ class CouplingIteration {
   void restart();
   // The next iterate from p_k and F(p_k) (of the same size every call since restart()).
   Eigen::VectorXd next(const Eigen::VectorXd &iterate, const Eigen::VectorXd &image);
+  // Newton's method: whether this step still needs its Jacobian (before the first next() that
+  // can use it), and the Jacobian dF/dp of the map itself (square, of the pressures' size).
+  bool needsJacobian() const { return method_ == CouplingMethod::newton && jacobian_.size() == 0; }
+  void setJacobian(const Eigen::MatrixXd &mapJacobian);
   // The relaxation factor the last next() used (the quasi-Newton step's: 1 once it has a model).
   double lastRelaxation() const { return omega_; }
 
@@ -38,7 +48,8 @@ class CouplingIteration {
   double relaxation_;
   double omega_;
   int calls_ = 0;
-  Eigen::VectorXd lastResidual_;
+  Eigen::VectorXd lastResidual_, lastIterate_;
+  Eigen::MatrixXd jacobian_;  // Newton's J = F' - I, Broyden-updated; empty until set
   std::vector<Eigen::VectorXd> residuals_, images_;  // this step's, for IQN-ILS
 };
 

@@ -345,13 +345,14 @@ void Assembler::assembleMass(FEMatrix &M, fem::MassLumping lumping, ConstrainedD
   if (globalValid != 1) throw std::logic_error("Assembler::assembleMass: a degenerate element");
 }
 
-Vector Assembler::loadResidual(const Vector &u, double time) const {
+Vector Assembler::loadResidual(const Vector &u, double time, const LoadContribution *only) const {
   Vector uOverlap(layout_.overlapMap()), fOverlap(layout_.overlapMap()), f(layout_.ownedMap());
   importPrescribed(u, time, uOverlap);
   auto uData = uOverlap.getData(0);
   {
     auto fData = fOverlap.getDataNonConst(0);
-    addLoads(uData, time, fData, nullptr, /*constrainedToo=*/false, everyLoad);
+    if (only) only->addTo(loadTarget(uData, &fData, nullptr, /*constrainedToo=*/false), time);
+    else addLoads(uData, time, fData, nullptr, /*constrainedToo=*/false, everyLoad);
   }
   f.doExport(fOverlap, *exporter_, Tpetra::ADD);
   return f;

@@ -129,7 +129,8 @@ public:
 
   // The residual of the loads alone (assemble without the element terms): f at (u, t) minus
   // f_int(u), for df/dt at fixed u. Collective.
-  Vector loadResidual(const Vector &u, double time) const;
+  // `only`: that load alone (a contribution over this assembler's scene), not the scene's.
+  Vector loadResidual(const Vector &u, double time, const LoadContribution *only = nullptr) const;
 
   // Norm of the external force vector at time t (the scale of the Newton tolerance).
   double externalForceNorm(double time) const;

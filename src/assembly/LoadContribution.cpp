@@ -193,6 +193,10 @@ bool ExternalMuscleForces::evaluate(const LoadTarget &target, model::MuscleHisto
   return valid;
 }
 
+std::unique_ptr<LoadContribution> followerPressureContribution(const model::FollowerPressureLoad &load) {
+  return std::make_unique<FollowerPressureContribution>(load);
+}
+
 std::vector<std::unique_ptr<LoadContribution>> loadContributions(const model::Scene &scene,
                                                                  const model::MuscleHistory &history,
                                                                  const ExternalMuscleForces **externalMuscles) {

@@ -83,6 +83,10 @@ private:
   const model::MuscleHistory &history_; // activation, step and committed lambda_c
 };
 
+// One follower pressure alone, as the scene's list holds it (a pressure whose own residual is
+// wanted: the airflow's per section, solvers/run/AirflowCoupling).
+std::unique_ptr<LoadContribution> followerPressureContribution(const model::FollowerPressureLoad &load);
+
 // The scene's loads in assembly order: dead tractions, body forces, follower pressures,
 // contacts (rigid and deformable), external muscles (if any), elastic supports. `externalMuscles` receives the external muscles' entry (or
 // null) for the muscle history's update.

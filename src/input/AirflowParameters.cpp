@@ -55,8 +55,9 @@ Teuchos::ParameterList airflowParameters() {
                     {"Uzawa loop", "step solve"});
   io::declareString(p, "coupling method", "Aitken",
                     "how the sections' pressures are updated between coupling iterations: Aitken's dynamic "
-                    "relaxation, constant relaxation, or the interface quasi-Newton method IQN-ILS (doc/airflow.md)",
-                    {"Aitken", "constant relaxation", "quasi-Newton"});
+                    "relaxation, constant relaxation, the interface quasi-Newton method IQN-ILS, or Newton's method "
+                    "with the Jacobian measured through the solid's tangent once a step (doc/airflow.md)",
+                    {"Aitken", "constant relaxation", "quasi-Newton", "Newton"});
   io::declareDouble(p, "relaxation", 0.5, "",
                     "the relaxation of the sections' pressures: constant relaxation's factor, Aitken's and the "
                     "quasi-Newton method's first one (later ones adapt it)",
@@ -103,7 +104,8 @@ AirflowParameters parseAirflowParameters(const io::Deck &deck, double endTime) {
   const auto method = a.get<std::string>("coupling method");
   p.couplingMethod = method == "Aitken"                ? airflow::CouplingMethod::aitken
                      : method == "constant relaxation" ? airflow::CouplingMethod::constantRelaxation
-                                                       : airflow::CouplingMethod::quasiNewton;
+                     : method == "quasi-Newton"        ? airflow::CouplingMethod::quasiNewton
+                                                       : airflow::CouplingMethod::newton;
   p.relaxation = a.get<double>("relaxation");
   p.maximumCouplingIterations = a.get<int>("maximum coupling iterations");
   return p;

@@ -5,7 +5,10 @@
 //    on, which lands on the fixed point exactly;
 //  - IQN-ILS on an affine map of n unknowns learns (A - I) exactly from n differences, so its
 //    (n + 1)-th update lands on the fixed point;
-//  - constant relaxation contracts by the relaxed map's spectral radius each iteration.
+//  - constant relaxation contracts by the relaxed map's spectral radius each iteration;
+//  - Newton's method given the affine map's own Jacobian lands on its fixed point in one update;
+//    given a wrong one, Broyden's updates still land on it within 2n updates (Gay 1979: Broyden's
+//    method terminates on a linear system of n unknowns in at most 2n steps).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -76,10 +79,51 @@ TEST(CouplingIteration, ConstantRelaxationContractsByTheRelaxedSpectralRadius) {
   EXPECT_DOUBLE_EQ(relaxed.lastRelaxation(), 0.5);
 }
 
+TEST(CouplingIteration, NewtonWithTheMapsJacobianHitsTheFixedPointInOneUpdate) {
+  const AffineMap F = threeUnknowns();
+  const Eigen::VectorXd exact = F.fixedPoint();
+  CouplingIteration newton(CouplingMethod::newton, 0.5);
+  EXPECT_TRUE(newton.needsJacobian());
+  newton.setJacobian(F.A);
+  EXPECT_FALSE(newton.needsJacobian());
+  const Eigen::VectorXd p = newton.next(Eigen::VectorXd::Zero(3), F(Eigen::VectorXd::Zero(3)));
+  EXPECT_NEAR((p - exact).norm(), 0.0, 1e-12 * exact.norm());
+  EXPECT_DOUBLE_EQ(newton.lastRelaxation(), 1.0);
+  // restart() forgets the Jacobian: a new step asks for its own.
+  newton.restart();
+  EXPECT_TRUE(newton.needsJacobian());
+}
+
+TEST(CouplingIteration, NewtonWithAWrongJacobianGetsThereByBroydensUpdates) {
+  const AffineMap F = threeUnknowns();
+  const Eigen::VectorXd exact = F.fixedPoint();
+  CouplingIteration newton(CouplingMethod::newton, 0.5);
+  Eigen::Matrix3d wrong = F.A;
+  wrong(0, 1) += 0.3; // a Jacobian measured at another state
+  wrong(2, 2) -= 0.2;
+  newton.setJacobian(wrong);
+  Eigen::VectorXd p = Eigen::VectorXd::Zero(3);
+  p = newton.next(p, F(p));
+  const double afterOne = (p - exact).norm();
+  EXPECT_GT(afterOne, 1e-3 * exact.norm()); // the wrong Jacobian misses
+  int updates = 1;
+  while ((p - exact).norm() > 1e-10 * exact.norm() && updates < 6) {
+    p = newton.next(p, F(p));
+    ++updates;
+  }
+  EXPECT_LE((p - exact).norm(), 1e-10 * exact.norm());
+  EXPECT_LE(updates, 6);
+  // Without a Jacobian it relaxes as constant relaxation does.
+  CouplingIteration unset(CouplingMethod::newton, 0.5);
+  EXPECT_NEAR((unset.next(Eigen::VectorXd::Zero(3), F.b) - 0.5 * F.b).norm(), 0.0, 1e-14 * F.b.norm());
+}
+
 TEST(CouplingIteration, RefusesARelaxationOutsideZeroToOne) {
   EXPECT_THROW(CouplingIteration(CouplingMethod::aitken, 0.0), std::invalid_argument);
   EXPECT_THROW(CouplingIteration(CouplingMethod::aitken, 1.5), std::invalid_argument);
   EXPECT_NO_THROW(CouplingIteration(CouplingMethod::quasiNewton, 1.0));
+  CouplingIteration newton(CouplingMethod::newton, 0.5);
+  EXPECT_THROW(newton.setJacobian(Eigen::MatrixXd::Zero(2, 3)), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 // The solver-side sections parsed once into RunConfiguration: each section's values (given and
 // defaulted), whether a controller is asked for, the deck's listing that a restart compares, the
 // Linear solver parameters given that only an iterative solve uses (each with where it was
-// given), and the first difference between two listings.
+// given), the direct solve's reuse scope under a coupled airflow, and the first difference
+// between two listings.
 #include <gtest/gtest.h>
 
 #include "DeckOnFile.hpp"
+#include "input/AirflowParameters.hpp"
 #include "solvers/parameters/ControlSection.hpp"
 #include "solvers/parameters/RunConfiguration.hpp"
 
@@ -20,6 +22,7 @@ Teuchos::ParameterList schema() {
   s.set("Linear solver", linearSolverParameters());
   s.set("Output", outputParameters());
   s.set("Control", controlParameters());
+  s.set("Airflow", input::airflowParameters());
   return s;
 }
 
@@ -84,6 +87,19 @@ TEST(RunConfiguration, IterativeOnlySettingsGivenAreListedWithWhereTheyWereGiven
                     " (--set on the command line): parameter 'Linear solver/coarse size'"}));
   EXPECT_EQ(c.linear.coarseSize, 500);
   EXPECT_TRUE(parseRunConfiguration(test::deckOnFile("run_plain.xml", "", schema())).givenIterativeOnly.empty());
+}
+
+TEST(RunConfiguration, AnAirflowCoupledInTheUzawaLoopKeepsTheDirectFactorsForTheStep) {
+  EXPECT_EQ(configuration("run_no_airflow.xml").linear.directReuseScope, ReuseScope::newtonSolve);
+  EXPECT_EQ(configuration("run_airflow.xml", {"Airflow/driven by=pressures"}).linear.directReuseScope, ReuseScope::step);
+  EXPECT_EQ(configuration("run_airflow_around.xml", {"Airflow/driven by=pressures", "Airflow/coupling loop=step solve"})
+                .linear.directReuseScope,
+            ReuseScope::newtonSolve);
+  // A scope the deck gives stands.
+  EXPECT_EQ(configuration("run_airflow_given.xml",
+                          {"Airflow/driven by=pressures", "Linear solver/direct reuse scope=Newton solve"})
+                .linear.directReuseScope,
+            ReuseScope::newtonSolve);
 }
 
 TEST(RunConfiguration, TheFirstDifferenceOfTwoListings) {
