@@ -3,7 +3,8 @@
 // every element to the dilatation tolerance and the supports then carry the block's weight (the
 // balance of forces, an independent reference); a state with material across the symmetry plane
 // is refused, naming the plane and the node; corners are measured, and an element folded through
-// itself refuses the state.
+// itself refuses the state. And the Newton solver's solve with the tangent its last solve left,
+// against the tangent assembled at the converged state.
 #include <gtest/gtest.h>
 
 #include "BlockStack.hpp"
@@ -117,4 +118,38 @@ TEST(StepSolver, TheUzawaLoopIteratesItsOuterConditionToo) {
   EXPECT_FALSE(failed.converged);
   EXPECT_TRUE(failed.outerFailed);
   EXPECT_EQ(failed.solves, 1);
+}
+
+// NewtonSolver::solveWithLastTangent (the airflow coupling's Jacobian, doc/airflow.md) solves with
+// the linear solver the last Newton solve left: nothing before a solve; after one, the answer of
+// the tangent at the converged state (solveTangent, assembled and factored there afresh) to the
+// difference between that tangent and the last one assembled, and far from the reference state's.
+TEST(NewtonSolver, TheLastTangentSolvesAsTheTangentAtTheConvergedState) {
+  Stack s;
+  StepState state(s.assembler->layout().ownedMap(), s.assembler->layout().numLocalElements());
+  const auto map = s.assembler->layout().ownedMap();
+  assembly::MultiVector rhs(map, 2), last(map, 2), converged(map, 2), atRest(map, 2);
+  EXPECT_THROW(s.newton->solveWithLastTangent(rhs, last, 1e-10), std::runtime_error);
+
+  const StepAttempt a = s.solver->solve(1.0, 1.0, state, true);
+  ASSERT_TRUE(a.ok) << a.why;
+  // The weight's load, and a lateral pull on every free dof.
+  rhs.getVectorNonConst(0)->assign(s.assembler->loadResidual(state.u, 1.0));
+  rhs.getVectorNonConst(1)->putScalar(1e-6);
+  s.assembler->zeroConstrainedDofs(*rhs.getVectorNonConst(1));
+  s.newton->solveWithLastTangent(rhs, last, 1e-10);
+  s.newton->solveTangent(state.u, rhs, converged, 1e-10);
+  const assembly::Vector zero(map);
+  s.newton->solveTangent(zero, rhs, atRest, 1e-10);
+  for (std::size_t j = 0; j < 2; ++j) {
+    assembly::Vector toLast(map), toRest(map);
+    toLast.update(1.0, *last.getVector(j), -1.0, *converged.getVector(j), 0.0);
+    toRest.update(1.0, *atRest.getVector(j), -1.0, *converged.getVector(j), 0.0);
+    const double scale = converged.getVector(j)->norm2();
+    ASSERT_GT(scale, 0.0);
+    EXPECT_LT(toLast.norm2(), 1e-6 * scale) << "column " << j;
+    EXPECT_GT(toRest.norm2(), 1e-3 * scale) << "column " << j; // the test can tell the states apart
+    std::printf("column %zu: last tangent %.3e, reference state %.3e of the converged answer\n", j,
+                toLast.norm2() / scale, toRest.norm2() / scale);
+  }
 }
