@@ -67,6 +67,18 @@ Teuchos::ParameterList airflowParameters() {
   return p;
 }
 
+namespace {
+AirflowLoop loopOf(const Teuchos::ParameterList &a) {
+  return a.get<std::string>("coupling loop") == "Uzawa loop" ? AirflowLoop::uzawaLoop : AirflowLoop::stepSolve;
+}
+} // namespace
+
+bool airflowCoupledInUzawaLoop(const io::Deck &deck) {
+  if (!deck.root().isSublist("Airflow")) return false;
+  const Teuchos::ParameterList &a = deck.root().sublist("Airflow");
+  return a.get<std::string>(kDrivenBy) != "off" && loopOf(a) == AirflowLoop::uzawaLoop;
+}
+
 AirflowParameters parseAirflowParameters(const io::Deck &deck, double endTime) {
   static const std::vector<std::string> driven{"pressures", "flow rate"};
   static const std::vector<ReadUnder> readers{{"nasal pressure", driven},
@@ -100,7 +112,7 @@ AirflowParameters parseAirflowParameters(const io::Deck &deck, double endTime) {
   p.recoveryCoefficient = a.get<double>("recovery coefficient");
   p.mapping = a.get<std::string>("pressure mapping") == "linear" ? AirflowMapping::linear : AirflowMapping::nearestSection;
   p.couplingTolerance = a.get<double>("coupling tolerance");
-  p.loop = a.get<std::string>("coupling loop") == "Uzawa loop" ? AirflowLoop::uzawaLoop : AirflowLoop::stepSolve;
+  p.loop = loopOf(a);
   const auto method = a.get<std::string>("coupling method");
   p.couplingMethod = method == "Aitken"                ? airflow::CouplingMethod::aitken
                      : method == "constant relaxation" ? airflow::CouplingMethod::constantRelaxation

@@ -38,6 +38,10 @@ struct AirflowParameters {
   int maximumCouplingIterations = 30;
 };
 
+// Whether the deck's Airflow section (validated, with its defaults) couples a flow inside the
+// Uzawa loop: what the linear solver's defaults look at before the section is parsed.
+bool airflowCoupledInUzawaLoop(const io::Deck &deck);
+
 // `deck` validated against a schema holding airflowParameters() as "Airflow"; `endTime` the
 // deck's own (a ramp's default duration). A parameter the drive does not read is a DeckError
 // naming it.
