@@ -138,7 +138,8 @@ ParameterList meshParameters() {
                     "nodal coordinates that replace the mesh's as the reference (zero-strain) configuration, "
                     "e.g. written by glossa zero-strain: lines 'node x y z', node the 0-based index in this mesh, "
                     "relative to the deck; sets, named points and fibre directions stay those of the mesh as read "
-                    "(doc/tongue.md, s8_1); empty: the mesh as read");
+                    "(doc/tongue.md, s8_1); a file for the mesh before 'refine' is carried to the refined "
+                    "mesh (new nodes at the midpoints of its geometry); empty: the mesh as read");
   return p;
 }
 
@@ -205,7 +206,8 @@ ParameterList namedPointParameters() {
   return p;
 }
 
-mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
+// asRead, when given, receives the file's mesh before Mesh/File/refine (empty when not refined).
+mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes, mesh::HexMesh *asRead = nullptr) {
   const ParameterList &p = deck.root().sublist("Mesh");
   mesh::HexMesh m;
   try {
@@ -261,7 +263,10 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
       } catch (const std::runtime_error &e) {
         throw io::DeckError(deck.where({"Mesh", "File", "path"}) + ": " + e.what());
       }
-      if (f.get<int>("refine") > 0) m = mesh::refineUniformly(m, f.get<int>("refine"));
+      if (f.get<int>("refine") > 0) {
+        if (asRead) *asRead = m;
+        m = mesh::refineUniformly(m, f.get<int>("refine"));
+      }
     } else if (p.get<std::string>("type") == "thick cylinder") {
       const auto &c = p.sublist("Thick cylinder");
       const auto &n = c.get<Array<int>>("cells");
@@ -328,16 +333,29 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes) {
 // Mesh/reference coordinates file (§8.1): the zero-strain configuration replaces the node
 // positions after everything that selects by geometry (face sets by box and normal, named points,
 // fibre directions from the polylines) has been done on the mesh as read: those are labels of the
-// imaged anatomy (model::useReferenceNodes).
-void replaceReferenceCoordinates(const io::Deck &deck, Scene &scene) {
+// imaged anatomy (model::useReferenceNodes). A file for the mesh as read (`asRead`, non-empty when
+// Mesh/File/refine > 0) is carried to the refinement: its new nodes at the midpoints of the
+// zero-strain geometry's edges, faces and cells, so one zero-strain configuration serves the coarse,
+// medium and fine tongues (on a refined mesh it is then the coarse one's, not its own: doc/tongue.md).
+void replaceReferenceCoordinates(const io::Deck &deck, Scene &scene, const mesh::HexMesh &asRead) {
   const std::string file = deck.root().sublist("Mesh").get<std::string>("reference coordinates file");
   if (file.empty()) return;
   std::filesystem::path q(file);
   if (q.is_relative()) q = std::filesystem::path(deck.file()).parent_path() / q;
   try {
-    useReferenceNodes(scene, mesh::readReferenceCoordinates(q.string(), scene.mesh.numNodes()));
+    const bool refined = asRead.numNodes() > 0 && asRead.numNodes() != scene.mesh.numNodes();
+    if (refined && mesh::countReferenceCoordinates(q.string()) == asRead.numNodes()) {
+      const int levels = deck.root().sublist("Mesh").sublist("File").get<int>("refine");
+      useReferenceNodes(scene, mesh::refinedPositions(
+                                   asRead, mesh::readReferenceCoordinates(q.string(), asRead.numNodes()), levels));
+    } else {
+      useReferenceNodes(scene, mesh::readReferenceCoordinates(q.string(), scene.mesh.numNodes()));
+    }
   } catch (const std::runtime_error &e) {
-    throw io::DeckError(deck.where({"Mesh", "reference coordinates file"}) + ": " + e.what());
+    std::string also;
+    if (asRead.numNodes() > 0 && asRead.numNodes() != scene.mesh.numNodes())
+      also = " (or " + std::to_string(asRead.numNodes()) + ", the mesh's before Mesh/File/refine)";
+    throw io::DeckError(deck.where({"Mesh", "reference coordinates file"}) + ": " + e.what() + also);
   }
 }
 
@@ -531,7 +549,8 @@ void traceNamedPoints(const io::Deck &deck, Scene &scene) {
 
 Scene buildScene(const io::Deck &deck, double endTime) {
   Scene scene;
-  scene.mesh = buildMesh(deck, scene.meshNotes);
+  mesh::HexMesh asRead;
+  scene.mesh = buildMesh(deck, scene.meshNotes, &asRead);
   mesh::HexMesh &m = scene.mesh;
 
   BuiltMaterial material = buildMaterial(deck, m, endTime);
@@ -558,7 +577,7 @@ Scene buildScene(const io::Deck &deck, double endTime) {
   if (scene.tracedPoints.empty())
     scene.meshNotes.push_back("no named points: traces.csv and final_displacement will be empty; name points "
                               "in the deck's 'Named points' (any position inside the mesh) to trace them");
-  replaceReferenceCoordinates(deck, scene);
+  replaceReferenceCoordinates(deck, scene, asRead);
   checkScene(deck, scene);
   return scene;
 }

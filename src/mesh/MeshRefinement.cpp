@@ -101,4 +101,15 @@ HexMesh refineUniformly(const HexMesh &mesh, int levels) {
   return result;
 }
 
+std::vector<Eigen::Vector3d> refinedPositions(const HexMesh &mesh, std::vector<Eigen::Vector3d> positions,
+                                              int levels) {
+  if (positions.size() != mesh.numNodes())
+    throw std::invalid_argument("refinedPositions: " + std::to_string(positions.size()) + " positions for " +
+                                std::to_string(mesh.numNodes()) + " nodes");
+  HexMesh moved;
+  moved.nodes = std::move(positions);
+  moved.elements = mesh.elements;  // the sets do not move a node: only the connectivity is needed
+  return refineUniformly(moved, levels).nodes;
+}
+
 }  // namespace glossa::mesh

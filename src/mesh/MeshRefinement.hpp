@@ -23,4 +23,12 @@ namespace glossa::mesh {
 // Throws std::invalid_argument if levels < 0.
 HexMesh refineUniformly(const HexMesh &mesh, int levels);
 
+// The node positions refineUniformly(mesh, levels) would have if `mesh`'s nodes were at
+// `positions` (one per node of `mesh`): a geometry given on the mesh as read, such as a
+// zero-strain configuration (doc/tongue.md), carried to its refinement. The numbering of the
+// new nodes depends on the connectivity only, so it is that of refineUniformly(mesh, levels).
+// Throws std::invalid_argument if positions.size() != mesh.numNodes() or levels < 0.
+std::vector<Eigen::Vector3d> refinedPositions(const HexMesh &mesh, std::vector<Eigen::Vector3d> positions,
+                                              int levels);
+
 }  // namespace glossa::mesh

@@ -67,6 +67,18 @@ std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, s
   return nodes;
 }
 
+std::size_t countReferenceCoordinates(const std::string &path) {
+  std::ifstream in(path);
+  if (!in) throw MeshError(path + ": cannot open the reference coordinates file");
+  std::size_t count = 0;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::size_t first = line.find_first_not_of(" \t\r,");
+    if (first != std::string::npos && line[first] != '#') ++count;
+  }
+  return count;
+}
+
 void writeReferenceCoordinates(const std::string &path, const std::vector<Eigen::Vector3d> &nodes,
                                const std::vector<std::string> &header) {
   std::FILE *f = std::fopen(path.c_str(), "w");

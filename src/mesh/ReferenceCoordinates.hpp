@@ -28,6 +28,10 @@ void replaceReferenceNodes(HexMesh &m, std::vector<Eigen::Vector3d> reference);
 // "FILE:" for a missing file or a node count that differs from the mesh's.
 std::vector<Eigen::Vector3d> readReferenceCoordinates(const std::string &path, std::size_t numNodes);
 
+// The number of node lines in the file (comments and blank lines not counted), to tell a file
+// for the mesh as read from one for its refinement. Throws std::runtime_error if it cannot be read.
+std::size_t countReferenceCoordinates(const std::string &path);
+
 // Writes the nodes in this format; `header` lines are written as '#' comments first. Throws
 // std::runtime_error if the file cannot be written.
 void writeReferenceCoordinates(const std::string &path, const std::vector<Eigen::Vector3d> &nodes,

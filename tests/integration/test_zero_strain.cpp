@@ -16,7 +16,11 @@
 #include "RunDeck.hpp"
 #include "app/ZeroStrainCommand.hpp"
 #include "mesh/MeshFile.hpp"
+#include "mesh/MeshQuality.hpp"
+#include "mesh/MeshRefinement.hpp"
+#include "mesh/ReferenceCoordinates.hpp"
 #include "input/SceneFactory.hpp"
+#include "io/deck/DeckError.hpp"
 #include "solvers/parameters/ControlSection.hpp"
 #include "solvers/parameters/RunConfiguration.hpp"
 
@@ -72,6 +76,53 @@ app::ZeroStrainResult zeroStrain(const std::string &method, const std::filesyste
   deck.applyOverride("Zero strain/method=" + method, schema);
   deck.validate(schema);
   return app::computeZeroStrain(deck, solvers::parseRunConfiguration(deck), test::worldComm(), output, true);
+}
+
+// The coarse tongue's zero-strain configuration on the refined tongue (Mesh/File/refine = 1): the
+// old nodes where the file puts them, the imaged geometry that of the refined mesh file, and the
+// reference volume the coarse reference's (refinement keeps the trilinear elements' volume), at
+// one level and at two.
+TEST(ZeroStrain, TheCoarseConfigurationCarriesToTheRefinedTongue) {
+  const auto schema = app::deckSchema();
+  const auto file = inputPath("paper/s8_1/reference_inverse.txt");
+  auto deck = io::Deck::fromFile(inputPath("paper/s8_1_upright.xml"));
+  deck.applyOverride("Mesh/reference coordinates file=" + file, schema);
+  deck.applyOverride("Mesh/File/refine=1", schema);
+  deck.validate(schema);
+  const model::Scene scene = input::buildScene(deck, 1.0);
+  const mesh::HexMesh imaged = mesh::readMeshFile(inputPath("tongue/tongue.node")).mesh;
+  const auto X = mesh::readReferenceCoordinates(file, imaged.numNodes());
+  ASSERT_EQ(scene.mesh.numNodes(), mesh::refineUniformly(imaged, 1).numNodes());
+  for (std::size_t n = 0; n < X.size(); ++n) EXPECT_EQ(scene.mesh.nodes[n], X[n]) << n;
+  EXPECT_EQ(scene.mesh.imagedNodes, mesh::refineUniformly(imaged, 1).nodes);
+  mesh::HexMesh coarseReference = imaged;
+  coarseReference.nodes = X;
+  const double V = mesh::meshVolume(coarseReference);
+  EXPECT_NEAR(mesh::meshVolume(scene.mesh), V, 1e-12 * V);
+  double largestMove = 0.0;  // the reference is not the imaged mesh (its volume is, nearly: J = 1)
+  for (std::size_t n = 0; n < X.size(); ++n) largestMove = std::max(largestMove, (X[n] - imaged.nodes[n]).norm());
+  EXPECT_GT(largestMove, 1e-3);
+
+  // Refined twice, the same file is carried through both levels.
+  deck.applyOverride("Mesh/File/refine=2", schema);
+  const model::Scene twice = input::buildScene(deck, 1.0);
+  EXPECT_EQ(twice.mesh.numNodes(), mesh::refineUniformly(imaged, 2).numNodes());
+  EXPECT_NEAR(mesh::meshVolume(twice.mesh), V, 1e-12 * V);
+
+  // A file that fits neither mesh: the refusal names both counts.
+  const auto dir = scratchDirectory("zero_strain_refined");
+  std::filesystem::create_directories(dir);
+  const auto wrong = dir / "three_nodes.txt";
+  std::ofstream(wrong) << "0 0 0 0\n1 1 0 0\n2 0 1 0\n";
+  deck.applyOverride("Mesh/reference coordinates file=" + wrong.string(), schema);
+  try {
+    input::buildScene(deck, 1.0);
+    ADD_FAILURE() << "a file of neither mesh's node count was accepted";
+  } catch (const io::DeckError &e) {
+    EXPECT_NE(std::string(e.what()).find("3 nodes, but the mesh has "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(or 946, the mesh's before Mesh/File/refine)"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ZeroStrain, InverseReturnsTheImagedGeometryTenTimesCloserThanTheApproximation) {

@@ -82,6 +82,27 @@ TEST(MeshRefinement, AffineVolumeAndLevelsArgument) {
   EXPECT_THROW(refineUniformly(mesh, -1), std::invalid_argument);
 }
 
+// A geometry given on the coarse mesh (a zero-strain configuration) carried to the refinement:
+// refinement commutes with an affine map, so moving the coarse nodes by A x + b and refining gives
+// the refined nodes moved by the same map.
+TEST(MeshRefinement, PositionsOfTheCoarseMeshAreCarriedToTheRefinement) {
+  const HexMesh coarse = generateBox(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 1), {2, 3, 2});
+  Eigen::Matrix3d A;
+  A << 1.1, 0.3, -0.2, 0.0, 0.8, 0.25, 0.1, -0.3, 1.3;
+  const Eigen::Vector3d b(0.5, -1.0, 2.0);
+  std::vector<Eigen::Vector3d> moved;
+  for (const auto &x : coarse.nodes) moved.push_back(A * x + b);
+  for (int levels : {0, 1, 2}) {
+    const HexMesh fine = refineUniformly(coarse, levels);
+    const auto carried = refinedPositions(coarse, moved, levels);
+    ASSERT_EQ(carried.size(), fine.numNodes());
+    for (std::size_t n = 0; n < carried.size(); ++n)
+      EXPECT_LT((carried[n] - (A * fine.nodes[n] + b)).norm(), 1e-14) << levels << " " << n;
+  }
+  EXPECT_THROW(refinedPositions(coarse, std::vector<Eigen::Vector3d>(3), 1), std::invalid_argument);
+  EXPECT_THROW(refinedPositions(coarse, moved, -1), std::invalid_argument);
+}
+
 TEST(MeshRefinement, TongueKeepsVolumeSetsAndBoundary) {
   const std::string dir = std::string(GLOSSA_SOURCE_DIR) + "/inputs/tongue/";
   AnsysModelFiles files;
