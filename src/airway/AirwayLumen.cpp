@@ -31,7 +31,8 @@ LumenState AirwayLumen::measure(const std::vector<Eigen::Vector3d> &positions) c
     const std::vector<CutCurve> wallCuts = cutSurface(wall_.vertices, wall_.triangles, plane);
     const CutCurve *t = nearestCurve(tongueCuts, plane.origin), *w = nearestCurve(wallCuts, plane.origin);
     if (t && w) {
-      section.lumen = lumenBetween(inPlane(*t, plane), t->closed, inPlane(*w, plane), w->closed, settings_.contactGap);
+      section.lumen = lumenBetween(inPlane(*t, plane), t->closed, inPlane(*w, plane), w->closed, settings_.contactGap,
+                                   settings_.lateralHalfWidth);
       section.measured = section.lumen.spansWidth();
     }
     section.closed = section.measured && sectionCloses(section.lumen, settings_);

@@ -7,7 +7,9 @@
 // cut as two triangles each (split along the diagonal from their first corner), the same surface
 // at rest and deformed. A section is closed when its area is below the closing area or the gap is
 // at most the contact gap over the closing width fraction of its width (by default the whole
-// width; less lets a model without lateral walls close although its sides stay open).
+// width; less lets a model without lateral walls close although its sides stay open). Lateral
+// walls, when given, are planes at a fixed distance either side of the midsagittal plane that
+// bound the width; the tongue does not touch them (a measuring bound, not an obstacle).
 
 #include <Eigen/Core>
 #include <array>
@@ -23,6 +25,9 @@ struct LumenSettings {
   double closingArea = 1e-6;  // [m^2]
   double contactGap = 1e-5;   // [m]
   double closingWidthFraction = 1.0;  // in (0, 1]
+  // The lateral walls, planes parallel to the midsagittal one at this distance on either side:
+  // they bound every section's width (infinity: no walls, the narrower surface's edges do).
+  double lateralHalfWidth = std::numeric_limits<double>::infinity();  // [m], > 0
 };
 
 // Whether a measured section is closed under `settings`.

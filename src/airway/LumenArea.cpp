@@ -70,14 +70,15 @@ double positivePart(double g0, double g1, double w) {
 }  // namespace
 
 LumenSection lumenBetween(const std::vector<Eigen::Vector2d> &tongue, bool tongueClosed,
-                          const std::vector<Eigen::Vector2d> &wall, bool wallClosed, double contactGap) {
+                          const std::vector<Eigen::Vector2d> &wall, bool wallClosed, double contactGap,
+                          double lateralHalfWidth) {
   LumenSection out;
   const std::vector<Segment> t = segmentsOf(tongue, tongueClosed), w = segmentsOf(wall, wallClosed);
   if (t.empty() || w.empty()) return out;
   const auto [tLo, tHi] = rangeOf(t);
   const auto [wLo, wHi] = rangeOf(w);
-  out.uLeft = std::max(tLo, wLo);
-  out.uRight = std::min(tHi, wHi);
+  out.uLeft = std::max({tLo, wLo, -lateralHalfWidth});
+  out.uRight = std::min({tHi, wHi, lateralHalfWidth});
   if (!out.spansWidth()) return out;
   std::vector<double> breaks{out.uLeft, out.uRight};
   for (const auto *segs : {&t, &w}) {

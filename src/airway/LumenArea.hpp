@@ -4,7 +4,8 @@
 // function of the lateral coordinate u, v_t(u) the upper envelope of the tongue's segments (the
 // side facing the wall) and v_w(u) the lower envelope of the wall's; the sides are closed by
 // lines of constant u at the lateral limits both curves span, [u_left, u_right] = [max of the
-// two curves' smallest u, min of their largest u]. The area is
+// two curves' smallest u, min of their largest u], or at the lateral walls u = -h and u = h where
+// those are narrower (h = lateralHalfWidth, u = 0 on the midsagittal plane). The area is
 //
 //   A = \int_{u_left}^{u_right} max(0, v_w(u) - v_t(u)) du,
 //
@@ -14,6 +15,7 @@
 // gap counts as zero (contact, or a penetration within the contact's tolerance).
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 namespace glossa::airway {
@@ -41,9 +43,11 @@ struct LumenSection {
 
 // The lumen between the tongue's curve and the wall's (each a polyline of (u, v) points, in
 // order; `closed` joins the last point to the first). `contactGap`: a gap at or below it counts
-// as contact for contactWidth. Curves whose lateral ranges do not overlap give area 0 and an
+// as contact for contactWidth. `lateralHalfWidth` (> 0): the lateral walls at u = +-h bound the
+// width too. Curves whose lateral ranges do not overlap (within the walls) give area 0 and an
 // empty outline.
 LumenSection lumenBetween(const std::vector<Eigen::Vector2d> &tongue, bool tongueClosed,
-                          const std::vector<Eigen::Vector2d> &wall, bool wallClosed, double contactGap);
+                          const std::vector<Eigen::Vector2d> &wall, bool wallClosed, double contactGap,
+                          double lateralHalfWidth = std::numeric_limits<double>::infinity());
 
 }  // namespace glossa::airway

@@ -109,6 +109,11 @@ ParameterList airwayParameters() {
                     "the fraction of a section's width the tongue must be within the contact gap of the wall over "
                     "for the section to close (1: the whole width, side to side)",
                     io::Range{0.0, 1.0, true, false});
+  io::declareDouble(p, "lateral half-width", 0.0, "m",
+                    "the lateral pharyngeal walls: planes this far either side of the midsagittal plane that bound "
+                    "every section's width (a measuring bound, not a contact obstacle); 0: none, the narrower of "
+                    "the tongue's airway faces and the wall sets the width (doc/airway.md)",
+                    io::Range::nonNegative());
   io::declareString(p, "contact", "",
                     "the contact (a Contact sublist) whose area airway.csv reports as the tongue-wall contact area");
   io::declareString(p, "closing pressure load", "",
@@ -141,10 +146,10 @@ std::shared_ptr<const model::AirwayOutput> buildAirway(const io::Deck &deck, con
   centreline.end = vec3(a.get<Array<double>>("end point"));
   centreline.sections = a.get<int>("sections");
   try {
-    out->lumen = std::make_shared<airway::AirwayLumen>(std::move(tongue), wallTriangles(deck), centreline,
-                                                       airway::LumenSettings{a.get<double>("closing area"),
-                                                                             a.get<double>("contact gap"),
-                                                                             a.get<double>("closing width fraction")});
+    airway::LumenSettings lumen{a.get<double>("closing area"), a.get<double>("contact gap"),
+                                a.get<double>("closing width fraction")};
+    if (a.get<double>("lateral half-width") > 0.0) lumen.lateralHalfWidth = a.get<double>("lateral half-width");
+    out->lumen = std::make_shared<airway::AirwayLumen>(std::move(tongue), wallTriangles(deck), centreline, lumen);
   } catch (const std::invalid_argument &e) {
     throw io::DeckError(deck.where({"Airway"}) + ": " + e.what() +
                         " (check 'face set', 'wall file', 'midsagittal point', 'start point' and 'end point')");

@@ -1,6 +1,6 @@
 // The area between two curves of a section (airway/LumenArea) against areas worked by hand:
 // a gap that closes to contact over part of the width, a wall that crosses the tongue, and
-// the sides closed at the narrower curve's ends.
+// the sides closed at the narrower curve's ends or at lateral walls.
 #include <gtest/gtest.h>
 
 #include "airway/LumenArea.hpp"
@@ -53,4 +53,23 @@ TEST(LumenArea, CurvesSideBySideHaveNoCommonWidth) {
   EXPECT_FALSE(s.spansWidth());
   EXPECT_EQ(s.area, 0.0);
   EXPECT_TRUE(s.outline.empty());
+}
+
+TEST(LumenArea, LateralWallsBoundTheWidth) {
+  // The wall of WallTouchingAcrossTheMiddle between walls at u = +-0.75: the gap is 2|u| - 1 for
+  // 0.5 <= |u| <= 0.75, two triangles of area 1/16; contact over [-0.5, 0.5], 2/3 of the width.
+  const std::vector<V> tongue{V(-1, 0), V(1, 0)}, wall{V(-1, 1), V(-0.5, 0), V(0.5, 0), V(1, 1)};
+  const auto s = lumenBetween(tongue, false, wall, false, 0.0, 0.75);
+  EXPECT_DOUBLE_EQ(s.uLeft, -0.75);
+  EXPECT_DOUBLE_EQ(s.uRight, 0.75);
+  EXPECT_NEAR(s.area, 0.125, 1e-15);
+  EXPECT_NEAR(s.contactFraction(), 2.0 / 3.0, 1e-15);
+  // Walls at the contact's edges leave no open width: touching from side to side.
+  const auto shut = lumenBetween(tongue, false, wall, false, 0.0, 0.5);
+  EXPECT_EQ(shut.area, 0.0);
+  EXPECT_TRUE(shut.touchesAcross());
+  // Walls wider than both curves change nothing.
+  const auto wide = lumenBetween(tongue, false, wall, false, 0.0, 5.0);
+  EXPECT_EQ(wide.area, lumenBetween(tongue, false, wall, false, 0.0).area);
+  EXPECT_DOUBLE_EQ(wide.uLeft, -1.0);
 }
