@@ -648,15 +648,19 @@ The airway's closing pressure Pcrit (doc/airway.md, "Pcrit"): the lumen of airwa
 the tongue cannot pass the wall; passive, on the zero-strain configuration of s8_1, gravity
 ramped over [0, 1] s, then the airway suction, linear from 0 at P_A to {PCRIT_SUCTION:g} Pa at P_P
 (the paper's profile; with Loads/airway pressure/profile = uniform for a uniform one) ramped over
-[1, 2] s in steps of 0.125 s. The run raises the suction until a section closes (area below
-1 mm^2, or the tongue on the wall across the section's width), then bisects from the last open
-state to a bracket of 0.1 cmH2O; summary.json: pcrit."""
+[1, 2] s in steps of 0.125 s. Lateral walls 12.5 mm either side of the midsagittal plane (a
+25 mm wide oropharynx, within the 20 to 35 mm of measured airways) bound every section's width,
+which the tongue's airway faces and the wall sheet, 40 to 60 mm wide, would otherwise set. The
+run raises the suction until a section closes (area below 1 mm^2, or the tongue on the wall
+across the section's width), then bisects from the last open state to a bracket of 0.1 cmH2O;
+summary.json: pcrit."""
 for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
     deck(f"tongue_pcrit_{posture}", f"The tongue's airway closing pressure, {posture}.\n" + COMMON +
          PCRIT.replace("{posture}", posture) + f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
          {}, gravity=g, pressure=PCRIT_SUCTION, end_time=2.0, step=0.125, reference="s8_1/reference_inverse.txt",
          face_sets=PALATE_SIDE, contact={"palate": {**PALATE_CONTACT["palate"], "normal field": ("string", "smoothed")}},
-         airway={**AIRWAY_SECTION, "closing pressure load": ("string", "airway pressure")},
+         airway={**AIRWAY_SECTION, "closing pressure load": ("string", "airway pressure"),
+                 "lateral half-width": ("double", 0.0125)},
          output={"fields": ("bool", "false")})
 TWITCH = """
 A styloglossus twitch (doc/dynamics.md, "The tongue twitch"): the SG group at FFMR 25 % (as

@@ -206,6 +206,12 @@ ParameterList namedPointParameters() {
   return p;
 }
 
+// A path the deck gives, relative to the deck's own directory unless absolute.
+std::string relativeToDeck(const io::Deck &deck, const std::string &path) {
+  const std::filesystem::path q(path);
+  return (q.is_relative() ? std::filesystem::path(deck.file()).parent_path() / q : q).string();
+}
+
 // asRead, when given, receives the file's mesh before Mesh/File/refine (empty when not refined).
 mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes, mesh::HexMesh *asRead = nullptr) {
   const ParameterList &p = deck.root().sublist("Mesh");
@@ -218,10 +224,7 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes, m
                             {c[0], c[1], c[2]});
     } else if (p.get<std::string>("type") == "file") {
       const auto &f = p.sublist("File");
-      auto resolve = [&](const std::string &path) {
-        std::filesystem::path q(path);
-        return (q.is_relative() ? std::filesystem::path(deck.file()).parent_path() / q : q).string();
-      };
+      auto resolve = [&deck](const std::string &path) { return relativeToDeck(deck, path); };
       if (f.get<std::string>("path").empty())
         throw io::DeckError(deck.where({"Mesh", "File", "path"}) + " is empty: name the mesh file");
       try {
@@ -340,8 +343,7 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes, m
 void replaceReferenceCoordinates(const io::Deck &deck, Scene &scene, const mesh::HexMesh &asRead) {
   const std::string file = deck.root().sublist("Mesh").get<std::string>("reference coordinates file");
   if (file.empty()) return;
-  std::filesystem::path q(file);
-  if (q.is_relative()) q = std::filesystem::path(deck.file()).parent_path() / q;
+  const std::filesystem::path q = relativeToDeck(deck, file);
   try {
     const bool refined = asRead.numNodes() > 0 && asRead.numNodes() != scene.mesh.numNodes();
     if (refined && mesh::countReferenceCoordinates(q.string()) == asRead.numNodes()) {
