@@ -14,6 +14,10 @@ void ControllerParameters::validate() const {
   detail::requireInRange("pruningTolerance", pruningTolerance, 0.0, detail::kInf, false, true);
   detail::requireInRange("predictionSeedSteps", predictionSeedSteps, 1, 16);
   detail::requireInRange("effortWeight", effortWeight, 0.0, detail::kInf, false, true);
+  detail::requireInRange("airwayWeight", airwayWeight, 0.0, detail::kInf, false, true);
+  detail::requireInRange("airwayOpenArea", airwayOpenArea, 0.0, detail::kInf, false, true);
+  if (airwayWeight > 0.0 && !(airwayOpenArea > 0.0))
+    throw std::invalid_argument("airwayOpenArea = 0 with airwayWeight > 0: allowed an area > 0 for the airway term");
   std::set<std::string> seen;
   for (std::size_t i = 0; i < alwaysEvaluated.size(); ++i) {
     const std::string field = "alwaysEvaluated[" + std::to_string(i) + "]";

@@ -44,6 +44,12 @@ struct ControllerParameters {
   // sum_p |r_p|^2 + epsilon^2 sum_M u_M^2 (the residual stacked with epsilon u). 0: eq. 25 alone.
   double effortWeight = 0.0;
   bool verifySensitivities = false;          // gradient: check S against differences of full solves
+  // The airway term (doc/control.md, "The airway term"): w_A max(0, A_open - A) joins eq. 25 in
+  // the objective, A the smallest lumen area of the candidate's state (doc/airway.md); w_A [1/m]
+  // makes it a length, as eq. 25 is. The gradient controller's residual gains the row itself and
+  // its sensitivity -w_A dA/du. 0: no airway term.
+  double airwayWeight = 0.0;     // w_A [1/m], >= 0
+  double airwayOpenArea = 0.0;   // A_open [m^2], > 0 when airwayWeight > 0
 
   // Throws std::invalid_argument naming the bad field ("ga.populationSize", "pruningTolerance",
   // "alwaysEvaluated[2]") and its allowed range.

@@ -29,6 +29,7 @@ struct ControlDriver::Search {
   double solvedValue = std::numeric_limits<double>::infinity(); // eq. 25 + effort; inf: failed
   std::size_t reused = 0; // genomes valued from solvedInputs (counted alike in every group)
   std::size_t failed = 0, failedPredictions = 0; // this group's failed solves; of them, seed solves
+  double keptArea = std::numeric_limits<double>::quiet_NaN(); // the kept candidate's smallest lumen area
 };
 
 ControlDriver::ControlDriver(ControlDriverSetup setup, ControlPlant &plant, const ControlGroups &groups)
@@ -82,19 +83,23 @@ control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const s
   if (solve.ok) {
     const Eigen::Matrix3Xd x = positions(solve.pointDisplacement);
     const auto v = objective_.evaluate(x);
+    const double airway = airwayTerm(solve.smallestArea);
     e.ok = true;
-    e.objective = v.total;
+    e.objective = v.total + airway;
     const Eigen::Matrix3Xd offset = x - setup_.goals;
     const auto &evaluated = search.result.evaluated;
     const double epsilon = rankByObjective ? 0.0 : setup_.parameters.effortWeight;
     const auto points = static_cast<Eigen::Index>(offset.size());
-    // The gradient controller's residual: the weighted offsets, then epsilon u per evaluated group.
-    e.residual.resize(points + (epsilon > 0.0 ? static_cast<Eigen::Index>(evaluated.size()) : 0));
+    const Eigen::Index airwayRows = hasAirwayTerm() ? 1 : 0;
+    // The gradient controller's residual: the weighted offsets, the airway term's row, then
+    // epsilon u per evaluated group.
+    e.residual.resize(points + airwayRows + (epsilon > 0.0 ? static_cast<Eigen::Index>(evaluated.size()) : 0));
     e.residual.head(points) = Eigen::Map<const Eigen::VectorXd>(offset.data(), points);
     for (Eigen::Index p = 0; p < x.cols(); ++p) e.residual.segment<3>(3 * p) *= setup_.weights(p);
+    if (airwayRows > 0) e.residual(points) = airway;
     if (epsilon > 0.0)
       for (std::size_t i = 0; i < evaluated.size(); ++i)
-        e.residual(points + static_cast<Eigen::Index>(i)) = epsilon * inputs[evaluated[i]];
+        e.residual(points + airwayRows + static_cast<Eigen::Index>(i)) = epsilon * inputs[evaluated[i]];
     errors = v.distance;
   }
   const double rank = !e.ok              ? e.objective
@@ -109,6 +114,7 @@ control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const s
     search.result.solve = solve.statistics;
     search.result.couplingIterations = solve.couplingIterations;
     search.result.couplingChange = solve.couplingChange;
+    search.keptArea = solve.smallestArea;
     plant_.keepLast();
   }
   return e;
@@ -294,46 +300,77 @@ Eigen::MatrixXd ControlDriver::weightedSensitivity(Search &search) {
   const InputSensitivity s = plant_.sensitivity(result.inputs, result.evaluated);
   result.sensitivityKrylov += s.krylovIterations;
   if (setup_.parameters.verifySensitivities) {
-    result.sensitivityCheck = std::max(result.sensitivityCheck, differenceCheck(s.dxdu, search));
+    result.sensitivityCheck = std::max(result.sensitivityCheck, differenceCheck(s, search));
     if (setup_.talk) std::printf("  sensitivity check: max |S - S_fd| / max |S_fd| = %.3e\n", result.sensitivityCheck);
   }
   const double epsilon = setup_.parameters.effortWeight;
   const auto n = static_cast<Eigen::Index>(result.evaluated.size());
-  Eigen::MatrixXd S(s.dxdu.rows() + (epsilon > 0.0 ? n : 0), s.dxdu.cols());
+  const Eigen::Index airwayRows = hasAirwayTerm() ? 1 : 0;
+  Eigen::MatrixXd S(s.dxdu.rows() + airwayRows + (epsilon > 0.0 ? n : 0), s.dxdu.cols());
   S.topRows(s.dxdu.rows()) = s.dxdu;
   for (Eigen::Index p = 0; p < setup_.weights.size(); ++p) S.middleRows<3>(3 * p) *= setup_.weights(p);
+  // The airway row, w_A max(0, A_open - A): -w_A dA/du where the term is active, 0 where the
+  // kept state's lumen is open beyond A_open (the hinge's flat side).
+  if (airwayRows > 0) {
+    S.row(s.dxdu.rows()).setZero();
+    if (airwayTerm(search.keptArea) > 0.0 && s.dAdu.size() == n)
+      S.row(s.dxdu.rows()) = -setup_.parameters.airwayWeight * s.dAdu;
+  }
   // d(epsilon u)/du of the effort rows of the residual (solveCandidate).
   if (epsilon > 0.0) S.bottomRows(n) = epsilon * Eigen::MatrixXd::Identity(n, n);
   return S;
 }
 
-double ControlDriver::differenceCheck(const Eigen::MatrixXd &dxdu, const Search &search) {
-  // Central differences of full step solves (second-order one-sided at the bounds of [0, 1]).
+bool ControlDriver::hasAirwayTerm() const { return setup_.parameters.airwayWeight > 0.0; }
+
+double ControlDriver::airwayTerm(double smallestArea) const {
+  if (!hasAirwayTerm() || !std::isfinite(smallestArea)) return 0.0;
+  return setup_.parameters.airwayWeight * std::max(0.0, setup_.parameters.airwayOpenArea - smallestArea);
+}
+
+double ControlDriver::differenceCheck(const InputSensitivity &s, const Search &search) {
+  // Central differences of full step solves (second-order one-sided at the bounds of [0, 1]): of
+  // the control points and, with the airway term, of the smallest lumen area.
   constexpr double h = 1e-3;
   const std::vector<double> &accepted = search.result.inputs;
-  auto pointsAt = [&](const std::vector<double> &inputs) {
+  const bool area = hasAirwayTerm() && s.dAdu.size() == s.dxdu.cols();
+  auto solvedAt = [&](const std::vector<double> &inputs) {
     const CandidateSolve solve = plant_.solve(inputs);
     if (!solve.ok) throw std::runtime_error("verify sensitivities: a differenced solve failed: " + solve.why);
-    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(solve.pointDisplacement.data(), solve.pointDisplacement.size()));
+    Eigen::VectorXd v(solve.pointDisplacement.size() + (area ? 1 : 0));
+    v.head(solve.pointDisplacement.size()) =
+        Eigen::Map<const Eigen::VectorXd>(solve.pointDisplacement.data(), solve.pointDisplacement.size());
+    if (area) v(v.size() - 1) = solve.smallestArea;
+    return v;
   };
-  Eigen::MatrixXd fd(dxdu.rows(), dxdu.cols());
+  Eigen::MatrixXd fd(s.dxdu.rows() + (area ? 1 : 0), s.dxdu.cols());
   for (std::size_t j = 0; j < search.result.evaluated.size(); ++j) {
     const int g = search.result.evaluated[j];
     auto at = [&](double du) {
       std::vector<double> inputs = accepted;
       inputs[g] += du;
-      return pointsAt(inputs);
+      return solvedAt(inputs);
     };
     const double ug = accepted[g];
     const auto col = static_cast<Eigen::Index>(j);
     if (ug - h >= 0.0 && ug + h <= 1.0) fd.col(col) = (at(h) - at(-h)) / (2.0 * h);
     else {
-      const double s = ug - h < 0.0 ? h : -h; // second-order one-sided, inside [0, 1]
-      fd.col(col) = (-3.0 * at(0.0) + 4.0 * at(s) - at(2.0 * s)) / (2.0 * s);
+      const double step = ug - h < 0.0 ? h : -h; // second-order one-sided, inside [0, 1]
+      fd.col(col) = (-3.0 * at(0.0) + 4.0 * at(step) - at(2.0 * step)) / (2.0 * step);
     }
   }
-  const double scale = fd.cwiseAbs().maxCoeff();
-  return scale > 0.0 ? (dxdu - fd).cwiseAbs().maxCoeff() / scale : -1.0;
+  // Each block against its own scale: the points in metres, the area in square metres.
+  auto relative = [](const Eigen::MatrixXd &analytic, const Eigen::MatrixXd &differenced) {
+    const double scale = differenced.cwiseAbs().maxCoeff();
+    return scale > 0.0 ? (analytic - differenced).cwiseAbs().maxCoeff() / scale : -1.0;
+  };
+  double check = relative(s.dxdu, fd.topRows(s.dxdu.rows()));
+  if (area) {
+    const double areaCheck = relative(s.dAdu, fd.bottomRows(1));
+    if (setup_.talk) std::printf("  sensitivity check of the smallest area: %.3e\n", areaCheck);
+    check = std::max(check, areaCheck);
+  }
+  return check;
 }
 
 } // namespace glossa::solvers

@@ -67,10 +67,14 @@ private:
   // S = dr/du at the kept state, rows weighted as the residual; checked against differences of
   // full solves when the parameters ask.
   Eigen::MatrixXd weightedSensitivity(Search &search);
-  double differenceCheck(const Eigen::MatrixXd &dxdu, const Search &search);
+  double differenceCheck(const InputSensitivity &s, const Search &search);
   void shareWinner(Search &search);
   // epsilon sum_M u_M^2 (ControllerParameters::effortWeight).
   double effort(const std::vector<double> &inputs) const;
+  // The airway term w_A max(0, A_open - A) [m] at a candidate's smallest lumen area A (0 without
+  // the term or without a measured area).
+  bool hasAirwayTerm() const;
+  double airwayTerm(double smallestArea) const;
   // The GA's seeds: the previous step's best and the prediction the parameters ask for.
   std::vector<control::Genome> geneticSeeds(Search &search, const std::vector<double> &previousInputs);
   // The inputs one bounded Gauss-Newton step from `from`, linearised there, at the step lengths

@@ -6,6 +6,7 @@
 // state as a flat buffer to share among control groups. Without Trilinos, so that a fake plant
 // (e.g. a linear one, x = x0 + A u) can test the driver.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,12 +26,18 @@ struct CandidateSolve {
   // of a section's pressure at the last (0 and 0 without one).
   int couplingIterations = 0;
   double couplingChange = 0.0;
+  // With the controller's airway term (ControllerParameters::airwayWeight > 0): the smallest
+  // lumen area at the candidate's state [m^2]; NaN when not measured (no term, or no section).
+  double smallestArea = std::numeric_limits<double>::quiet_NaN();
 };
 
 // d x_p / d u_M at the kept state: 3 rows per point (x, y, z), one column per group asked.
 struct InputSensitivity {
   Eigen::MatrixXd dxdu;
   int krylovIterations = 0;
+  // With the airway term: d A / d u_M of the kept state's smallest section, one per group asked
+  // (empty without the term).
+  Eigen::RowVectorXd dAdu;
 };
 
 class ControlPlant {

@@ -26,11 +26,14 @@ ControlPointSensitivity controlPointSensitivity(const NewtonSolver &newton, cons
   // W X = -DfDp for the columns asked.
   const auto n = groups.size();
   const auto DfDp = Extract::getConstTpetraMultiVector(dfdp);
-  assembly::MultiVector rhs(ownedMap, n), x(ownedMap, n);
+  assembly::MultiVector rhs(ownedMap, n);
+  const auto solution = Teuchos::rcp(new assembly::MultiVector(ownedMap, n));
+  assembly::MultiVector &x = *solution;
   for (std::size_t j = 0; j < n; ++j)
     rhs.getVectorNonConst(j)->update(-1.0, *DfDp->getVector(static_cast<std::size_t>(groups[j])), 0.0);
   ControlPointSensitivity result;
   result.krylovIterations = newton.solveTangent(u, rhs, x);
+  result.responses = solution;
 
   // dg/dp = DgDx^T X (gradient form: DgDx's columns are d g_i / dx).
   const auto X = Thyra::createMultiVector<double, assembly::LO, assembly::GO, assembly::Node>(Teuchos::rcpFromRef(x), xSpace);

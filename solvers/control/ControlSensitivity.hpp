@@ -25,6 +25,9 @@ namespace glossa::solvers {
 struct ControlPointSensitivity {
   Eigen::MatrixXd dxdu; // 3 rows per control point (x, y, z), one column per group asked
   int krylovIterations = 0;
+  // du/du_M of every owned unknown, one column per group asked (the solves' solutions, of which
+  // dxdu is the control points' rows): what other responses (the lumen) are linearised along.
+  Teuchos::RCP<assembly::MultiVector> responses;
 };
 
 // At the converged trial state u: the solver's model has this step's time and multipliers, the

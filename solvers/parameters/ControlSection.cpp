@@ -61,6 +61,15 @@ ParameterList controlParameters() {
                     "controller minimises sum |r_p|^2 + w^2 sum u^2; among inputs that hold the points "
                     "equally well the least activation wins (0: eq. 25 alone)",
                     io::Range::nonNegative());
+  io::declareDouble(p, "airway weight", 0.0, "1/m",
+                    "the airway term w_A max(0, A_open - A) joins eq. 25 in the objective, A the smallest lumen "
+                    "area of the candidate's state (the deck's Airway section); w_A makes it a length; the "
+                    "gradient controller's residual gains its row (doc/control.md, 'The airway term'); 0: none",
+                    io::Range::nonNegative());
+  io::declareDouble(p, "airway open area", 0.0, "m^2",
+                    "A_open of the airway term: a smallest lumen area at or above it costs nothing (required, "
+                    "> 0, with an airway weight)",
+                    io::Range::nonNegative());
   io::declareDouble(p, "objective tolerance", 0.0, "m", "stop once the objective (eq. 25) is below this",
                     io::Range::nonNegative());
   io::declareInt(p, "gradient iterations", 4, "gradient: Gauss-Newton iterations (sensitivity solves) per step",
@@ -134,6 +143,15 @@ ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
                                                           : control::PredictionSeed::none;
   p.predictionSeedSteps = c.get<int>("prediction seed steps");
   p.effortWeight = c.get<double>("effort weight");
+  p.airwayWeight = c.get<double>("airway weight");
+  p.airwayOpenArea = c.get<double>("airway open area");
+  if (p.airwayWeight > 0.0 && deck.root().sublist("Airway").get<std::string>("face set").empty())
+    throw io::DeckError(deck.where({"Control", "airway weight"}) +
+                        ": the airway term measures the lumen of the deck's Airway section, which has no face set; "
+                        "give Airway/face set, wall file, start point and end point, or set the weight to 0");
+  if (p.airwayWeight > 0.0 && !(p.airwayOpenArea > 0.0))
+    throw io::DeckError(deck.where({"Control", "airway open area"}) +
+                        " = 0 with an airway weight: give the area above which the lumen costs nothing (> 0, m^2)");
   p.gradient.maxIterations = c.get<int>("gradient iterations");
   p.gradient.maxBacktracks = c.get<int>("gradient backtracks");
   p.gradient.stepTolerance = c.get<double>("gradient step tolerance");

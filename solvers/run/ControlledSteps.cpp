@@ -1,12 +1,15 @@
 #include "solvers/run/ControlledSteps.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/ResultEvaluator.hpp"
 #include "io/output/KeyedCsvWriter.hpp"
+#include "model/AirwayOutput.hpp"
 #include "model/Scene.hpp"
 #include "solvers/control/CommControlGroups.hpp"
 #include "solvers/control/ControlSensitivity.hpp"
@@ -18,9 +21,9 @@ namespace glossa::solvers {
 ControlledSteps::ControlledSteps(const ControlSetup &setup, const StepSolverParts &parts, const StepSolver &solver,
                                  const LoadStepper &stepper, const CommControlGroups &groups,
                                  const std::filesystem::path &dir, std::optional<std::uintmax_t> resumeControlsAt,
-                                 bool writer, bool talk)
+                                 bool writer, bool talk, std::shared_ptr<const model::AirwayOutput> airway)
     : setup_(setup), parts_(parts), solver_(solver), stepper_(stepper), last_(stepper.committed()),
-      kept_(stepper.committed()) {
+      kept_(stepper.committed()), airway_(std::move(airway)) {
   if (writer)
     controls_ = std::make_unique<io::KeyedCsvWriter>(
         dir / "controls.csv", "group",
@@ -48,8 +51,7 @@ std::vector<double> ControlledSteps::stepInputs(const std::vector<double> &input
   return step;
 }
 
-Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const StepState &state) const {
-  const std::vector<double> all = assembly::ResultEvaluator(parts_.assembler).gatherDisplacement(state.u);
+Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const std::vector<double> &all) const {
   Eigen::Matrix3Xd d(3, static_cast<Eigen::Index>(setup_.pointNodes.size()));
   for (std::size_t p = 0; p < setup_.pointNodes.size(); ++p) {
     const auto n = setup_.pointNodes[p];
@@ -68,8 +70,18 @@ CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
   out.statistics = std::move(a.uzawa);
   out.couplingIterations = a.airflow.iterations;
   out.couplingChange = a.airflow.residual;
-  if (a.ok) out.pointDisplacement = pointDisplacement(last_);
+  if (a.ok) {
+    const std::vector<double> all = assembly::ResultEvaluator(parts_.assembler).gatherDisplacement(last_.u);
+    out.pointDisplacement = pointDisplacement(all);
+    if (airwayTerm()) out.smallestArea = lumenArea(all);
+  }
   return out;
+}
+
+double ControlledSteps::lumenArea(const std::vector<double> &uAll, int section) const {
+  const airway::LumenState lumen = airway_->lumen->measure(airway_->positions(parts_.assembler.scene().mesh, uAll));
+  const int k = section >= 0 ? section : lumen.smallest;
+  return k >= 0 ? lumen.sections[static_cast<std::size_t>(k)].area() : std::numeric_limits<double>::quiet_NaN();
 }
 
 void ControlledSteps::keepLast() { kept_.assign(last_); }
@@ -79,7 +91,30 @@ InputSensitivity ControlledSteps::sensitivity(const std::vector<double> &inputs,
   parts_.model.beginStep(trial.time, trial.dt, stepInputs(inputs, trial.time));
   parts_.model.setMultipliers(kept_.lambda);
   const auto s = controlPointSensitivity(parts_.newton, kept_.u, groups);
-  return {s.dxdu, s.krylovIterations};
+  InputSensitivity out{s.dxdu, s.krylovIterations, {}};
+  if (airwayTerm()) {
+    // dA/du_M of the kept state's smallest section, by a central difference of the lumen along
+    // the linearised response du/du_M, scaled so that the node it moves most moves by
+    // kLumenProbe: far below a facet, well above round-off in the area.
+    constexpr double kLumenProbe = 1e-6; // [m]
+    const assembly::ResultEvaluator results(parts_.assembler);
+    const std::vector<double> u = results.gatherDisplacement(kept_.u);
+    const airway::LumenState kept =
+        airway_->lumen->measure(airway_->positions(parts_.assembler.scene().mesh, u));
+    out.dAdu = Eigen::RowVectorXd::Zero(static_cast<Eigen::Index>(groups.size()));
+    for (std::size_t j = 0; kept.smallest >= 0 && j < groups.size(); ++j) {
+      const std::vector<double> du = results.gatherDisplacement(*s.responses->getVector(j));
+      double largest = 0.0;
+      for (double v : du) largest = std::max(largest, std::abs(v));
+      if (!(largest > 0.0)) continue;
+      const double h = kLumenProbe / largest;
+      std::vector<double> plus(u), minus(u);
+      for (std::size_t i = 0; i < u.size(); ++i) plus[i] += h * du[i], minus[i] -= h * du[i];
+      out.dAdu(static_cast<Eigen::Index>(j)) =
+          (lumenArea(plus, kept.smallest) - lumenArea(minus, kept.smallest)) / (2.0 * h);
+    }
+  }
+  return out;
 }
 
 std::vector<double> ControlledSteps::packKept() const {
@@ -147,8 +182,8 @@ nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
   c["point_errors"] = errors;
   if (controls_) controls_->append(t, rows);
   char line[200];
-  std::snprintf(line, sizeof line, "  control: eq. 25 %.3g m, %zu candidates (%zu failed), %s %d (%s)",
-                outcome.objective, outcome.candidates, outcome.failedCandidates, ga ? "generations" : "iterations",
+  std::snprintf(line, sizeof line, "  control: %s %.3g m, %zu candidates (%zu failed), %s %d (%s)",
+                airwayTerm() ? "eq. 25 + airway term" : "eq. 25", outcome.objective, outcome.candidates, outcome.failedCandidates, ga ? "generations" : "iterations",
                 ga ? outcome.generations : outcome.iterations, outcome.stop.c_str());
   controlLine_ = line;
   return c;

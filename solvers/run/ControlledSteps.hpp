@@ -21,6 +21,9 @@
 namespace glossa::io {
 class KeyedCsvWriter;
 }
+namespace glossa::model {
+struct AirwayOutput;
+}
 
 namespace glossa::solvers {
 
@@ -30,9 +33,11 @@ class LoadStepper;
 class ControlledSteps final : public ControlPlant {
 public:
   // `resumeControlsAt`: a restart's length of controls.csv. `writer`: this rank writes it.
+  // `airway`: the deck's lumen, which the controller's airway term measures (null without one).
   ControlledSteps(const ControlSetup &setup, const StepSolverParts &parts, const StepSolver &solver,
                   const LoadStepper &stepper, const CommControlGroups &groups, const std::filesystem::path &dir,
-                  std::optional<std::uintmax_t> resumeControlsAt, bool writer, bool talk);
+                  std::optional<std::uintmax_t> resumeControlsAt, bool writer, bool talk,
+                  std::shared_ptr<const model::AirwayOutput> airway = nullptr);
   ~ControlledSteps() override;
 
   // Searches the step's inputs; the winner's state and statistics become `trial`'s. Collective.
@@ -62,14 +67,19 @@ private:
   // The neural inputs of every group over the step: the controller's for the controlled groups,
   // the deck's u(t) for the others (the model evaluator's p2 for the step).
   std::vector<double> stepInputs(const std::vector<double> &inputs, double time) const;
-  // The control points' displacement (one column per point), gathered from every rank.
-  Eigen::Matrix3Xd pointDisplacement(const StepState &state) const;
+  // The control points' displacement (one column per point) from every node's (gathered).
+  Eigen::Matrix3Xd pointDisplacement(const std::vector<double> &uAll) const;
+  // The airway term's: the lumen at every node's displacement `uAll`, and the area of its section
+  // `section` (-1: the smallest; NaN when that section is not measured).
+  double lumenArea(const std::vector<double> &uAll, int section = -1) const;
+  bool airwayTerm() const { return airway_ && setup_.parameters.airwayWeight > 0.0; }
 
   const ControlSetup &setup_;
   StepSolverParts parts_;
   const StepSolver &solver_;
   const LoadStepper &stepper_;
   StepState last_, kept_;
+  std::shared_ptr<const model::AirwayOutput> airway_;
   std::unique_ptr<ControlDriver> driver_;
   std::unique_ptr<io::KeyedCsvWriter> controls_;
   std::vector<double> committedStretch_;

@@ -257,7 +257,8 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
       resumeAt = run->restart->outputs.csvBytes.at("controls.csv");
     run->report->recordingOutputFailure([&] { // controls.csv
       run->controlled = std::make_unique<ControlledSteps>(run->control, run->stepSolverParts(), *run->solver,
-                                                          *run->stepper, *run->groups, dir, resumeAt, run->root, run->detail);
+                                                          *run->stepper, *run->groups, dir, resumeAt, run->root, run->detail,
+                                                          run->airway);
     });
   }
   return run;

@@ -17,6 +17,7 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
+#include "CsvRows.hpp"
 #include "RunDeck.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/ResultEvaluator.hpp"
@@ -76,6 +77,34 @@ TEST(GradientControl, SensitivitiesAccountForActiveContact) {
     EXPECT_GT(lid.at("normal_force").get<double>(), 1e-4) << "t = " << step.at("time");
   }
   EXPECT_GE(expectSensitivitiesMatch(r), 3);
+}
+
+// The airway term on the tongue (doc/control.md, "The airway term"): the s8_5 flow deck's first
+// control step (supine gravity on the zero-strain configuration, before the breath), with and
+// without w_A = 100 /m, A_open = 300 mm^2. Without it the smallest area is 260.5 mm^2 (section 0);
+// with it the controller trades eq. 25 for lumen: the area measured at the committed state
+// (airway.csv, the lumen's own measurement, not the controller's) rises by 22 mm^2 as the middle
+// genioglossus is raised.
+TEST(GradientControl, TheAirwayTermWidensTheTonguesAirway) {
+  auto run = [](const std::string &tag, std::vector<std::string> extra) {
+    std::vector<std::string> options{"Time/end time=0.3125", "Output/fields=false"};
+    options.insert(options.end(), extra.begin(), extra.end());
+    const auto dir = test::scratchDirectory(tag);
+    const auto summary = test::runDeck(test::inputPath("paper/s8_5_flow_gradient_supine.xml"), options, dir);
+    EXPECT_TRUE(summary.at("converged").get<bool>());
+    return std::make_pair(summary.at("steps").back().at("control"), test::readCsvRows(dir / "airway.csv").back());
+  };
+  const auto [plainControl, plainLumen] = run("gradient_airway_plain", {});
+  const auto [airwayControl, airwayLumen] =
+      run("gradient_airway_term", {"Control/airway weight=100", "Control/airway open area=300e-6"});
+  const double plain = plainLumen.at("smallest_area"), widened = airwayLumen.at("smallest_area");
+  ASSERT_LT(plain, 300e-6); // the term is active
+  EXPECT_GT(widened, plain + 10e-6);
+  EXPECT_LT(widened, 300e-6); // a trade: not all the way to A_open
+  EXPECT_GT(airwayControl.at("inputs").at("GGm").get<double>(), plainControl.at("inputs").at("GGm").get<double>());
+  // J = eq. 25 + w_A (A_open - A): above the plain run's eq. 25 by at least the term it leaves.
+  EXPECT_GT(airwayControl.at("objective").get<double>(),
+            plainControl.at("objective").get<double>() + 100.0 * (300e-6 - widened) - 1e-12);
 }
 
 TEST(GradientControl, HoldsTheCornerWithContinuousInputs) {

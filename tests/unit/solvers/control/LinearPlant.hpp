@@ -4,7 +4,9 @@
 // form. A candidate can be made to fail; the kept state is the kept candidate's inputs, and its
 // statistics carry the inputs too, so a test can tell whose state and statistics won.
 
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -22,6 +24,14 @@ public:
   std::function<bool(const std::vector<double> &)> fails = [](const std::vector<double> &) { return false; };
   // The sensitivity reported is this times the true one (1: exact).
   double sensitivityScale = 1.0;
+  // A lumen whose smallest area is affine in the inputs, A(u) = area0 + areaRate . u [m^2]
+  // (NaN area0: no lumen); its reported dA/du is areaSensitivityScale times the true one.
+  double area0 = std::numeric_limits<double>::quiet_NaN();
+  Eigen::RowVectorXd areaRate;
+  double areaSensitivityScale = 1.0;
+  double area(const std::vector<double> &inputs) const {
+    return area0 + areaRate.dot(Eigen::Map<const Eigen::VectorXd>(inputs.data(), static_cast<Eigen::Index>(inputs.size())));
+  }
   int solves = 0;
   std::vector<std::vector<double>> solved; // the inputs of every solve, in order
 
@@ -41,6 +51,7 @@ public:
       return out;
     }
     out.pointDisplacement = displacement(inputs);
+    if (std::isfinite(area0)) out.smallestArea = area(inputs);
     out.statistics.converged = true;
     out.statistics.solves = 1;
     solvers::NewtonResult n;
@@ -58,6 +69,11 @@ public:
     s.dxdu.resize(A_.rows(), static_cast<Eigen::Index>(groups.size()));
     for (std::size_t j = 0; j < groups.size(); ++j) s.dxdu.col(static_cast<Eigen::Index>(j)) = sensitivityScale * A_.col(groups[j]);
     s.krylovIterations = static_cast<int>(groups.size());
+    if (std::isfinite(area0)) {
+      s.dAdu.resize(static_cast<Eigen::Index>(groups.size()));
+      for (std::size_t j = 0; j < groups.size(); ++j)
+        s.dAdu(static_cast<Eigen::Index>(j)) = areaSensitivityScale * areaRate(groups[j]);
+    }
     return s;
   }
 

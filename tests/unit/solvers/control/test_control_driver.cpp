@@ -258,6 +258,112 @@ TEST(ControlDriver, GeneticAlgorithmRanksByObjectivePlusEffort) {
   EXPECT_NEAR(r.objective, objectiveOf(s, byFitness[0]), 1e-15); // reported: eq. 25 alone
 }
 
+// The airway term (ControllerParameters::airwayWeight): w_A max(0, A_open - A(u)) joins eq. 25.
+// On a linear plant with an affine smallest area below A_open at the optimum, the gradient
+// controller minimises |W (A u - g)|^2 + w_A^2 (A_open - a0 - c u)^2: a linear least-squares
+// problem, whose solution it reaches; the lumen ends wider than at the points' own optimum.
+TEST(ControlDriver, GradientControllerTradesThePointsForTheAirwayTerm) {
+  const std::vector<double> uStar{0.3, 0.6, 0.45, 0.15};
+  auto s = setup(glossa::control::ControllerType::gradient, uStar);
+  s.parameters.gradient.damping = 0.0;
+  s.parameters.airwayWeight = 20.0;     // 1/m: 4 mm^2 short costs 0.08 mm, like the points' offsets
+  s.parameters.airwayOpenArea = 16e-6;  // m^2
+  LinearPlant plant(plantMatrix());
+  plant.area0 = 10e-6;
+  plant.areaRate = Eigen::RowVector4d(4e-6, -2e-6, 3e-6, 5e-6);
+  ASSERT_LT(plant.area(uStar), s.parameters.airwayOpenArea);
+  // The least-squares solution, stacked: the weighted points, then the airway row.
+  Eigen::MatrixXd M(7, kGroups);
+  Eigen::VectorXd y(7);
+  M.topRows(6) = plantMatrix();
+  const Eigen::Matrix3Xd g = s.goals - s.referencePositions;
+  y.head(6) = Eigen::Map<const Eigen::VectorXd>(g.data(), 6);
+  for (Eigen::Index p = 0; p < 2; ++p) {
+    M.middleRows<3>(3 * p) *= s.weights(p);
+    y.segment<3>(3 * p) *= s.weights(p);
+  }
+  M.row(6) = s.parameters.airwayWeight * plant.areaRate;
+  y(6) = s.parameters.airwayWeight * (s.parameters.airwayOpenArea - plant.area0);
+  const Eigen::VectorXd best = (M.transpose() * M).ldlt().solve(M.transpose() * y);
+  const std::vector<double> bestInputs(best.data(), best.data() + kGroups);
+  for (double u : bestInputs) ASSERT_TRUE(u > 0.0 && u < 1.0) << u;  // inside the bounds
+  ASSERT_LT(plant.area(bestInputs), s.parameters.airwayOpenArea);     // the term still active there
+  SingleControlGroup one;
+  ControlDriver driver(s, plant, one);
+  const ControlStepResult r = driver.step(0, kStretched);
+  ASSERT_TRUE(r.found());
+  for (std::size_t m = 0; m < bestInputs.size(); ++m) EXPECT_NEAR(r.inputs[m], bestInputs[m], 1e-9) << m;
+  EXPECT_GT(plant.area(r.inputs), plant.area(uStar) + 1e-6); // wider than the points alone would leave it
+  // The objective reported is eq. 25 plus the airway term.
+  EXPECT_NEAR(r.objective,
+              objectiveOf(s, r.inputs) + s.parameters.airwayWeight * (s.parameters.airwayOpenArea - plant.area(r.inputs)),
+              1e-15);
+}
+
+// Above A_open the term costs nothing: the points' own optimum is reached as without it.
+TEST(ControlDriver, AnOpenAirwayLeavesTheGradientControllerAlone) {
+  const std::vector<double> uStar{0.3, 0.6, 0.45, 0.15};
+  auto s = setup(glossa::control::ControllerType::gradient, uStar);
+  s.parameters.gradient.damping = 0.0;
+  s.parameters.gradient.objectiveTolerance = 1e-12;
+  s.parameters.airwayWeight = 50.0;
+  s.parameters.airwayOpenArea = 5e-6;
+  LinearPlant plant(plantMatrix());
+  plant.area0 = 10e-6;
+  plant.areaRate = Eigen::RowVector4d(4e-6, -2e-6, 3e-6, 5e-6);
+  SingleControlGroup one;
+  ControlDriver driver(s, plant, one);
+  const ControlStepResult r = driver.step(0, kStretched);
+  ASSERT_TRUE(r.found());
+  for (std::size_t g = 0; g < uStar.size(); ++g) EXPECT_NEAR(r.inputs[g], uStar[g], 1e-9) << g;
+  EXPECT_LT(r.objective, 1e-12);
+}
+
+// The GA ranks by eq. 25 plus the airway term: its winner is the brute-force best of that sum over
+// the binary inputs; here only d opens the lumen, and the term outweighs eq. 25's best without it.
+TEST(ControlDriver, GeneticAlgorithmRanksWithTheAirwayTerm) {
+  auto s = setup(glossa::control::ControllerType::geneticAlgorithm, {0.9, 0.1, 0.8, 0.2});
+  s.parameters.airwayWeight = 1e3;
+  s.parameters.airwayOpenArea = 18e-6;
+  LinearPlant plant(plantMatrix());
+  plant.area0 = 10e-6;
+  plant.areaRate = Eigen::RowVector4d(0.0, 0.0, 0.0, 8e-6);
+  const auto byObjective = binaryInputsByObjective(s);
+  auto fitness = [&](const std::vector<double> &u) {
+    return objectiveOf(s, u) + s.parameters.airwayWeight * std::max(0.0, s.parameters.airwayOpenArea - plant.area(u));
+  };
+  auto byFitness = byObjective;
+  std::stable_sort(byFitness.begin(), byFitness.end(),
+                   [&](const auto &a, const auto &b) { return fitness(a) < fitness(b); });
+  ASSERT_EQ(byObjective[0][3], 0.0);  // eq. 25 alone leaves d off
+  ASSERT_EQ(byFitness[0][3], 1.0);    // the airway term turns it on
+  SingleControlGroup one;
+  ControlDriver driver(s, plant, one);
+  const ControlStepResult r = driver.step(0, kStretched);
+  ASSERT_TRUE(r.found());
+  EXPECT_EQ(r.inputs, byFitness[0]);
+  EXPECT_EQ(plant.kept(), byFitness[0]);
+  EXPECT_NEAR(r.objective, fitness(byFitness[0]), 1e-15);
+}
+
+// With the airway term the sensitivity check covers dA/du too, against its own scale.
+TEST(ControlDriver, SensitivityCheckCoversTheSmallestArea) {
+  const std::vector<double> uStar{0.3, 0.6, 0.45, 0.15};
+  auto s = setup(glossa::control::ControllerType::gradient, uStar);
+  s.parameters.verifySensitivities = true;
+  s.parameters.airwayWeight = 50.0;
+  s.parameters.airwayOpenArea = 20e-6;
+  SingleControlGroup one;
+  for (double scale : {1.0, 1.5}) {
+    LinearPlant plant(plantMatrix());
+    plant.area0 = 10e-6;
+    plant.areaRate = Eigen::RowVector4d(4e-6, -2e-6, 3e-6, 5e-6);
+    plant.areaSensitivityScale = scale; // 1.5: max |dA/du - FD| / max |FD| = 0.5
+    ControlDriver driver(s, plant, one);
+    EXPECT_NEAR(driver.step(0, kStretched).sensitivityCheck, scale - 1.0, 1e-9) << scale;
+  }
+}
+
 // Seed with prediction: from the third step on, generation 0 holds 2 u_{k-1} - u_{k-2} (clipped).
 TEST(ControlDriver, GeneticAlgorithmSeedsTheLinearPrediction) {
   auto s = setup(glossa::control::ControllerType::geneticAlgorithm, {0.9, 0.1, 0.8, 0.2});
