@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "airway/ResponseProbe.hpp"
 #include "contact/DeformablePair.hpp"
 #include "loads/FollowerPressure.hpp"
 
@@ -59,8 +60,7 @@ airflow::FlowDrive AirflowCoupling::drive(double time) const {
 }
 
 airflow::AirwayFlowState AirflowCoupling::measure(double time, const std::vector<double> &uAll) const {
-  const airway::LumenState lumen = airway_->lumen->measure(airway_->positions(scene_.mesh, uAll));
-  return flow_.solve(lumen, drive(time));
+  return flow_.solve(airway_->measure(scene_.mesh, uAll), drive(time));
 }
 
 namespace {
@@ -131,16 +131,12 @@ Eigen::MatrixXd AirflowCoupling::mapJacobian(double time, const std::vector<doub
                                              const std::vector<std::vector<double>> &responses) const {
   const auto n = static_cast<Eigen::Index>(numSections());
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(n, n);
-  std::vector<double> probe(uAll.size());
   for (Eigen::Index i = 0; i < n && static_cast<std::size_t>(i) < responses.size(); ++i) {
     const std::vector<double> &du = responses[static_cast<std::size_t>(i)];
-    double largest = 0.0;
-    for (const double d : du) largest = std::max(largest, std::abs(d));
-    if (!(largest > 0.0) || du.size() != uAll.size()) continue; // a section without faces
-    const double step = kProbeDisplacement / largest; // [Pa]
-    for (std::size_t k = 0; k < probe.size(); ++k) probe[k] = uAll[k] + step * du[k];
+    const double step = airway::probeStep(du); // [Pa]
+    if (!(step > 0.0) || du.size() != uAll.size()) continue; // a section without faces
     try {
-      jacobian.col(i) = (asVector(measure(time, probe).sectionPressure) - image) / step;
+      jacobian.col(i) = (asVector(measure(time, airway::probed(uAll, du, step)).sectionPressure) - image) / step;
     } catch (const std::exception &) { // the probe's lumen shut or lost a section: no slope there
     }
   }

@@ -89,13 +89,11 @@ private:
   airflow::FlowDrive drive(double time) const;
   airflow::AirwayFlowState measure(double time, const std::vector<double> &uAll) const;
   // dF/dp of the coupling's map at the solved state `uAll` whose flow gave `image`: column i the
-  // flow's pressures through the lumen moved by a small multiple of `responses[i]` (a probe of
-  // kProbeDisplacement at the node that moves most), less `image`, per pascal. A probe the flow
-  // cannot pass leaves its column zero.
+  // flow's pressures through the lumen moved by a small multiple of `responses[i]`
+  // (airway/ResponseProbe), less `image`, per pascal. A probe the flow cannot pass leaves its
+  // column zero.
   Eigen::MatrixXd mapJacobian(double time, const std::vector<double> &uAll, const Eigen::VectorXd &image,
                               const std::vector<std::vector<double>> &responses) const;
-  // Small against the lumen (millimetres) and its mesh, large against round-off in its areas.
-  static constexpr double kProbeDisplacement = 1e-6; // [m]
 
   input::AirflowParameters parameters_;
   std::shared_ptr<const model::AirwayOutput> airway_;

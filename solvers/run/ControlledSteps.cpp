@@ -1,10 +1,10 @@
 #include "solvers/run/ControlledSteps.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <limits>
 
+#include "airway/ResponseProbe.hpp"
 #include "assembly/Assembler.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/ResultEvaluator.hpp"
@@ -73,13 +73,13 @@ CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
   if (a.ok) {
     const std::vector<double> all = assembly::ResultEvaluator(parts_.assembler).gatherDisplacement(last_.u);
     out.pointDisplacement = pointDisplacement(all);
-    if (airwayTerm()) out.smallestArea = lumenArea(all);
+    if (measuresLumen()) out.smallestArea = lumenArea(all);
   }
   return out;
 }
 
 double ControlledSteps::lumenArea(const std::vector<double> &uAll, int section) const {
-  const airway::LumenState lumen = airway_->lumen->measure(airway_->positions(parts_.assembler.scene().mesh, uAll));
+  const airway::LumenState lumen = airway_->measure(parts_.assembler.scene().mesh, uAll);
   const int k = section >= 0 ? section : lumen.smallest;
   return k >= 0 ? lumen.sections[static_cast<std::size_t>(k)].area() : std::numeric_limits<double>::quiet_NaN();
 }
@@ -92,26 +92,19 @@ InputSensitivity ControlledSteps::sensitivity(const std::vector<double> &inputs,
   parts_.model.setMultipliers(kept_.lambda);
   const auto s = controlPointSensitivity(parts_.newton, kept_.u, groups);
   InputSensitivity out{s.dxdu, s.krylovIterations, {}};
-  if (airwayTerm()) {
-    // dA/du_M of the kept state's smallest section, by a central difference of the lumen along
-    // the linearised response du/du_M, scaled so that the node it moves most moves by
-    // kLumenProbe: far below a facet, well above round-off in the area.
-    constexpr double kLumenProbe = 1e-6; // [m]
+  if (measuresLumen()) {
+    // dA/du_M of the kept state's smallest section: a central difference of the lumen along the
+    // linearised response du/du_M (airway/ResponseProbe).
     const assembly::ResultEvaluator results(parts_.assembler);
     const std::vector<double> u = results.gatherDisplacement(kept_.u);
-    const airway::LumenState kept =
-        airway_->lumen->measure(airway_->positions(parts_.assembler.scene().mesh, u));
+    const int smallest = airway_->measure(parts_.assembler.scene().mesh, u).smallest;
     out.dAdu = Eigen::RowVectorXd::Zero(static_cast<Eigen::Index>(groups.size()));
-    for (std::size_t j = 0; kept.smallest >= 0 && j < groups.size(); ++j) {
+    for (std::size_t j = 0; smallest >= 0 && j < groups.size(); ++j) {
       const std::vector<double> du = results.gatherDisplacement(*s.responses->getVector(j));
-      double largest = 0.0;
-      for (double v : du) largest = std::max(largest, std::abs(v));
-      if (!(largest > 0.0)) continue;
-      const double h = kLumenProbe / largest;
-      std::vector<double> plus(u), minus(u);
-      for (std::size_t i = 0; i < u.size(); ++i) plus[i] += h * du[i], minus[i] -= h * du[i];
+      const double h = airway::probeStep(du);
+      if (!(h > 0.0)) continue;
       out.dAdu(static_cast<Eigen::Index>(j)) =
-          (lumenArea(plus, kept.smallest) - lumenArea(minus, kept.smallest)) / (2.0 * h);
+          (lumenArea(airway::probed(u, du, h), smallest) - lumenArea(airway::probed(u, du, -h), smallest)) / (2.0 * h);
     }
   }
   return out;
@@ -183,7 +176,7 @@ nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
   if (controls_) controls_->append(t, rows);
   char line[200];
   std::snprintf(line, sizeof line, "  control: %s %.3g m, %zu candidates (%zu failed), %s %d (%s)",
-                airwayTerm() ? "eq. 25 + airway term" : "eq. 25", outcome.objective, outcome.candidates, outcome.failedCandidates, ga ? "generations" : "iterations",
+                measuresLumen() ? "eq. 25 + airway term" : "eq. 25", outcome.objective, outcome.candidates, outcome.failedCandidates, ga ? "generations" : "iterations",
                 ga ? outcome.generations : outcome.iterations, outcome.stop.c_str());
   controlLine_ = line;
   return c;

@@ -72,7 +72,8 @@ private:
   // The airway term's: the lumen at every node's displacement `uAll`, and the area of its section
   // `section` (-1: the smallest; NaN when that section is not measured).
   double lumenArea(const std::vector<double> &uAll, int section = -1) const;
-  bool airwayTerm() const { return airway_ && setup_.parameters.airwayWeight > 0.0; }
+  // The controller's airway term is on: candidates and sensitivities measure the lumen.
+  bool measuresLumen() const { return airway_ && setup_.parameters.airwayWeight > 0.0; }
 
   const ControlSetup &setup_;
   StepSolverParts parts_;

@@ -34,6 +34,10 @@ struct AirwayOutput {
     }
     return x;
   }
+  // The lumen at every node's displacement `u` (3 per node).
+  airway::LumenState measure(const mesh::HexMesh &mesh, const std::vector<double> &u) const {
+    return lumen->measure(positions(mesh, u));
+  }
 };
 
 }  // namespace glossa::model

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include <Eigen/Cholesky>
@@ -63,17 +64,21 @@ double objectiveOf(const ControlDriverSetup &s, const std::vector<double> &input
   return total;
 }
 
-// Every binary input vector, ranked by eq. 25, best first (ties: the first enumerated).
-std::vector<std::vector<double>> binaryInputsByObjective(const ControlDriverSetup &s) {
+// Every binary input vector, ranked by `value`, best first (ties: the first enumerated).
+std::vector<std::vector<double>> binaryInputsBy(const std::function<double(const std::vector<double> &)> &value) {
   std::vector<std::vector<double>> all;
   for (int bits = 0; bits < (1 << kGroups); ++bits) {
     std::vector<double> u(kGroups);
     for (int g = 0; g < kGroups; ++g) u[g] = (bits >> g) & 1 ? 1.0 : 0.0;
     all.push_back(u);
   }
-  std::stable_sort(all.begin(), all.end(),
-                   [&](const auto &a, const auto &b) { return objectiveOf(s, a) < objectiveOf(s, b); });
+  std::stable_sort(all.begin(), all.end(), [&](const auto &a, const auto &b) { return value(a) < value(b); });
   return all;
+}
+
+// Ranked by eq. 25.
+std::vector<std::vector<double>> binaryInputsByObjective(const ControlDriverSetup &s) {
+  return binaryInputsBy([&s](const std::vector<double> &u) { return objectiveOf(s, u); });
 }
 
 const std::vector<double> kStretched(kGroups, 1.1); // every group in tension
@@ -244,9 +249,7 @@ TEST(ControlDriver, GeneticAlgorithmRanksByObjectivePlusEffort) {
     for (double v : u) sum += v * v;
     return objectiveOf(s, u) + s.parameters.effortWeight * sum;
   };
-  auto byFitness = byObjective;
-  std::stable_sort(byFitness.begin(), byFitness.end(),
-                   [&](const auto &a, const auto &b) { return fitness(a) < fitness(b); });
+  const auto byFitness = binaryInputsBy(fitness);
   ASSERT_NE(byFitness[0], byObjective[0]); // the effort changes the winner
   LinearPlant plant(plantMatrix());
   SingleControlGroup one;
@@ -332,9 +335,7 @@ TEST(ControlDriver, GeneticAlgorithmRanksWithTheAirwayTerm) {
   auto fitness = [&](const std::vector<double> &u) {
     return objectiveOf(s, u) + s.parameters.airwayWeight * std::max(0.0, s.parameters.airwayOpenArea - plant.area(u));
   };
-  auto byFitness = byObjective;
-  std::stable_sort(byFitness.begin(), byFitness.end(),
-                   [&](const auto &a, const auto &b) { return fitness(a) < fitness(b); });
+  const auto byFitness = binaryInputsBy(fitness);
   ASSERT_EQ(byObjective[0][3], 0.0);  // eq. 25 alone leaves d off
   ASSERT_EQ(byFitness[0][3], 1.0);    // the airway term turns it on
   SingleControlGroup one;
