@@ -7,7 +7,11 @@ with a deeper suction than the paper's and finer steps; a run that stops (no con
 tongue folded) is tabulated up to its last converged step, and says so.
 
     /usr/bin/python3 bench/airway_tube_law.py [--glossa build/glossa] [--posture supine]
-        [--suction 2000] [--step 0.05] [--runs DIR] [--table bench/results/airway_tube_law_supine.csv]
+        [--deck airway|tongue_pcrit] [--suction 2000] [--step 0.05] [--runs DIR]
+        [--table bench/results/airway_tube_law_supine.csv]
+
+--deck tongue_pcrit runs inputs/paper/tongue_pcrit_{posture}.xml instead: the same ramp, with the
+lateral walls and the implicit palate surface of the Pcrit decks (doc/airway.md).
 
 Writes the table: time [s], suction at P_P [Pa and cmH2O], smallest area [mm^2], its section and
 arc length [mm], contact area [mm^2], closed; and prints it.
@@ -28,14 +32,15 @@ def main(argv):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"))
     p.add_argument("--posture", default="supine", choices=["supine", "upright"])
+    p.add_argument("--deck", default="airway", choices=["airway", "tongue_pcrit"])
     p.add_argument("--suction", type=float, default=2000.0, help="p_max at P_P [Pa], > 0 for suction")
     p.add_argument("--step", type=float, default=0.05, help="step size [s]")
     p.add_argument("--runs", default=os.path.join(ROOT, "build", "bench", "airway_tube_law"))
     p.add_argument("--table", default=None)
     args = p.parse_args(argv)
-    deck = os.path.join(ROOT, "inputs", "paper", f"airway_{args.posture}.xml")
-    out = os.path.join(args.runs, args.posture)
-    table = args.table or os.path.join(ROOT, "bench", "results", f"airway_tube_law_{args.posture}.csv")
+    deck = os.path.join(ROOT, "inputs", "paper", f"{args.deck}_{args.posture}.xml")
+    out = os.path.join(args.runs, f"{args.deck}_{args.posture}")
+    table = args.table or os.path.join(ROOT, "bench", "results", f"{args.deck}_tube_law_{args.posture}.csv")
     start = time.time()
     run = subprocess.run([args.glossa, "run", deck, "--quiet", "--output", out,
                           "--set", f"Loads/airway pressure/pressure={-args.suction}",

@@ -644,8 +644,9 @@ PCRIT_SUCTION = -3000.0
 PCRIT = f"""
 The airway's closing pressure Pcrit (doc/airway.md, "Pcrit"): the lumen of airway_{{posture}}.xml
 (20 sections between 'airway' and palate8.obj), the palate a frictionless penalty contact of
-'palate side' with smoothed normals (the faceted ones stall Newton at a third of the suction), so
-the tongue cannot pass the wall; passive, on the zero-strain configuration of s8_1, gravity
+'palate side' on the implicit surface through palate8.obj's vertices (normal field = implicit:
+faceted normals stall Newton at a third of the suction, smoothed ones at -2200 Pa supine, where the
+contact stiffness jumps as a point's foot crosses an edge), so the tongue cannot pass the wall; passive, on the zero-strain configuration of s8_1, gravity
 ramped over [0, 1] s, then the airway suction, linear from 0 at P_A to {PCRIT_SUCTION:g} Pa at P_P
 (the paper's profile; with Loads/airway pressure/profile = uniform for a uniform one) ramped over
 [1, 2] s in steps of 0.125 s. Lateral walls 12.5 mm either side of the midsagittal plane (a
@@ -658,7 +659,7 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
     deck(f"tongue_pcrit_{posture}", f"The tongue's airway closing pressure, {posture}.\n" + COMMON +
          PCRIT.replace("{posture}", posture) + f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
          {}, gravity=g, pressure=PCRIT_SUCTION, end_time=2.0, step=0.125, reference="s8_1/reference_inverse.txt",
-         face_sets=PALATE_SIDE, contact={"palate": {**PALATE_CONTACT["palate"], "normal field": ("string", "smoothed")}},
+         face_sets=PALATE_SIDE, contact={"palate": {**PALATE_CONTACT["palate"], "normal field": ("string", "implicit")}},
          airway={**AIRWAY_SECTION, "closing pressure load": ("string", "airway pressure"),
                  "lateral half-width": ("double", 0.0125)},
          output={"fields": ("bool", "false")})

@@ -4,11 +4,20 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Iso_cuboid_3.h>
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
+#include "contact/ImplicitSurface.hpp"
+#include "contact/PointTriangle.hpp"
 #include "contact/SmoothedProjection.hpp"
 #include "contact/SurfaceProjection.hpp"
 
@@ -19,6 +28,11 @@ using Kernel = CGAL::Simple_cartesian<double>;
 using Triangles = std::vector<Kernel::Triangle_3>;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+// The vertices by index, for the implicit surface's neighbours within its support radius.
+using IndexedPoint = std::pair<Kernel::Point_3, int>;
+using VertexTraits = CGAL::Search_traits_adapter<IndexedPoint, CGAL::First_of_pair_property_map<IndexedPoint>,
+                                                 CGAL::Search_traits_3<Kernel>>;
+using VertexTree = CGAL::Kd_tree<VertexTraits>;
 
 Kernel::Point_3 point(const Eigen::Vector3d &x) { return {x.x(), x.y(), x.z()}; }
 }  // namespace
@@ -27,9 +41,11 @@ Kernel::Point_3 point(const Eigen::Vector3d &x) { return {x.x(), x.y(), x.z()}; 
 struct TriangulatedObstacle::Search {
   Triangles triangles;
   Tree tree;
+  std::vector<IndexedPoint> vertices;
+  VertexTree vertexTree;
 };
 
-TriangulatedObstacle::TriangulatedObstacle(TriangleSurface surface, NormalField field)
+TriangulatedObstacle::TriangulatedObstacle(TriangleSurface surface, NormalField field, double implicitRadius)
     : surface_(std::move(surface)), field_(field), search_(std::make_unique<Search>()) {
   search_->triangles.reserve(surface_.numTriangles());
   for (std::size_t t = 0; t < surface_.numTriangles(); ++t) {
@@ -40,6 +56,13 @@ TriangulatedObstacle::TriangulatedObstacle(TriangleSurface surface, NormalField 
   search_->tree.build();
   // Built now rather than on the first query, so that queries only read the tree.
   search_->tree.accelerate_distance_queries();
+  if (field_ == NormalField::implicit) {
+    implicitRadius_ = implicitRadius > 0.0 ? implicitRadius : kImplicitRadiusInEdges * meanEdgeLength(surface_);
+    for (std::size_t v = 0; v < surface_.vertices().size(); ++v)
+      search_->vertices.emplace_back(point(surface_.vertices()[v]), static_cast<int>(v));
+    search_->vertexTree.insert(search_->vertices.begin(), search_->vertices.end());
+    search_->vertexTree.build();
+  }
 }
 
 TriangulatedObstacle::~TriangulatedObstacle() = default;
@@ -57,8 +80,32 @@ std::optional<ClosestPoint> TriangulatedObstacle::closest(const Eigen::Vector3d 
   const auto [p, id] = search_->tree.closest_point_and_primitive(point(x));
   if (CGAL::squared_distance(p, point(x)) > searchRadius * searchRadius) return std::nullopt;
   const auto triangle = static_cast<std::size_t>(id - search_->triangles.cbegin());
+  if (field_ == NormalField::implicit) return onImplicitSurface(triangle, x);
   return field_ == NormalField::smoothed ? projectOnSmoothedTriangle(surface_, triangle, x)
                                          : projectOnTriangle(surface_, triangle, x);
+}
+
+// Beside an open sheet's free boundary the faceted rule stands, as for smoothed normals; where
+// the vertices' weights vanish (x farther from the surface than the support radius) the smoothed
+// normals answer: such a point is apart either way.
+ClosestPoint TriangulatedObstacle::onImplicitSurface(std::size_t triangle, const Eigen::Vector3d &x) const {
+  using F = TriangleProjection::Feature;
+  const TriangleProjection pr =
+      closestOnTriangle(x, surface_.corner(triangle, 0), surface_.corner(triangle, 1), surface_.corner(triangle, 2));
+  const bool onRim = pr.feature == F::Edge     ? surface_.onFreeBoundary(triangle, pr.index)
+                     : pr.feature == F::Vertex ? surface_.onFreeBoundary(surface_.triangles()[triangle][pr.index])
+                                               : false;
+  if (onRim) return projectOnTriangle(surface_, triangle, x);
+  std::vector<IndexedPoint> found;
+  search_->vertexTree.search(std::back_inserter(found),
+                             CGAL::Fuzzy_sphere<VertexTraits>(point(x), implicitRadius_, 0.0));
+  std::vector<int> neighbours;
+  neighbours.reserve(found.size());
+  for (const IndexedPoint &p : found) neighbours.push_back(p.second);
+  // The tree's order is not the vertices': sorted, the sums are the same on every rank and run.
+  std::sort(neighbours.begin(), neighbours.end());
+  if (const auto cp = implicitSurfaceAt(surface_, neighbours, x, implicitRadius_)) return *cp;
+  return projectOnSmoothedTriangle(surface_, triangle, x);
 }
 
 }  // namespace glossa::contact

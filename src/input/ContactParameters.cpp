@@ -61,10 +61,13 @@ std::shared_ptr<const contact::Obstacle> buildSurface(const io::Deck &deck, cons
                                    : normals == "toward point" ? contact::NormalSide::TowardPoint
                                                                : contact::NormalSide::AsStored;
   contact::TriangleSurface surface = contact::readSurface(path.string(), c.get<double>("file unit"));
-  const contact::NormalField field =
-      c.get<std::string>("normal field") == "smoothed" ? contact::NormalField::smoothed : contact::NormalField::faceted;
+  const std::string fieldName = c.get<std::string>("normal field");
+  const contact::NormalField field = fieldName == "smoothed"   ? contact::NormalField::smoothed
+                                     : fieldName == "implicit" ? contact::NormalField::implicit
+                                                               : contact::NormalField::faceted;
   return std::make_shared<contact::TriangulatedObstacle>(
-      contact::orientNormals(std::move(surface), side, vec3(c.get<Array<double>>("body point"))), field);
+      contact::orientNormals(std::move(surface), side, vec3(c.get<Array<double>>("body point"))), field,
+      c.get<double>("smoothing radius"));
 }
 
 // The nodes of the contact's faces that start inside the obstacle deeper than the deck tolerates:
@@ -248,8 +251,15 @@ ParameterList contactParameters() {
   io::declareString(p, "normal field", "faceted",
                     "surface: the contact normal, each triangle's own (faceted; it jumps from triangle to triangle) "
                     "or interpolated from the vertices' normals (smoothed: continuous across edges, for coarse "
-                    "curved surfaces such as bones; doc/contact.md)",
-                    {"faceted", "smoothed"});
+                    "curved surfaces such as bones; doc/contact.md) or those of an implicit surface through the "
+                    "vertices (implicit: the gap's gradient, and so the contact stiffness, continuous too, where "
+                    "on the other two it turns by the angle between triangles; doc/contact.md)",
+                    {"faceted", "smoothed", "implicit"});
+  io::declareDouble(p, "smoothing radius", 0.0, "m",
+                    "surface, normal field = implicit: the support radius R of the vertices' weights; 0: 2.5 mean "
+                    "edge lengths of the surface. A surface of radius of curvature rho is smoothed inward by about "
+                    "0.07 R^2 / rho",
+                    io::Range::nonNegative());
   io::declareDoubleArray(p, "body point", Array<double>(3, 0.0), "m",
                          "surface with normals 'toward point': a point on the body's side of it", 3);
   io::declareDoubleArray(p, "point", Array<double>(3, 0.0), "m",
