@@ -1,12 +1,16 @@
 #pragma once
-// Small surfaces for the contact tests, with their geometry known in closed form, and the
-// central difference of a normal for the dNormal checks.
+// Small surfaces for the contact tests, with their geometry known in closed form, the
+// central difference of a normal for the dNormal checks, and an unbounded closest-point query.
+
+#include <gtest/gtest.h>
 
 #include <Eigen/Core>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "contact/TriangleSurface.hpp"
+#include "contact/TriangulatedObstacle.hpp"
 
 namespace glossa::contact::testing {
 
@@ -81,6 +85,13 @@ inline Eigen::Matrix3d centralDifference(
     D.col(j) = (normal(x + e) - normal(x - e)) / (2 * h);
   }
   return D;
+}
+
+// The obstacle's answer at x with no search radius; a test failure if it gives none.
+inline ClosestPoint queryAnywhere(const TriangulatedObstacle &o, const Eigen::Vector3d &x) {
+  const auto cp = o.closest(x, std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(cp.has_value());
+  return cp ? *cp : ClosestPoint{};
 }
 
 }  // namespace glossa::contact::testing

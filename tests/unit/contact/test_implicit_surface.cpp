@@ -27,13 +27,7 @@ using glossa::contact::NormalField;
 using glossa::contact::TriangulatedObstacle;
 namespace ct = glossa::contact::testing;
 
-constexpr double kAnywhere = std::numeric_limits<double>::infinity();
-
-ClosestPoint query(const TriangulatedObstacle &o, const Eigen::Vector3d &x) {
-  const auto cp = o.closest(x, kAnywhere);
-  EXPECT_TRUE(cp.has_value());
-  return *cp;
-}
+ClosestPoint query(const TriangulatedObstacle &o, const Eigen::Vector3d &x) { return ct::queryAnywhere(o, x); }
 
 TEST(ImplicitSurface, OnAFlatSheetItIsTheSignedDistance) {
   const TriangulatedObstacle sheet(ct::unitSquareSheet(), NormalField::implicit, 1.0);

@@ -24,13 +24,7 @@ using glossa::contact::NormalField;
 using glossa::contact::TriangulatedObstacle;
 namespace ct = glossa::contact::testing;
 
-constexpr double kAnywhere = std::numeric_limits<double>::infinity();
-
-ClosestPoint query(const TriangulatedObstacle &o, const Eigen::Vector3d &x) {
-  const auto cp = o.closest(x, kAnywhere);
-  EXPECT_TRUE(cp.has_value());
-  return *cp;
-}
+ClosestPoint query(const TriangulatedObstacle &o, const Eigen::Vector3d &x) { return ct::queryAnywhere(o, x); }
 
 double angle(const Eigen::Vector3d &a, const Eigen::Vector3d &b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
