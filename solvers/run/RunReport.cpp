@@ -206,7 +206,7 @@ void RunReport::addStep(const StepTrial &trial, double t, bool onPath, double as
   step["max_turned_over_volume"] = trial.attempt.turnedOver;
   if (std::isfinite(trial.attempt.pathStiffness)) step["path_stiffness"] = trial.attempt.pathStiffness;
   if (!(trial.attempt.minCornerJ > 0.0) && talk_)
-    std::printf("  note: element %lld has a corner turned over at t = %.6g (det F = %.3g there; its Gauss points are "
+    std::printf("  note: element %lld (numbered from 0) has a corner turned over at t = %.6g (det F = %.3g there; its Gauss points are "
                 "not inverted)\n", static_cast<long long>(trial.attempt.cornerElement), t, trial.attempt.minCornerJ);
   step["seconds"] = since(trial.start);
   step["assembly_seconds"] = assemblySeconds - trial.assemblyAtStart;

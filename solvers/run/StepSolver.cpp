@@ -201,7 +201,7 @@ void StepSolver::measureCorners(const StepState &state, double time, StepAttempt
   for (const auto n : scene_.mesh.elements[worst.turnedOverElement]) centroid += scene_.mesh.nodes[n] / 8.0;
   char why[600];
   std::snprintf(why, sizeof why,
-                "element %lld (reference centroid %.4g, %.4g, %.4g m) is folded through itself in the converged state "
+                "element %lld (reference centroid %.4g, %.4g, %.4g m; numbered from 0) is folded through itself in the converged state "
                 "at t = %.6g: %.3g %% of its volume is turned inside out (its smallest corner det F %.3g), beyond the "
                 "%.2g %% a sound state keeps; the mesh is too coarse or too distorted there for this deformation: "
                 "refine it there, or lower the load",
