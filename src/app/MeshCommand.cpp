@@ -1,6 +1,9 @@
 #include "app/MeshCommand.hpp"
 
+#include <algorithm>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "io/deck/DeckError.hpp"
 #include "io/output/OutputError.hpp"
@@ -15,6 +18,9 @@
 namespace glossa::app {
 
 namespace {
+// The report names this many elements of the smallest scaled Jacobian.
+constexpr std::size_t kWorstElementsShown = 5;
+
 // --output names a mesh file (.msh, .inp) or a directory for XDMF. Any other extension is far more
 // likely a format glossa does not write (out.vtk) than a directory's name: it is refused, before
 // the mesh is read, rather than made a directory; an existing directory or a trailing / is taken.
@@ -41,6 +47,16 @@ nlohmann::json describeMesh(const std::string &file, const MeshCommandOptions &o
   r["volume"] = mesh::meshVolume(m);
   const auto [sjMin, sjMax] = mesh::scaledJacobianRange(m);
   r["scaled_jacobian"] = {{"min", sjMin}, {"max", sjMax}};
+  // The worst elements by name: near-degenerate ones are where a large deformation folds a
+  // corner first (the tongue's under airway suction, doc/airway.md).
+  std::vector<std::pair<double, std::size_t>> quality;
+  for (std::size_t e = 0; e < m.numElements(); ++e)
+    quality.emplace_back(mesh::scaledJacobian(m.elementCoordinates(static_cast<mesh::ElementId>(e))), e);
+  const std::size_t shown = std::min<std::size_t>(kWorstElementsShown, quality.size());
+  std::partial_sort(quality.begin(), quality.begin() + static_cast<std::ptrdiff_t>(shown), quality.end());
+  nlohmann::json worst = nlohmann::json::array();
+  for (std::size_t k = 0; k < shown; ++k) worst.push_back({{"element", quality[k].second}, {"value", quality[k].first}});
+  r["scaled_jacobian"]["worst"] = worst;
   // What a run would refuse (doc/meshes.md, "Before a run").
   const mesh::MeshCheckReport checks = mesh::checkMesh(m);
   r["checks"] = {{"unused_nodes", checks.unusedNodes.size()},
@@ -93,7 +109,10 @@ std::string meshReportText(const nlohmann::json &r) {
   if (r.at("refine").get<int>() > 0) s << " (refined " << r.at("refine") << "x)";
   s << "\n  nodes " << r.at("nodes") << "  elements " << r.at("elements") << "  volume " << r.at("volume").get<double>()
     << " m^3\n  scaled Jacobian " << r.at("scaled_jacobian").at("min").get<double>() << " .. "
-    << r.at("scaled_jacobian").at("max").get<double>() << "\n";
+    << r.at("scaled_jacobian").at("max").get<double>() << "; smallest at elements (numbered from 0)";
+  for (const auto &w : r.at("scaled_jacobian").at("worst"))
+    s << " " << w.at("element").get<std::size_t>() << " (" << w.at("value").get<double>() << ")";
+  s << "\n";
   const auto &c = r.at("checks");
   s << "  parts " << c.at("parts") << "  unused nodes " << c.at("unused_nodes") << "  coincident node pairs "
     << c.at("coincident_node_pairs") << "  duplicate elements " << c.at("duplicate_elements")

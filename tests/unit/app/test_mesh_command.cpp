@@ -11,6 +11,7 @@
 #include "app/MeshCommand.hpp"
 #include "io/deck/DeckError.hpp"
 #include "mesh/BoxGenerator.hpp"
+#include "mesh/MeshQuality.hpp"
 #include "mesh/MeshWriter.hpp"
 
 namespace glossa::app {
@@ -72,6 +73,33 @@ TEST(MeshCommand, AnOutputOfAnotherFormatIsRefusedNotMadeADirectory) {
   // A directory of that name, said with a trailing / or existing already, takes the XDMF.
   EXPECT_EQ(describeMesh(boxFile(), {"auto", 0, dir / "out.vtk/"}).at("written"), (dir / "out.vtk/mesh.xdmf").string());
   EXPECT_EQ(describeMesh(boxFile(), {"auto", 0, dir / "out.vtk"}).at("written"), (dir / "out.vtk/mesh.xdmf").string());
+}
+
+// One interior node of the 2 x 2 x 2 box moved towards a corner: the elements around it lose
+// their right angles, the worst first, named in the report with their scaled Jacobians.
+TEST(MeshCommand, NamesTheElementsOfTheSmallestScaledJacobian) {
+  mesh::HexMesh box = mesh::generateBox(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 3), {2, 2, 2});
+  std::size_t centre = 0;
+  for (std::size_t n = 0; n < box.nodes.size(); ++n)
+    if ((box.nodes[n] - Eigen::Vector3d(0.5, 1.0, 1.5)).norm() < 1e-12) centre = n;
+  box.nodes[centre] += Eigen::Vector3d(0.15, 0.3, 0.45);  // 30 % of the way to the corner (1, 2, 3)
+  const std::string file = (test::processScratch() / "mesh_command_skewed.msh").string();
+  mesh::writeGmsh(box, file);
+  const nlohmann::json r = describeMesh(file, {});
+  const auto &worst = r.at("scaled_jacobian").at("worst");
+  ASSERT_EQ(worst.size(), 5u);
+  EXPECT_DOUBLE_EQ(worst[0].at("value").get<double>(), r.at("scaled_jacobian").at("min").get<double>());
+  for (std::size_t k = 1; k < worst.size(); ++k)
+    EXPECT_LE(worst[k - 1].at("value").get<double>(), worst[k].at("value").get<double>());
+  // The worst is the element at the far corner, whose own corner the node now nearly reaches.
+  const auto e = static_cast<mesh::ElementId>(worst[0].at("element").get<std::size_t>());
+  const auto &hex = box.elements[static_cast<std::size_t>(e)];
+  bool hasFarCorner = false;
+  for (const auto n : hex) hasFarCorner |= (box.nodes[static_cast<std::size_t>(n)] - Eigen::Vector3d(1, 2, 3)).norm() < 1e-12;
+  EXPECT_TRUE(hasFarCorner);
+  EXPECT_NEAR(worst[0].at("value").get<double>(), mesh::scaledJacobian(box.elementCoordinates(e)), 1e-14);
+  EXPECT_NE(meshReportText(r).find("smallest at elements (numbered from 0) " + std::to_string(static_cast<std::size_t>(e))),
+            std::string::npos);
 }
 
 TEST(MeshCommand, TheTextReportSaysTheSame) {
