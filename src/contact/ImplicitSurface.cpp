@@ -11,19 +11,28 @@ double meanEdgeLength(const TriangleSurface &surface) {
   return sum / (3.0 * static_cast<double>(surface.numTriangles()));
 }
 
-std::optional<ClosestPoint> implicitSurfaceAt(const TriangleSurface &surface, const std::vector<int> &neighbours,
-                                              const Eigen::Vector3d &x, double radius) {
+std::vector<Eigen::Vector3d> unitVertexNormals(const TriangleSurface &surface) {
+  std::vector<Eigen::Vector3d> normals;
+  normals.reserve(surface.vertices().size());
+  for (std::size_t v = 0; v < surface.vertices().size(); ++v) normals.push_back(surface.vertexPseudonormal(v).normalized());
+  return normals;
+}
+
+std::optional<ClosestPoint> implicitSurfaceAt(const std::vector<Eigen::Vector3d> &vertices,
+                                              const std::vector<Eigen::Vector3d> &unitNormals,
+                                              const std::vector<int> &neighbours, const Eigen::Vector3d &x,
+                                              double radius) {
   // Sums of w, w h (h_i = N_i . (x - v_i)) and their first and second derivatives.
   double W = 0.0, S = 0.0;
   Eigen::Vector3d dW = Eigen::Vector3d::Zero(), dS = Eigen::Vector3d::Zero();
   Eigen::Matrix3d ddW = Eigen::Matrix3d::Zero(), ddS = Eigen::Matrix3d::Zero();
   const double R2 = radius * radius;
   for (const int i : neighbours) {
-    const Eigen::Vector3d d = x - surface.vertices()[i];
+    const Eigen::Vector3d d = x - vertices[static_cast<std::size_t>(i)];
     const double r = d.norm();
     const double s = r / radius;
     if (s >= 1.0) continue;
-    const Eigen::Vector3d N = surface.vertexPseudonormal(i).normalized();
+    const Eigen::Vector3d &N = unitNormals[static_cast<std::size_t>(i)];
     const double h = N.dot(d);
     const double a = 1.0 - s;
     // phi = a^4 (4 s + 1); grad phi = -20 a^3 d / R^2;

@@ -30,12 +30,17 @@ namespace glossa::contact {
 constexpr double kImplicitRadiusInEdges = 2.5;
 double meanEdgeLength(const TriangleSurface &surface);
 
-// f, its gradient and Hessian at x from the vertices `neighbours` (indices into the surface's
-// vertices, those within R of x); nothing where their weights sum to less than
+// The unit vertex normals N_i: the surface's angle-weighted pseudonormals, made unit once.
+std::vector<Eigen::Vector3d> unitVertexNormals(const TriangleSurface &surface);
+
+// f, its gradient and Hessian at x from the vertices `neighbours` (indices into `vertices` and
+// `unitNormals`, those within R of x); nothing where their weights sum to less than
 // kSmallestWeightSum (x near the edge of every vertex's support: too far from the surface for a
 // level set to be defined, or beyond an open sheet).
 constexpr double kSmallestWeightSum = 1e-3;
-std::optional<ClosestPoint> implicitSurfaceAt(const TriangleSurface &surface, const std::vector<int> &neighbours,
-                                              const Eigen::Vector3d &x, double radius);
+std::optional<ClosestPoint> implicitSurfaceAt(const std::vector<Eigen::Vector3d> &vertices,
+                                              const std::vector<Eigen::Vector3d> &unitNormals,
+                                              const std::vector<int> &neighbours, const Eigen::Vector3d &x,
+                                              double radius);
 
 }  // namespace glossa::contact

@@ -13,10 +13,7 @@ ClosestPoint projectOnSmoothedTriangle(const TriangleSurface &surface, std::size
   const TriangleSurface::Triangle &tri = surface.triangles()[t];
   const std::array<Eigen::Vector3d, 3> v{surface.corner(t, 0), surface.corner(t, 1), surface.corner(t, 2)};
   const TriangleProjection pr = closestOnTriangle(x, v[0], v[1], v[2]);
-  const bool onRim = pr.feature == F::Edge     ? surface.onFreeBoundary(t, pr.index)
-                     : pr.feature == F::Vertex ? surface.onFreeBoundary(tri[pr.index])
-                                               : false;
-  if (onRim) return projectOnTriangle(surface, t, x);
+  if (onFreeBoundary(surface, t, pr)) return projectOnTriangle(surface, t, x);
 
   std::array<Eigen::Vector3d, 3> N;
   for (int i = 0; i < 3; ++i) N[i] = surface.vertexPseudonormal(tri[i]).normalized();

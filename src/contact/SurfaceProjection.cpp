@@ -12,6 +12,13 @@ namespace {
 constexpr double kOnFeature = 1e-12;
 }  // namespace
 
+bool onFreeBoundary(const TriangleSurface &surface, std::size_t t, const TriangleProjection &pr) {
+  using F = TriangleProjection::Feature;
+  return pr.feature == F::Edge     ? surface.onFreeBoundary(t, pr.index)
+         : pr.feature == F::Vertex ? surface.onFreeBoundary(surface.triangles()[t][pr.index])
+                                   : false;
+}
+
 ClosestPoint projectOnTriangle(const TriangleSurface &surface, std::size_t t, const Eigen::Vector3d &x,
                                bool *besideFreeBoundary) {
   using F = TriangleProjection::Feature;
@@ -20,9 +27,7 @@ ClosestPoint projectOnTriangle(const TriangleSurface &surface, std::size_t t, co
   ClosestPoint cp;
   cp.point = pr.point;
   const Eigen::Vector3d d = x - pr.point;
-  const bool onRim = pr.feature == F::Edge     ? surface.onFreeBoundary(t, pr.index)
-                     : pr.feature == F::Vertex ? surface.onFreeBoundary(surface.triangles()[t][pr.index])
-                                               : false;
+  const bool onRim = onFreeBoundary(surface, t, pr);
   if (besideFreeBoundary) *besideFreeBoundary = onRim;
   if (pr.feature == F::Face) {
     cp.normal = surface.normal(t);

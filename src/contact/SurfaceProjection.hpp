@@ -14,9 +14,15 @@
 #include <cstddef>
 
 #include "contact/Obstacle.hpp"
+#include "contact/PointTriangle.hpp"
 #include "contact/TriangleSurface.hpp"
 
 namespace glossa::contact {
+
+// Whether the closest point `pr` of triangle t lies on the free boundary of an open sheet (an
+// edge with one triangle, or a corner on one): beside the sheet, where the faceted rule stands
+// for every normal field.
+bool onFreeBoundary(const TriangleSurface &surface, std::size_t t, const TriangleProjection &pr);
 
 // `besideFreeBoundary`, if given, says whether p is on the free boundary of an open sheet.
 ClosestPoint projectOnTriangle(const TriangleSurface &surface, std::size_t triangle, const Eigen::Vector3d &x,

@@ -43,6 +43,7 @@ struct TriangulatedObstacle::Search {
   Tree tree;
   std::vector<IndexedPoint> vertices;
   VertexTree vertexTree;
+  std::vector<Eigen::Vector3d> unitNormals;  // the implicit surface's N_i
 };
 
 TriangulatedObstacle::TriangulatedObstacle(TriangleSurface surface, NormalField field, double implicitRadius)
@@ -62,6 +63,7 @@ TriangulatedObstacle::TriangulatedObstacle(TriangleSurface surface, NormalField 
       search_->vertices.emplace_back(point(surface_.vertices()[v]), static_cast<int>(v));
     search_->vertexTree.insert(search_->vertices.begin(), search_->vertices.end());
     search_->vertexTree.build();
+    search_->unitNormals = unitVertexNormals(surface_);
   }
 }
 
@@ -89,13 +91,9 @@ std::optional<ClosestPoint> TriangulatedObstacle::closest(const Eigen::Vector3d 
 // the vertices' weights vanish (x farther from the surface than the support radius) the smoothed
 // normals answer: such a point is apart either way.
 ClosestPoint TriangulatedObstacle::onImplicitSurface(std::size_t triangle, const Eigen::Vector3d &x) const {
-  using F = TriangleProjection::Feature;
   const TriangleProjection pr =
       closestOnTriangle(x, surface_.corner(triangle, 0), surface_.corner(triangle, 1), surface_.corner(triangle, 2));
-  const bool onRim = pr.feature == F::Edge     ? surface_.onFreeBoundary(triangle, pr.index)
-                     : pr.feature == F::Vertex ? surface_.onFreeBoundary(surface_.triangles()[triangle][pr.index])
-                                               : false;
-  if (onRim) return projectOnTriangle(surface_, triangle, x);
+  if (onFreeBoundary(surface_, triangle, pr)) return projectOnTriangle(surface_, triangle, x);
   std::vector<IndexedPoint> found;
   search_->vertexTree.search(std::back_inserter(found),
                              CGAL::Fuzzy_sphere<VertexTraits>(point(x), implicitRadius_, 0.0));
@@ -104,7 +102,8 @@ ClosestPoint TriangulatedObstacle::onImplicitSurface(std::size_t triangle, const
   for (const IndexedPoint &p : found) neighbours.push_back(p.second);
   // The tree's order is not the vertices': sorted, the sums are the same on every rank and run.
   std::sort(neighbours.begin(), neighbours.end());
-  if (const auto cp = implicitSurfaceAt(surface_, neighbours, x, implicitRadius_)) return *cp;
+  if (const auto cp = implicitSurfaceAt(surface_.vertices(), search_->unitNormals, neighbours, x, implicitRadius_))
+    return *cp;
   return projectOnSmoothedTriangle(surface_, triangle, x);
 }
 

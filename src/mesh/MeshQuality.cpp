@@ -97,18 +97,21 @@ double scaledJacobian(const Eigen::Matrix<double, 8, 3> &X) {
   return minimum;
 }
 
+std::vector<double> scaledJacobians(const HexMesh &mesh) {
+  std::vector<double> quality;
+  quality.reserve(mesh.numElements());
+  for (std::size_t e = 0; e < mesh.numElements(); ++e)
+    quality.push_back(scaledJacobian(mesh.elementCoordinates(static_cast<ElementId>(e))));
+  return quality;
+}
+
 std::pair<double, double> scaledJacobianRange(const HexMesh &mesh) {
   if (mesh.numElements() == 0) {
     throw std::runtime_error("scaledJacobianRange: the mesh has no elements");
   }
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -lo;
-  for (std::size_t e = 0; e < mesh.numElements(); ++e) {
-    const double q = scaledJacobian(mesh.elementCoordinates(static_cast<ElementId>(e)));
-    lo = std::min(lo, q);
-    hi = std::max(hi, q);
-  }
-  return {lo, hi};
+  const std::vector<double> quality = scaledJacobians(mesh);
+  const auto [lo, hi] = std::minmax_element(quality.begin(), quality.end());
+  return {*lo, *hi};
 }
 
 }  // namespace glossa::mesh

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <utility>
+#include <vector>
 
 #include "mesh/HexMesh.hpp"
 
@@ -31,5 +32,7 @@ double scaledJacobian(const Eigen::Matrix<double, 8, 3> &X);
 // (min, max) over elements of scaledJacobian. Throws std::runtime_error for a mesh without
 // elements, whose range is undefined.
 std::pair<double, double> scaledJacobianRange(const HexMesh &mesh);
+// Every element's scaled Jacobian, in the mesh's element order.
+std::vector<double> scaledJacobians(const HexMesh &mesh);
 
 }  // namespace glossa::mesh
