@@ -11,7 +11,9 @@ tongue folded) is tabulated up to its last converged step, and says so.
         [--table bench/results/airway_tube_law_supine.csv]
 
 --deck tongue_pcrit runs inputs/paper/tongue_pcrit_{posture}.xml instead: the same ramp, with the
-lateral walls and the implicit palate surface of the Pcrit decks (doc/airway.md).
+lateral walls and the implicit palate surface of the Pcrit decks (doc/airway.md), their closing
+pressure search switched off (Airway/closing pressure load empty), so that the ramp goes on past
+their 5 mm^2 closure.
 
 Writes the table: time [s], suction at P_P [Pa and cmH2O], smallest area [mm^2], its section and
 arc length [mm], contact area [mm^2], closed; and prints it.
@@ -44,7 +46,8 @@ def main(argv):
     start = time.time()
     run = subprocess.run([args.glossa, "run", deck, "--quiet", "--output", out,
                           "--set", f"Loads/airway pressure/pressure={-args.suction}",
-                          "--set", f"Time/step size={args.step}"])
+                          "--set", f"Time/step size={args.step}"]
+                         + (["--set", "Airway/closing pressure load="] if args.deck == "tongue_pcrit" else []))
     seconds = time.time() - start
     with open(os.path.join(out, "airway.csv")) as f:
         rows = list(csv.DictReader(f))

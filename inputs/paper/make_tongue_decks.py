@@ -640,7 +640,8 @@ for posture, g in POSTURES:
          "control.\n" + COMMON + FLOW_BREATHING.replace("{posture}", posture) + CONTROLLED + GA + gravity,
          {}, control=CONTROLLERS["ga"][1], **common)
 
-PCRIT_SUCTION = -3000.0
+PCRIT_SUCTION = -4500.0
+PCRIT_CLOSING_AREA = 5e-6  # m^2: the coarse tongue's closure (doc/airway.md, "Closure on the coarse tongue")
 PCRIT = f"""
 The airway's closing pressure Pcrit (doc/airway.md, "Pcrit"): the lumen of airway_{{posture}}.xml
 (20 sections between 'airway' and palate8.obj), the palate a frictionless penalty contact of
@@ -652,15 +653,19 @@ ramped over [0, 1] s, then the airway suction, linear from 0 at P_A to {PCRIT_SU
 [1, 2] s in steps of 0.125 s. Lateral walls 12.5 mm either side of the midsagittal plane (a
 25 mm wide oropharynx, within the 20 to 35 mm of measured airways) bound every section's width,
 which the tongue's airway faces and the wall sheet, 40 to 60 mm wide, would otherwise set. The
-run raises the suction until a section closes (area below 1 mm^2, or the tongue on the wall
+run raises the suction until a section closes (area below 5 mm^2, or the tongue on the wall
 across the section's width), then bisects from the last open state to a bracket of 0.1 cmH2O;
-summary.json: pcrit."""
+summary.json: pcrit. 5 mm^2, not 1: on this coarse mesh the lumen levels off at 3 to 4 mm^2, a
+sheet about 0.15 mm thick across the section that the tongue's flat faces, 5 to 8 mm across,
+cannot press into a wall curved across the section (doc/airway.md, "Closure on the coarse
+tongue"); 5 mm^2 is closure to the resolution of the mesh."""
 for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
     deck(f"tongue_pcrit_{posture}", f"The tongue's airway closing pressure, {posture}.\n" + COMMON +
          PCRIT.replace("{posture}", posture) + f"\nGravity {posture}: along {vec(g)} in this mesh's axes.",
          {}, gravity=g, pressure=PCRIT_SUCTION, end_time=2.0, step=0.125, reference="s8_1/reference_inverse.txt",
          face_sets=PALATE_SIDE, contact={"palate": {**PALATE_CONTACT["palate"], "normal field": ("string", "implicit")}},
          airway={**AIRWAY_SECTION, "closing pressure load": ("string", "airway pressure"),
+                 "closing area": ("double", PCRIT_CLOSING_AREA),
                  "lateral half-width": ("double", 0.0125)},
          output={"fields": ("bool", "false")})
 TWITCH = """
