@@ -2,14 +2,21 @@
 """The controlled tongue (paper §8.5, Figs. 11-13; doc/tongue.md, s8_5), run on demand:
 
   /usr/bin/python3 bench/tongue_control.py [--glossa build/glossa] [--runs DIR] [--only NAME,...]
-                                           [--ga-ranks 2] [--force] [--check] [--plot]
+                                           [--mesh coarse|medium] [--ga-ranks 2] [--gradient-ranks 1]
+                                           [--force] [--check] [--plot]
 
 Runs the s8_5 decks of inputs/paper/ on the coarse tongue (passive, GA and gradient controller,
 upright and supine; the GA with the paper's binary genes upright, for the record) and the
 pressure sweep of §8.5.1 (the supine gradient deck at p_max = 0,
 200, 350 and 500 Pa, every group searched at every step, effort weight 2e-4 m), each into RUNS/<name>/ (default bench/results/tongue_control/; traces,
 activation, controls and summary, no fields). A run whose summary says it finished is reused
-unless --force. The GA runs on --ga-ranks ranks with one control group per rank.
+unless --force. The GA runs on --ga-ranks ranks with one control group per rank, the gradient
+controller and the passive runs on --gradient-ranks ranks (one control group: the ranks share each
+solve).
+
+--mesh medium runs the same decks on the medium tongue (Mesh/File/refine = 1, 20,097 unknowns) from
+its own zero-strain configuration (inputs/paper/s8_1/reference_inverse_refine1.txt), into
+bench/results/tongue_control_medium/ and tongue_control_medium.csv by default.
 
 Writes bench/results/tongue_control.csv: per run the steps, displacement solves (candidates) in
 all and per step (mean and largest), seconds per solve (wall time over solves), wall time and
@@ -37,6 +44,10 @@ PAPER = os.path.join(ROOT, "inputs", "paper")
 CYCLES_START, PERIOD, EXPONENT = 1.25, 2.5, 1.75  # eq. 27 as the decks give it
 END = 8.75
 SWEEP = (0, 200, 350, 500)  # p_max [Pa] of §8.5.1
+# The meshes: the deck's coarse tongue, or it refined once from its own zero-strain configuration
+# (glossa zero-strain on s8_1_upright.xml refined once; doc/tongue.md, s8_1).
+MESHES = {"coarse": [],
+          "medium": ["Mesh/File/refine=1", "Mesh/reference coordinates file=s8_1/reference_inverse_refine1.txt"]}
 # The paper's figures (§8.5): mean +- half-range of the distance from the reference, mm.
 PAPER_TABLE = {("supine", "P_P"): (1.29, 0.16), ("supine", "P_A"): (2.20, 0.30),
                ("upright", "P_A"): (1.42, 0.39), ("upright", "P_P"): (0.72, 0.23)}
@@ -78,14 +89,16 @@ def finished(directory):
         return False
 
 
-def execute(glossa, name, deck, sets, controller, directory, ga_ranks):
+def execute(glossa, name, deck, sets, controller, directory, ga_ranks, gradient_ranks=1):
     cmd = [glossa, "run", os.path.join(PAPER, deck), "--output", directory, "--quiet",
            "--set", "Output/fields=false"]
     for s in sets:
         cmd += ["--set", s]
+    mpi = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np"]
     if controller == "GA" and ga_ranks > 1:
-        cmd = ["mpiexec", "--allow-run-as-root", "--oversubscribe", "-np", str(ga_ranks)] + cmd + \
-              ["--control-groups", str(ga_ranks)]
+        cmd = mpi + [str(ga_ranks)] + cmd + ["--control-groups", str(ga_ranks)]
+    elif controller != "GA" and gradient_ranks > 1:
+        cmd = mpi + [str(gradient_ranks)] + cmd
     print("running", name, ":", " ".join(cmd), flush=True)
     subprocess.run(cmd, check=True)
 
@@ -125,7 +138,7 @@ def summarise(name, controller, posture, p_max, directory, ga_ranks):
         s = json.load(f)
     steps = s["steps"]
     row = {"run": name, "controller": controller, "posture": posture, "p_max_Pa": p_max,
-           "ranks": s["ranks"], "control_groups": s.get("control_groups", 1), "steps": len(steps),
+           "dofs": s.get("dofs"), "ranks": s["ranks"], "control_groups": s.get("control_groups", 1), "steps": len(steps),
            "wall_s": round(s["wall_seconds"], 1), "assembly_s": round(s["assembly_seconds"], 1),
            "preconditioner_setup_s": round(s["preconditioner_setup_seconds"], 1),
            "krylov_s": round(s["linear_solve_seconds"], 1)}
@@ -408,18 +421,26 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--glossa", default=os.path.join(ROOT, "build", "glossa"),
                    help="the solver (default: build/glossa; --plot also asks it for the f_cL curve)")
-    p.add_argument("--runs", default=os.path.join(ROOT, "bench", "results", "tongue_control"),
-                   help="directory of the runs, one subdirectory each (default: bench/results/tongue_control/)")
-    p.add_argument("--table", default=os.path.join(ROOT, "bench", "results", "tongue_control.csv"),
-                   help="the CSV to write (default: bench/results/tongue_control.csv)")
+    p.add_argument("--mesh", default="coarse", choices=sorted(MESHES),
+                   help="the tongue: coarse (the decks' own) or medium (refined once, its own zero-strain configuration)")
+    p.add_argument("--runs", default=None,
+                   help="directory of the runs, one subdirectory each (default: bench/results/tongue_control/, "
+                        "tongue_control_medium/ for --mesh medium)")
+    p.add_argument("--table", default=None,
+                   help="the CSV to write (default: bench/results/tongue_control.csv, tongue_control_medium.csv)")
     p.add_argument("--only", default="", help="comma-separated run names (default: all)")
     p.add_argument("--ga-ranks", default=2, type=int, help="ranks (one control group each) of the GA runs")
+    p.add_argument("--gradient-ranks", default=1, type=int,
+                   help="ranks (sharing each solve) of the gradient controller's and the passive runs")
     p.add_argument("--force", action="store_true", help="rerun runs that have already finished")
     p.add_argument("--no-run", action="store_true", help="only summarise, plot and check existing runs")
     p.add_argument("--check", action="store_true", help="assert the expected trends; exit 1 if one fails")
     p.add_argument("--plot", action="store_true", help="draw doc/figures/s8_5_fig11/12a/12b/13.png")
     p.add_argument("--tables", action="store_true", help="print the markdown table of doc/tongue.md")
     args = p.parse_args()
+    stem = "tongue_control" + ("" if args.mesh == "coarse" else "_" + args.mesh)
+    args.runs = args.runs or os.path.join(ROOT, "bench", "results", stem)
+    args.table = args.table or os.path.join(ROOT, "bench", "results", stem + ".csv")
     only = set(filter(None, args.only.split(",")))
     directories, rows = {}, []
     for name, deck, sets, controller, posture, p_max in runs():
@@ -427,7 +448,8 @@ def main():
             continue
         directory = os.path.join(args.runs, name)
         if not args.no_run and (args.force or not finished(directory)):
-            execute(args.glossa, name, deck, sets, controller, directory, args.ga_ranks)
+            execute(args.glossa, name, deck, sets + MESHES[args.mesh], controller, directory, args.ga_ranks,
+                    args.gradient_ranks)
         if finished(directory):
             directories[name] = directory
             rows.append(summarise(name, controller, posture, p_max, directory, args.ga_ranks))

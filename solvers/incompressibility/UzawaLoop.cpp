@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -20,7 +21,8 @@ UzawaLoop::UzawaLoop(const assembly::ResultEvaluator &results, const NewtonSolve
     : results_(results), newton_(newton), augmented_(s.method == IncompressibilityMethod::augmentedLagrangian),
       mixed_(s.method == IncompressibilityMethod::mixed), augmentation_(augmentation), tolerance_(s.dilatationTolerance),
       maxIterations_(s.maximumUzawaIterations), inexact_(augmented_ && s.inexactUzawa),
-      innerTolerance_(s.innerTolerance), innerLinearTolerance_(s.innerLinearTolerance) {
+      innerTolerance_(s.innerTolerance), innerLinearTolerance_(s.innerLinearTolerance),
+      acceleration_(s.multiplierAcceleration), andersonDepth_(s.andersonDepth) {
   const model::Scene &scene = results.scene();
   if (augmentation.tissues() != scene.tissues.size())
     throw std::invalid_argument("UzawaLoop: an augmentation of " + std::to_string(augmentation.tissues()) +
@@ -128,6 +130,15 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
   };
   bool tight = !inexact_;
   std::vector<double> previousErrors; // after the last tight solve, per tissue
+  // Anderson's history of this loop's updates after tight solves (none: plain updates), and the
+  // error after the last tight solve that fed it.
+  std::optional<AndersonAcceleration> anderson;
+  if (accelerates())
+    anderson.emplace(andersonDepth_, [comm = results_.assembler().layout().comm()](double *values, int count) {
+      std::vector<double> local(values, values + count);
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, count, local.data(), values);
+    });
+  double lastFedError = std::numeric_limits<double>::infinity();
   for (int k = 1; k <= (measuresPhysicalLaw() || augmentedContact_ || outer ? maxIterations_ : 1); ++k) {
     newton_.model().setMultipliers(lambda);
     NewtonResult n = tight ? newton_.solve(u, NewtonSolver::ToleranceRule(tightTolerance), onNewton)
@@ -158,6 +169,8 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
       result.outerFailed = true;
       return result;
     }
+    // Other loads or contact multipliers: another map, whose history Anderson's would mix in.
+    if (anderson && outerVerdict == OuterVerdict::updated) anderson->reset();
     if (outerVerdict == OuterVerdict::updated && volumeMet && gapMet) {
       // Only the outer condition's loads moved: the next solve is tight. Loose solves while the
       // loads move (as for the multipliers' first update) were measured on the supine tongue's
@@ -180,7 +193,10 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     }
     // lambda_q <- max(0, lambda_q - eps g_q) at the recorded gaps, beside the volume update: each
     // multiplier takes the pressure its point carried, so the next solve needs less penetration.
-    if (!gapMet && assembly::updateContactMultipliers(results_.scene(), result.contacts)) ++result.contactUpdates;
+    if (!gapMet && assembly::updateContactMultipliers(results_.scene(), result.contacts)) {
+      ++result.contactUpdates;
+      if (anderson) anderson->reset();
+    }
     if (volumeMet) {
       tight = true; // only the contacts move: the volume multipliers stay where they satisfy the law
       continue;
@@ -204,7 +220,17 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     // Lambda_e <- beta p_e (p_e = U_t'(theta_e) + Lambda_e; for nu = 0.5, beta = 1 and this is
     // Lambda_e + kappa_AL (theta_e - 1) to first order): the multiplier takes over the element
     // pressure, so the next solve needs less volume change to carry it (AugmentedLagrangianRule).
-    lambda = nextMultipliers(fields);
+    if (!anderson) {
+      lambda = nextMultipliers(fields);
+      continue;
+    }
+    // The loose first solve feeds the history too: its iterate is u(lambda) only to 1e-2 of the
+    // load, but the secant it gives is good enough to start from (supine gradient deck to 2.5 s:
+    // 220 factorisations against 272 without it and 359 with plain updates). An accelerated update
+    // that did not lower the error restarts the history (a plain step from here).
+    if (!(result.dilatation.max < lastFedError)) anderson->reset();
+    lastFedError = result.dilatation.max;
+    lambda = anderson->next(lambda, nextMultipliers(fields));
   }
   return result;
 }

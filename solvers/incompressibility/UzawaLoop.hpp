@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "assembly/ResultEvaluator.hpp"
+#include "solvers/incompressibility/AndersonAcceleration.hpp"
 #include "solvers/incompressibility/Augmentation.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
 #include "solvers/nonlinear/SolveStatistics.hpp"
@@ -68,7 +69,8 @@ public:
   // (every stored scene) and tissues without active fibres (the thick sphere near its limit
   // point, where Uzawa slows for another reason) are never touched. Off under a controller (set
   // false by its owner): a raise inside one candidate's solve would change the others', and GA
-  // control groups solving different candidates would no longer agree.
+  // control groups solving different candidates would no longer agree. There the multiplier
+  // update is accelerated instead (Incompressibility/multiplier acceleration = auto).
   static constexpr double kSlowContraction = 0.5, kAugmentationGrowth = 10.0, kMaximumPenaltyRatio = 1e5;
   static constexpr int kSlowSolves = 6;
   void allowKappaRaises(bool allow) { allowRaises_ = allow; }
@@ -104,6 +106,13 @@ private:
   bool inexact_;              // Uzawa acceleration = inexact inner solves
   double innerTolerance_;     // their relative residual tolerance
   double innerLinearTolerance_; // their Krylov solves' largest relative tolerance
+  MultiplierAcceleration acceleration_; // Anderson's update: always, never, or where raises are off
+  int andersonDepth_;
+  bool accelerates() const {
+    return augmented_ && !mixed_ &&
+           (acceleration_ == MultiplierAcceleration::anderson ||
+            (acceleration_ == MultiplierAcceleration::automatic && !allowRaises_));
+  }
 };
 
 } // namespace glossa::solvers

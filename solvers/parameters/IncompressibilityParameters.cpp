@@ -47,6 +47,16 @@ Teuchos::ParameterList incompressibilityParameters() {
                     "ranks (iterative against direct) within 3e-7 of each other where the Newton "
                     "forcing's 1e-2 let them differ by 1.1e-5 (doc/incompressibility.md)",
                     io::Range::open(0.0, 1.0));
+  io::declareString(p, "multiplier acceleration", "auto",
+                    "augmented Lagrangian: none (each update sets the multipliers to beta p, the plain Uzawa "
+                    "step), Anderson (each update combines it with the last 'Anderson depth' ones, Walker and "
+                    "Ni 2011: the slow modes of active fibres are removed in a few updates) or auto (Anderson "
+                    "under a controller, whose candidate solves may not raise kappa_AL, none elsewhere: the "
+                    "supine gradient deck to 2.5 s takes 220 factorisations instead of 359, 0.62x the CPU "
+                    "time; doc/incompressibility.md, 'Accelerating the multiplier update')",
+                    {"auto", "none", "Anderson"});
+  io::declareInt(p, "Anderson depth", 3, "multiplier acceleration = Anderson: the earlier updates combined",
+                 io::Range::closed(1, 20));
   return p;
 }
 
@@ -62,6 +72,11 @@ IncompressibilityParameters parseIncompressibilityParameters(const Teuchos::Para
   p.inexactUzawa = s.get<std::string>("Uzawa acceleration") == "inexact";
   p.innerTolerance = s.get<double>("inner tolerance");
   p.innerLinearTolerance = s.get<double>("inner linear tolerance");
+  const std::string acceleration = s.get<std::string>("multiplier acceleration");
+  p.multiplierAcceleration = acceleration == "Anderson" ? MultiplierAcceleration::anderson
+                             : acceleration == "none"   ? MultiplierAcceleration::none
+                                                        : MultiplierAcceleration::automatic;
+  p.andersonDepth = s.get<int>("Anderson depth");
   return p;
 }
 

@@ -8,6 +8,9 @@
 namespace glossa::solvers {
 
 enum class IncompressibilityMethod { augmentedLagrangian, penalty, mixed };
+// Anderson acceleration of the multiplier update: where the loop may not raise kappa_AL (under a
+// controller: UzawaLoop::allowKappaRaises), always, or never.
+enum class MultiplierAcceleration { automatic, anderson, none };
 
 struct IncompressibilityParameters {
   IncompressibilityMethod method = IncompressibilityMethod::augmentedLagrangian;
@@ -17,6 +20,8 @@ struct IncompressibilityParameters {
   bool inexactUzawa = true;          // Uzawa acceleration = inexact
   double innerTolerance = 1e-2;      // the inexact solve's relative residual
   double innerLinearTolerance = 1e-3; // at most, of each of its Krylov solves
+  MultiplierAcceleration multiplierAcceleration = MultiplierAcceleration::automatic;
+  int andersonDepth = 3;              // the pairs Anderson's update keeps
 };
 
 Teuchos::ParameterList incompressibilityParameters();
