@@ -132,12 +132,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
   std::vector<double> previousErrors; // after the last tight solve, per tissue
   // Anderson's history of this loop's updates after tight solves (none: plain updates), and the
   // error after the last tight solve that fed it.
-  std::optional<AndersonAcceleration> anderson;
-  if (accelerates())
-    anderson.emplace(andersonDepth_, [comm = results_.assembler().layout().comm()](double *values, int count) {
-      std::vector<double> local(values, values + count);
-      Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, count, local.data(), values);
-    });
+  std::optional<AndersonAcceleration> anderson = multiplierAcceleration();
   double lastFedError = std::numeric_limits<double>::infinity();
   for (int k = 1; k <= (measuresPhysicalLaw() || augmentedContact_ || outer ? maxIterations_ : 1); ++k) {
     newton_.model().setMultipliers(lambda);
@@ -233,6 +228,14 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     lambda = anderson->next(lambda, nextMultipliers(fields));
   }
   return result;
+}
+
+std::optional<AndersonAcceleration> UzawaLoop::multiplierAcceleration() const {
+  if (!accelerates()) return std::nullopt;
+  return AndersonAcceleration(andersonDepth_, [comm = results_.assembler().layout().comm()](double *values, int count) {
+    std::vector<double> local(values, values + count);
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, count, local.data(), values);
+  });
 }
 
 std::vector<double> UzawaLoop::nextMultipliers(const assembly::ElementFields &fields) const {

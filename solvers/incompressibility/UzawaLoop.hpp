@@ -10,6 +10,7 @@
 // gap error exceeds the gap tolerance, and the loop ends when both tolerances are met.
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "assembly/ResultEvaluator.hpp"
@@ -108,6 +109,9 @@ private:
   double innerLinearTolerance_; // their Krylov solves' largest relative tolerance
   MultiplierAcceleration acceleration_; // Anderson's update: always, never, or where raises are off
   int andersonDepth_;
+  // A fresh Anderson history for one loop, its sums over the ranks of the assembly (none: plain
+  // updates).
+  std::optional<AndersonAcceleration> multiplierAcceleration() const;
   bool accelerates() const {
     return augmented_ && !mixed_ &&
            (acceleration_ == MultiplierAcceleration::anderson ||
