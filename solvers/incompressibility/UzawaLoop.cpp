@@ -130,8 +130,8 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
   };
   bool tight = !inexact_;
   std::vector<double> previousErrors; // after the last tight solve, per tissue
-  // Anderson's history of this loop's updates after tight solves (none: plain updates), and the
-  // error after the last tight solve that fed it.
+  // Anderson's history of this loop's multiplier updates (none: plain updates), and the
+  // dilatation error after the last solve that fed it.
   std::optional<AndersonAcceleration> anderson = multiplierAcceleration();
   double lastFedError = std::numeric_limits<double>::infinity();
   for (int k = 1; k <= (measuresPhysicalLaw() || augmentedContact_ || outer ? maxIterations_ : 1); ++k) {
