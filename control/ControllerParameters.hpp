@@ -44,6 +44,17 @@ struct ControllerParameters {
   // sum_p |r_p|^2 + epsilon^2 sum_M u_M^2 (the residual stacked with epsilon u). 0: eq. 25 alone.
   double effortWeight = 0.0;
   bool verifySensitivities = false;          // gradient: check S against differences of full solves
+  // gradient: a candidate's solve starts from the accepted state moved along its sensitivities,
+  // x_a + (dx/du)(u - u_a), with the accepted state's multipliers, instead of from the step's
+  // start (a failed start there is retried from the step's start). The GA's candidates always start
+  // from the step's start, so that control groups agree (doc/control.md, "Where a candidate starts").
+  bool predictedStart = true;
+  // gradient: kappa / mu of the sensitivities' tangent under the augmented Lagrangian: the physical bulk
+  // modulus capped at this ratio times mu, the multipliers following the pressures (the converged
+  // loop's linearisation, to order S / (ratio mu), S an element's own stiffness against a volume
+  // change; doc/control.md, "The sensitivities"). 0: the inner solves' tangent, kappa_t at fixed
+  // multipliers (an error of order S / kappa_AL), which the GA's prediction seed always uses. [0, 1e8]
+  double sensitivityPenaltyRatio = 1e3;
   // The airway term (doc/control.md, "The airway term"): w_A max(0, A_open - A) joins eq. 25 in
   // the objective, A the smallest lumen area of the candidate's state (doc/airway.md); w_A [1/m]
   // makes it a length, as eq. 25 is. The gradient controller's residual gains the row itself and

@@ -8,10 +8,11 @@
 // W the tangent at the converged state (NewtonSolver::solveTangent: one Krylov solve per input,
 // one preconditioner for all). DfDp comes from the model by finite differences in the groups'
 // activations times d alpha / d u of the backward-Euler activation step (ActivationDynamics).
-// The augmented Lagrange multipliers (p1) are held fixed: with the tangent's kappa_t = kappa
-// kappa_AL / (kappa + kappa_AL) the volumetric response is that of kappa_t, a relative error of
-// order mu / kappa_AL (about 3 % at the default kappa_AL = 30 mu, which is never raised under a
-// controller) which the controller's full solves absorb.
+// W is the tangent of the model's volumetric laws and multipliers (p1) as they stand. With the
+// inner solves' (kappa_t = kappa kappa_AL / (kappa + kappa_AL) at fixed multipliers) the volumetric
+// response is that of kappa_t, off from the converged Uzawa loop's by order mu / kappa_AL (3 % on
+// the tongue); the gradient controller therefore puts the constrained tangent's laws and
+// multipliers in place first (ConstrainedTangent, ControlledSteps::keptSensitivity).
 
 #include <vector>
 

@@ -46,9 +46,9 @@ void Augmentation::setRatio(std::size_t tissue, double ratio) {
     tangent_[tissue] = physical_[tissue].withKappa(rules_[tissue].tangentKappa());
 }
 
-materials::VolumetricEnergy Augmentation::constrainedLaw(std::size_t tissue) const {
+materials::VolumetricEnergy Augmentation::constrainedLaw(std::size_t tissue, double ratio) const {
   const materials::VolumetricEnergy &law = physical_.at(tissue);
-  return law.withKappa(std::min(law.kappa(), kConstrainedRatio * mu_[tissue]));
+  return law.withKappa(std::min(law.kappa(), ratio * mu_[tissue]));
 }
 
 std::vector<materials::VolumetricEnergy> Augmentation::exchangeTangentLaws(std::vector<materials::VolumetricEnergy> laws) {

@@ -47,8 +47,9 @@ public:
   // The law of the constrained problem that the Uzawa loop converges to, for its tangent
   // (ConstrainedTangent): the physical one, its bulk modulus capped at kConstrainedRatio mu
   // (infinite for nu = 0.5; the cap moves a limit point by about 1e-5 of its load, below).
+  // `ratio`: another cap (ratio mu), e.g. the controller's sensitivities' (ControllerParameters).
   static constexpr double kConstrainedRatio = 1e4;
-  materials::VolumetricEnergy constrainedLaw(std::size_t tissue) const;
+  materials::VolumetricEnergy constrainedLaw(std::size_t tissue, double ratio = kConstrainedRatio) const;
   // Puts `laws` (one per tissue) in the tangent's place and returns the laws it held; the storage
   // the assembly reads stays the same. For ConstrainedTangent, which puts them back.
   std::vector<materials::VolumetricEnergy> exchangeTangentLaws(std::vector<materials::VolumetricEnergy> laws);

@@ -5,12 +5,12 @@
 namespace glossa::solvers {
 
 ConstrainedTangent::ConstrainedTangent(Augmentation &augmentation, const assembly::ResultEvaluator &results,
-                                       const assembly::Vector &u, const std::vector<double> &lambda)
+                                       const assembly::Vector &u, const std::vector<double> &lambda, double ratio)
     : augmentation_(augmentation) {
   // p_e and theta_e with the augmented laws, before they are exchanged.
   const assembly::ElementFields fields = results.elementDilatations(u, lambda);
   std::vector<materials::VolumetricEnergy> constrained;
-  for (std::size_t t = 0; t < augmentation.tissues(); ++t) constrained.push_back(augmentation.constrainedLaw(t));
+  for (std::size_t t = 0; t < augmentation.tissues(); ++t) constrained.push_back(augmentation.constrainedLaw(t, ratio));
   const model::Scene &scene = results.scene();
   const auto &elements = results.assembler().layout().localElements;
   multipliers_.resize(elements.size());

@@ -18,16 +18,16 @@
 
 #include "assembly/ResultEvaluator.hpp"
 #include "materials/VolumetricEnergy.hpp"
+#include "solvers/incompressibility/Augmentation.hpp"
 
 namespace glossa::solvers {
 
-class Augmentation;
-
 class ConstrainedTangent {
 public:
-  // At the state (u, lambda) of the assembler behind `results`. Collective (element dilatations).
+  // At the state (u, lambda) of the assembler behind `results`, the physical bulk modulus capped
+  // at `ratio` mu. Collective (element dilatations).
   ConstrainedTangent(Augmentation &augmentation, const assembly::ResultEvaluator &results, const assembly::Vector &u,
-                     const std::vector<double> &lambda);
+                     const std::vector<double> &lambda, double ratio = Augmentation::kConstrainedRatio);
   ~ConstrainedTangent();
   ConstrainedTangent(const ConstrainedTangent &) = delete;
   ConstrainedTangent &operator=(const ConstrainedTangent &) = delete;

@@ -83,6 +83,17 @@ ParameterList controlParameters() {
   io::declareBool(p, "verify sensitivities", false,
                   "gradient: also difference two full solves per input (step 1e-3) and report the largest "
                   "relative difference from the tangent's sensitivity (summary.json, sensitivity_check)");
+  io::declareDouble(p, "sensitivity penalty ratio", 1e3, "",
+                    "gradient, augmented Lagrangian: the sensitivities' tangent carries the physical bulk modulus "
+                    "capped at this times mu, with the multipliers following the pressures (the converged loop's "
+                    "linearisation; doc/control.md, 'The sensitivities'); 0: the Newton solves' own tangent at "
+                    "fixed multipliers (an error of order mu / kappa_AL), which the GA's prediction seed uses",
+                    io::Range::closed(0.0, 1e8));
+  io::declareBool(p, "predicted start", true,
+                  "gradient: a candidate's solve starts from the accepted candidate's state moved along its "
+                  "sensitivities to the new inputs, with its multipliers, instead of from the step's start "
+                  "(retried from there if it fails; doc/control.md, 'Where a candidate starts'); the GA's "
+                  "candidates always start from the step's start");
   io::declareInt(p, "seed", 1, "random seed (same seed and rank count: the same run)", io::Range::closed(0, 2147483647));
   return p;
 }
@@ -137,6 +148,8 @@ ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
   p.type = c.get<std::string>("type") == "gradient" ? control::ControllerType::gradient
                                                     : control::ControllerType::geneticAlgorithm;
   p.verifySensitivities = c.get<bool>("verify sensitivities");
+  p.predictedStart = c.get<bool>("predicted start");
+  p.sensitivityPenaltyRatio = c.get<double>("sensitivity penalty ratio");
   const std::string prediction = c.get<std::string>("prediction seed");
   p.predictionSeed = prediction == "linear extrapolation" ? control::PredictionSeed::extrapolation
                      : prediction == "Gauss-Newton step"  ? control::PredictionSeed::gaussNewtonStep

@@ -13,6 +13,7 @@
 #include "model/Scene.hpp"
 #include "solvers/control/CommControlGroups.hpp"
 #include "solvers/control/ControlSensitivity.hpp"
+#include "solvers/incompressibility/ConstrainedTangent.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 #include "solvers/run/LoadStepper.hpp"
 
@@ -21,9 +22,10 @@ namespace glossa::solvers {
 ControlledSteps::ControlledSteps(const ControlSetup &setup, const StepSolverParts &parts, const StepSolver &solver,
                                  const LoadStepper &stepper, const CommControlGroups &groups,
                                  const std::filesystem::path &dir, std::optional<std::uintmax_t> resumeControlsAt,
-                                 bool writer, bool talk, std::shared_ptr<const model::AirwayOutput> airway)
+                                 bool writer, bool talk, std::shared_ptr<const model::AirwayOutput> airway,
+                                 Augmentation *augmentation)
     : setup_(setup), parts_(parts), solver_(solver), stepper_(stepper), last_(stepper.committed()),
-      kept_(stepper.committed()), airway_(std::move(airway)) {
+      kept_(stepper.committed()), airway_(std::move(airway)), augmentation_(augmentation) {
   if (writer)
     controls_ = std::make_unique<io::KeyedCsvWriter>(
         dir / "controls.csv", "group",
@@ -61,9 +63,27 @@ Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const std::vector<double> &a
 }
 
 CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
-  last_.assign(stepper_.stepStart());
   const StepTrial &trial = stepper_.trial();
-  StepAttempt a = solver_.solve(trial.time, trial.dt, last_, true, stepInputs(inputs, trial.time));
+  lastInputs_ = inputs;
+  StepAttempt a;
+  UzawaResult predicted; // the counts of a predicted start that failed
+  if (start_.ready()) {
+    last_.assign(kept_);
+    start_.predict(inputs, parts_.uzawa, last_);
+    a = solver_.solve(trial.time, trial.dt, last_, true, stepInputs(inputs, trial.time), keptLoadScale_);
+    // A start moved too far (an element turned inside out on the way) is no reason to fail: the
+    // step's start is tried as without a prediction, its counts added.
+    if (!a.ok) predicted = a.uzawa;
+  }
+  if (!start_.ready() || !a.ok) {
+    last_.assign(stepper_.stepStart());
+    a = solver_.solve(trial.time, trial.dt, last_, true, stepInputs(inputs, trial.time));
+    a.uzawa.solves += predicted.solves;
+    a.uzawa.newtonIterations += predicted.newtonIterations;
+    a.uzawa.linearIterations += predicted.linearIterations;
+    a.uzawa.contactUpdates += predicted.contactUpdates;
+  }
+  lastLoadScale_ = a.loadScale;
   CandidateSolve out;
   out.ok = a.ok;
   out.why = a.why;
@@ -84,13 +104,46 @@ double ControlledSteps::lumenArea(const std::vector<double> &uAll, int section) 
   return k >= 0 ? lumen.sections[static_cast<std::size_t>(k)].area() : std::numeric_limits<double>::quiet_NaN();
 }
 
-void ControlledSteps::keepLast() { kept_.assign(last_); }
+void ControlledSteps::keepLast() {
+  kept_.assign(last_);
+  keptInputs_ = lastInputs_;
+  keptLoadScale_ = lastLoadScale_;
+  start_.forget();
+}
+
+ControlPointSensitivity ControlledSteps::keptSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) {
+  const control::ControllerParameters &p = setup_.parameters;
+  const bool gradient = p.type == control::ControllerType::gradient;
+  const bool predicts = gradient && p.predictedStart;
+  const assembly::ResultEvaluator results(parts_.assembler);
+  parts_.model.setMultipliers(kept_.lambda);
+  // The GA's prediction seed keeps the inner solves' tangent: with the constrained one the supine
+  // GA's seeds moved its population where 39 of 42 candidates failed at t = 0.94 s (doc/control.md).
+  if (!augmentation_ || !gradient || !(p.sensitivityPenaltyRatio > 0.0)) {
+    ControlPointSensitivity s = controlPointSensitivity(parts_.newton, kept_.u, groups);
+    if (predicts) start_.record(inputs, groups, s.responses, {}, {});
+    return s;
+  }
+  // The converged loop's linearisation: the multipliers follow the pressures, so an element's
+  // volume change costs the physical bulk modulus (capped), not the inner solves' kappa_t.
+  std::vector<double> pressure = results.elementDilatations(kept_.u, kept_.lambda).pressure;
+  ControlPointSensitivity s;
+  {
+    const ConstrainedTangent constrained(*augmentation_, results, kept_.u, kept_.lambda, p.sensitivityPenaltyRatio);
+    parts_.model.setMultipliers(constrained.multipliers());
+    s = controlPointSensitivity(parts_.newton, kept_.u, groups);
+    if (predicts)
+      start_.record(inputs, groups, s.responses, std::move(pressure),
+                    elementPressureResponses(results, kept_.u, constrained.multipliers(), *s.responses));
+  }
+  parts_.model.setMultipliers(kept_.lambda);
+  return s;
+}
 
 InputSensitivity ControlledSteps::sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) {
   const StepTrial &trial = stepper_.trial();
   parts_.model.beginStep(trial.time, trial.dt, stepInputs(inputs, trial.time));
-  parts_.model.setMultipliers(kept_.lambda);
-  const auto s = controlPointSensitivity(parts_.newton, kept_.u, groups);
+  const ControlPointSensitivity s = keptSensitivity(inputs, groups);
   InputSensitivity out{s.dxdu, s.krylovIterations, {}};
   if (measuresLumen()) {
     // dA/du_M of the kept state's smallest section: a central difference of the lumen along the
@@ -123,9 +176,11 @@ void ControlledSteps::unpackKept(const std::vector<double> &state) {
   const assembly::ResultEvaluator results(parts_.assembler);
   results.scatterDisplacement(std::vector<double>(state.begin(), split), kept_.u);
   kept_.lambda = results.localElementValues(std::vector<double>(split, state.end()));
+  start_.forget();
 }
 
 void ControlledSteps::step(StepTrial &trial, int committedSteps) {
+  start_.forget(); // another step: the last one's responses are of its state
   trial.control = driver_->step(committedSteps, committedStretch_);
   if (!trial.control.found()) {
     trial.attempt.why = "no candidate input converged";

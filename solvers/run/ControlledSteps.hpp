@@ -16,6 +16,8 @@
 
 #include "solvers/control/ControlDriver.hpp"
 #include "solvers/parameters/ControlSection.hpp"
+#include "solvers/control/ControlSensitivity.hpp"
+#include "solvers/run/CandidateStart.hpp"
 #include "solvers/run/StepSolver.hpp"
 
 namespace glossa::io {
@@ -27,6 +29,7 @@ struct AirwayOutput;
 
 namespace glossa::solvers {
 
+class Augmentation;
 class CommControlGroups;
 class LoadStepper;
 
@@ -34,10 +37,12 @@ class ControlledSteps final : public ControlPlant {
 public:
   // `resumeControlsAt`: a restart's length of controls.csv. `writer`: this rank writes it.
   // `airway`: the deck's lumen, which the controller's airway term measures (null without one).
+  // `augmentation`: the augmented Lagrangian's, whose laws the sensitivities' tangent exchanges
+  // (null under another method).
   ControlledSteps(const ControlSetup &setup, const StepSolverParts &parts, const StepSolver &solver,
                   const LoadStepper &stepper, const CommControlGroups &groups, const std::filesystem::path &dir,
                   std::optional<std::uintmax_t> resumeControlsAt, bool writer, bool talk,
-                  std::shared_ptr<const model::AirwayOutput> airway = nullptr);
+                  std::shared_ptr<const model::AirwayOutput> airway = nullptr, Augmentation *augmentation = nullptr);
   ~ControlledSteps() override;
 
   // Searches the step's inputs; the winner's state and statistics become `trial`'s. Collective.
@@ -80,6 +85,17 @@ private:
   const StepSolver &solver_;
   const LoadStepper &stepper_;
   StepState last_, kept_;
+  // The inputs of the last solve and of the kept state; where the gradient controller's next
+  // candidate starts (ControllerParameters::predictedStart).
+  std::vector<double> lastInputs_, keptInputs_;
+  double lastLoadScale_ = 0.0, keptLoadScale_ = 0.0; // StepAttempt::loadScale of the last solve, of the kept one
+  CandidateStart start_;
+  Augmentation *augmentation_ = nullptr; // the augmented Lagrangian's (null: another method)
+  // The sensitivity at the kept state, with the physical bulk modulus capped at the parameters'
+  // ratio (ConstrainedTangent) under the augmented Lagrangian; records the start's prediction.
+  ControlPointSensitivity keptSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups);
+  // Moves last_ (the kept state on entry) along the kept responses to `inputs`.
+  void predictFromKept(const std::vector<double> &inputs);
   std::shared_ptr<const model::AirwayOutput> airway_;
   std::unique_ptr<ControlDriver> driver_;
   std::unique_ptr<io::KeyedCsvWriter> controls_;

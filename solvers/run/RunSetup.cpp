@@ -258,7 +258,11 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
     run->report->recordingOutputFailure([&] { // controls.csv
       run->controlled = std::make_unique<ControlledSteps>(run->control, run->stepSolverParts(), *run->solver,
                                                           *run->stepper, *run->groups, dir, resumeAt, run->root, run->detail,
-                                                          run->airway);
+                                                          run->airway,
+                                                          run->config.incompressibility.method ==
+                                                                  IncompressibilityMethod::augmentedLagrangian
+                                                              ? run->augmentation.get()
+                                                              : nullptr);
     });
   }
   return run;

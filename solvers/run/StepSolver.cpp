@@ -40,11 +40,11 @@ std::string failureReason(const StepAttempt &a) {
 } // namespace
 
 StepAttempt StepSolver::solve(double time, double dt, StepState &state, bool quiet,
-                              const std::vector<double> &inputs) const {
-  if (!parts_.airflow) return solveSolid(time, dt, state, quiet, inputs);
+                              const std::vector<double> &inputs, double loadScale) const {
+  if (!parts_.airflow) return solveSolid(time, dt, state, quiet, inputs, loadScale);
   return parts_.airflow->parameters().loop == input::AirflowLoop::uzawaLoop
-             ? solveCoupledInUzawaLoop(time, dt, state, quiet, inputs)
-             : solveCoupledAroundSolves(time, dt, state, quiet, inputs);
+             ? solveCoupledInUzawaLoop(time, dt, state, quiet, inputs, loadScale)
+             : solveCoupledAroundSolves(time, dt, state, quiet, inputs, loadScale);
 }
 
 namespace {
@@ -63,7 +63,7 @@ void takeCoupling(const AirflowStep &coupled, StepAttempt &attempt) {
 } // namespace
 
 StepAttempt StepSolver::solveCoupledInUzawaLoop(double time, double dt, StepState &state, bool quiet,
-                                                const std::vector<double> &inputs) const {
+                                                const std::vector<double> &inputs, double loadScale) const {
   const assembly::ResultEvaluator results(parts_.assembler);
   AirflowCoupling::StepCoupling coupling(*parts_.airflow, time, results.gatherDisplacement(state.u),
                                          progress_ && !quiet);
@@ -79,13 +79,13 @@ StepAttempt StepSolver::solveCoupledInUzawaLoop(double time, double dt, StepStat
     default: return UzawaLoop::OuterVerdict::failed;
     }
   };
-  out = solveSolid(time, dt, state, quiet, inputs, outer);
+  out = solveSolid(time, dt, state, quiet, inputs, loadScale, outer);
   takeCoupling(coupling.result(), out);
   return out;
 }
 
 StepAttempt StepSolver::solveCoupledAroundSolves(double time, double dt, StepState &state, bool quiet,
-                                                 const std::vector<double> &inputs) const {
+                                                 const std::vector<double> &inputs, double loadScale) const {
   const assembly::ResultEvaluator results(parts_.assembler);
   StepAttempt last;
   UzawaResult counted; // the coupling's earlier solves, added to the last one's counts
@@ -98,7 +98,7 @@ StepAttempt StepSolver::solveCoupledAroundSolves(double time, double dt, StepSta
           counted.linearIterations += last.uzawa.linearIterations;
           counted.contactUpdates += last.uzawa.contactUpdates;
         }
-        last = solveSolid(time, dt, state, quiet, inputs);
+        last = solveSolid(time, dt, state, quiet, inputs, loadScale);
         if (last.ok) uAll = results.gatherDisplacement(state.u);
         return last.ok;
       },
@@ -132,7 +132,8 @@ std::vector<std::vector<double>> StepSolver::sectionResponses(const assembly::Ve
 }
 
 StepAttempt StepSolver::solveSolid(double time, double dt, StepState &state, bool quiet,
-                                   const std::vector<double> &inputs, const UzawaLoop::OuterCondition &outer) const {
+                                   const std::vector<double> &inputs, double loadScale,
+                                   const UzawaLoop::OuterCondition &outer) const {
   StepAttempt out;
   if (keptScope_ == ReuseScope::step) parts_.newton.forgetLinearSolver();
   MumpsPreconditionerFactory::beginStep(); // fresh factors for each step, retry and candidate
@@ -141,12 +142,14 @@ StepAttempt StepSolver::solveSolid(double time, double dt, StepState &state, boo
   parts_.model.setMultipliers(state.lambda);
 
   // The Newton tolerance scales with the load: the external force and the step's initial
-  // residual, which the first Newton solve assembles anyway.
-  const double externalForce = parts_.assembler.externalForceNorm(time);
+  // residual, which the first Newton solve assembles anyway (or the caller's load scale, when it
+  // starts near the solution).
+  const double externalForce = std::max(parts_.assembler.externalForceNorm(time), loadScale);
   const double relative = parts_.newton.relativeResidualTolerance();
-  const NewtonSolver::ToleranceRule tolerance = [externalForce, relative](double initialResidualNorm) {
+  const NewtonSolver::ToleranceRule tolerance = [externalForce, relative, &out](double initialResidualNorm) {
     double reference = std::max(externalForce, initialResidualNorm);
     if (!(reference > 0.0)) reference = 1.0;
+    out.loadScale = reference;
     return relative * reference;
   };
 

@@ -49,8 +49,12 @@ public:
   // values are this step's, at the neural inputs `inputs` (one per muscle group; empty: the
   // deck's u(t)), which reach the model as its p2. `quiet`: no per-iteration output (a
   // controller's candidates). With airflow, the solve is coupled to the flow (AirflowCoupling):
-  // the solid is solved once per coupling iteration, from the last. Collective.
-  StepAttempt solve(double time, double dt, StepState &state, bool quiet, const std::vector<double> &inputs = {}) const;
+  // the solid is solved once per coupling iteration, from the last. `loadScale` [N]: the least
+  // force the Newton tolerance is relative to (it is also relative to the external force and the
+  // first residual; StepAttempt::loadScale): a start close to the solution, whose first residual
+  // is small, is then solved to the tolerance of the solve it was predicted from. Collective.
+  StepAttempt solve(double time, double dt, StepState &state, bool quiet, const std::vector<double> &inputs = {},
+                    double loadScale = 0.0) const;
   // A converged state in which material has crossed a symmetry plane is refused
   // (model/SymmetryPlanes.hpp): `attempt` then fails, saying where. Collective.
   void refuseInsideOut(const StepState &state, StepAttempt &attempt) const;
@@ -64,12 +68,12 @@ private:
   // One solve of the solid under the loads as they stand; `outer`: a condition iterated in its
   // Uzawa loop (the airflow's coupling).
   StepAttempt solveSolid(double time, double dt, StepState &state, bool quiet, const std::vector<double> &inputs,
-                         const UzawaLoop::OuterCondition &outer = {}) const;
+                         double loadScale, const UzawaLoop::OuterCondition &outer = {}) const;
   // The step coupled to the airflow, around whole solid solves or inside their Uzawa loop.
   StepAttempt solveCoupledAroundSolves(double time, double dt, StepState &state, bool quiet,
-                                       const std::vector<double> &inputs) const;
+                                       const std::vector<double> &inputs, double loadScale) const;
   StepAttempt solveCoupledInUzawaLoop(double time, double dt, StepState &state, bool quiet,
-                                      const std::vector<double> &inputs) const;
+                                      const std::vector<double> &inputs, double loadScale) const;
 
   // The displacement of every node per pascal on each airflow section's faces at the solved state
   // u: the tangent at u solved for the airflow load of each section alone (Newton's coupling

@@ -47,6 +47,7 @@ struct StepAttempt {
   bool unstable = false;            // converged, but past a limit point (S <= 0)
   nlohmann::json insideOut;         // converged inside out: where (model/SymmetryPlanes.hpp)
   AirflowStep airflow;              // a scene with airflow: the coupling (its solves' counts summed in `uzawa`)
+  double loadScale = 0.0;           // [N] what the Newton tolerance was relative to (StepSolver::solve)
 };
 
 // The step being attempted: to `time` by `dt`, its state the start on entry and the trial state

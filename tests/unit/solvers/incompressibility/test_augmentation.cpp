@@ -77,6 +77,10 @@ TEST(Augmentation, TheConstrainedLawsAreExchangedIntoTheTangentsStorageAndBack) 
   EXPECT_EQ(al.constrainedLaw(0).kappa(), kappa);
   EXPECT_EQ(al.constrainedLaw(1).kappa(), Augmentation::kConstrainedRatio * 2.0 * kMu);
   EXPECT_EQ(al.constrainedLaw(1).form(), VolumetricEnergy::Form::SimoTaylor);
+  // Another cap (the gradient controller's sensitivities): the lower of it and the physical law.
+  EXPECT_EQ(al.constrainedLaw(1, 1e3).kappa(), 1e3 * 2.0 * kMu);
+  EXPECT_EQ(al.constrainedLaw(0, 1e3).kappa(), 1e3 * kMu);
+  EXPECT_EQ(al.constrainedLaw(0, 1e5).kappa(), kappa);
   const std::vector<VolumetricEnergy> &held = al.tangentLaws(); // the assembly's reference
   const double kappaT0 = held[0].kappa(), kappaT1 = held[1].kappa();
   auto augmented = al.exchangeTangentLaws({al.constrainedLaw(0), al.constrainedLaw(1)});
