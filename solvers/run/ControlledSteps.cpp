@@ -14,6 +14,7 @@
 #include "solvers/control/CommControlGroups.hpp"
 #include "solvers/control/ControlSensitivity.hpp"
 #include "solvers/incompressibility/ConstrainedTangent.hpp"
+#include "solvers/linear/MumpsPreconditioner.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
 #include "solvers/run/LoadStepper.hpp"
 
@@ -131,6 +132,9 @@ ControlPointSensitivity ControlledSteps::keptSensitivity(const std::vector<doubl
   {
     const ConstrainedTangent constrained(*augmentation_, results, kept_.u, kept_.lambda, p.sensitivityPenaltyRatio);
     parts_.model.setMultipliers(constrained.multipliers());
+    // Fresh factors: the last solve's, of the inner tangent, precondition this one poorly (16
+    // block Krylov iterations per sensitivity on the tongue instead of 1-2).
+    MumpsPreconditionerFactory::beginNewtonSolve();
     s = controlPointSensitivity(parts_.newton, kept_.u, groups);
     if (predicts)
       start_.record(inputs, groups, s.responses, std::move(pressure),

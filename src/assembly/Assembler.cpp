@@ -235,7 +235,8 @@ std::vector<fem::MixedBase> Assembler::mixedBases(const Vector &u, const std::ve
 
 AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vector<double> &lambda,
                                    const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K,
-                                   BasePoint point, const ElementForceCorrection *correction) const {
+                                   BasePoint point, const ElementForceCorrection *correction,
+                                   const std::vector<char> *onlyElements) const {
   const mesh::HexMesh &mesh = scene_.mesh;
   const bool trialPoint = point == BasePoint::trial || K == nullptr;
   Vector uOverlap(layout_.overlapMap()), fOverlap(layout_.overlapMap());
@@ -257,6 +258,7 @@ AssemblyStatus Assembler::assemble(const Vector &u, double time, const std::vect
   {
     auto fData = fOverlap.getDataNonConst(0);
     for (std::size_t i = 0; i < layout_.localElements.size(); ++i) {
+      if (onlyElements && !(*onlyElements)[i]) continue;
       const auto e = layout_.localElements[i];
       const auto &hex = mesh.elements[e];
       const fem::NodeMatrix X = mesh.elementCoordinates(e);

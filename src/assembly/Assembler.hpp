@@ -96,11 +96,13 @@ public:
   // only) the pressure and dilatation are the three-field Newton iterates of fem::MixedBase, at
   // `point`. Without `bases` they are condensed exactly from u. A `correction` adds to each
   // element's force and tangent after its kernel (a dynamic run's energy-conserving step).
-  // Collective.
+  // `onlyElements`: the local elements to evaluate (null: all), for differences in a parameter
+  // that only some elements see, the loads still whole. Collective.
   AssemblyStatus assemble(const Vector &u, double time, const std::vector<double> &lambda,
                           const std::vector<fem::MixedBase> *bases, Vector *f, FEMatrix *K,
                           BasePoint point = BasePoint::byRequest,
-                          const ElementForceCorrection *correction = nullptr) const;
+                          const ElementForceCorrection *correction = nullptr,
+                          const std::vector<char> *onlyElements = nullptr) const;
 
   // Each local element that `which` admits, evaluated at the owned displacement u (with its
   // ghosts; u holds its prescribed values) and condensed exactly, handed to `visit` with its

@@ -394,7 +394,10 @@ void ModelEvaluator::evaluateInputDerivative(const Vector &x, double time, const
   // one-sided three-point differences, which keep alpha in [0, 1], in the group's trial
   // activation (the point laws and the external muscles re-solve their lambda_c at every
   // evaluation, so no analytic alpha-derivative is needed); step 1e-5, where the truncation
-  // O(h^2) and the round-off O(eps / h) of the residual's scale balance.
+  // O(h^2) and the round-off O(eps / h) of the residual's scale balance. Only the elements with a
+  // fibre family of the group are evaluated (the loads whole, for external muscles): the others'
+  // forces are the same numbers at every alpha and cancel (the weights sum to 0). On the tongue
+  // that is 4.5 element passes per sensitivity instead of 33.
   constexpr double h = 1e-5;
   const double weights[3] = {-1.5, 2.0, -0.5}; // d/da at a of f(a), f(a + s h), f(a + 2 s h)
   const auto D = Extract::getTpetraMultiVector(Teuchos::rcpFromRef(dfdp));
@@ -407,9 +410,11 @@ void ModelEvaluator::evaluateInputDerivative(const Vector &x, double time, const
     const double dalphadu = history_->trialActivationInputDerivative(g, input);
     const double side = alpha + 2.0 * h <= 1.0 ? 1.0 : -1.0;
     auto column = D->getVectorNonConst(static_cast<std::size_t>(g));
+    const std::vector<char> elements = groupElements(g);
     for (int k = 0; k < 3; ++k) {
       history_->setTrialActivation(g, alpha + side * k * h);
-      const auto status = assembler_->assemble(x, time, lambda, nullptr, &f, nullptr);
+      const auto status = assembler_->assemble(x, time, lambda, nullptr, &f, nullptr, Assembler::BasePoint::byRequest,
+                                               nullptr, &elements);
       if (!status.valid) {
         history_->setTrialActivation(g, alpha);
         throw std::runtime_error("DfDp: the state is inadmissible");
@@ -418,6 +423,19 @@ void ModelEvaluator::evaluateInputDerivative(const Vector &x, double time, const
     }
     history_->setTrialActivation(g, alpha);
   }
+}
+
+std::vector<char> ModelEvaluator::groupElements(int group) const {
+  const model::MuscleArchitecture &muscles = assembler_->scene().muscles;
+  const auto &local = assembler_->layout().localElements;
+  std::vector<char> in(local.size(), 0);
+  for (std::size_t i = 0; i < local.size(); ++i) {
+    const int region = muscles.elementRegion.empty() ? -1 : muscles.elementRegion[static_cast<std::size_t>(local[i])];
+    if (region < 0) continue;
+    const auto &families = muscles.regions[static_cast<std::size_t>(region)].familyGroup;
+    in[i] = std::find(families.begin(), families.end(), group) != families.end() ? 1 : 0;
+  }
+  return in;
 }
 
 bool ModelEvaluator::tangentIsCachedAt(const Vector &x, double time, const std::vector<double> &lambda) const {

@@ -134,6 +134,8 @@ private:
                      const Thyra::ModelEvaluatorBase::OutArgs<double> &out, double time) const;
   // The responses and derivatives an evaluation asked for, at its x, time and multipliers.
   void evaluateResponse(const Vector &x, const Thyra::ModelEvaluatorBase::OutArgs<double> &out) const;
+  // Per local element: whether it has a fibre family of muscle group `group`.
+  std::vector<char> groupElements(int group) const;
   void evaluateInputDerivative(const Vector &x, double time, const std::vector<double> &lambda,
                                const Thyra::VectorBase<double> *inputs, Thyra::MultiVectorBase<double> &dfdp) const;
   bool mixed_ = false;
