@@ -16,7 +16,7 @@ void ControllerParameters::validate() const {
   detail::requireInRange("effortWeight", effortWeight, 0.0, detail::kInf, false, true);
   detail::requireInRange("airwayWeight", airwayWeight, 0.0, detail::kInf, false, true);
   detail::requireInRange("airwayOpenArea", airwayOpenArea, 0.0, detail::kInf, false, true);
-  detail::requireInRange("sensitivityPenaltyRatio", sensitivityPenaltyRatio, 0.0, 1e8);
+  detail::requireInRange("sensitivityPenaltyRatio", sensitivityPenaltyRatio, 1.0, 1e8);
   if (airwayWeight > 0.0 && !(airwayOpenArea > 0.0))
     throw std::invalid_argument("airwayOpenArea = 0 with airwayWeight > 0: allowed an area > 0 for the airway term");
   std::set<std::string> seen;

@@ -22,6 +22,9 @@ enum class ControllerType { geneticAlgorithm, gradient };
 // onset of a breath, where extrapolating from rest predicts rest.
 enum class PredictionSeed { none, extrapolation, gaussNewtonStep };
 
+// The gradient controller's sensitivity tangent (ControllerParameters::sensitivityTangent).
+enum class SensitivityTangent { automatic, constrained, inner };
+
 struct ControllerParameters {
   ControllerType type = ControllerType::geneticAlgorithm;
   GeneticAlgorithmParameters ga;
@@ -49,12 +52,15 @@ struct ControllerParameters {
   // start (a failed start there is retried from the step's start). The GA's candidates always start
   // from the step's start, so that control groups agree (doc/control.md, "Where a candidate starts").
   bool predictedStart = true;
-  // gradient: kappa / mu of the sensitivities' tangent under the augmented Lagrangian: the physical bulk
-  // modulus capped at this ratio times mu, the multipliers following the pressures (the converged
-  // loop's linearisation, to order S / (ratio mu), S an element's own stiffness against a volume
-  // change; doc/control.md, "The sensitivities"). 0: the inner solves' tangent, kappa_t at fixed
-  // multipliers (an error of order S / kappa_AL), which the GA's prediction seed always uses. [0, 1e8]
-  double sensitivityPenaltyRatio = 1e3;
+  // gradient: the tangent of its sensitivities under the augmented Lagrangian (doc/control.md,
+  // "The sensitivities"). constrained: the physical bulk modulus capped at sensitivityPenaltyRatio
+  // mu, the multipliers following the pressures (the converged loop's linearisation, to order
+  // S / (ratio mu), S an element's own stiffness against a volume change). inner: the Newton
+  // solves' own, kappa_t at fixed multipliers (an error of order S / kappa_AL), which the GA's
+  // prediction seed always uses. automatic: constrained with a direct linear solve, inner with an
+  // iterative one, where the stiffer tangent costs more Krylov iterations than it saves solves.
+  SensitivityTangent sensitivityTangent = SensitivityTangent::automatic;
+  double sensitivityPenaltyRatio = 1e3; // [1, 1e8]
   // The airway term (doc/control.md, "The airway term"): w_A max(0, A_open - A) joins eq. 25 in
   // the objective, A the smallest lumen area of the candidate's state (doc/airway.md); w_A [1/m]
   // makes it a length, as eq. 25 is. The gradient controller's residual gains the row itself and

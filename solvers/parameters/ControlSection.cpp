@@ -83,12 +83,16 @@ ParameterList controlParameters() {
   io::declareBool(p, "verify sensitivities", false,
                   "gradient: also difference two full solves per input (step 1e-3) and report the largest "
                   "relative difference from the tangent's sensitivity (summary.json, sensitivity_check)");
+  io::declareString(p, "sensitivity tangent", "auto",
+                    "gradient, augmented Lagrangian: the tangent of the sensitivities; constrained: the converged "
+                    "Uzawa loop's (the physical bulk modulus capped at 'sensitivity penalty ratio' mu, the "
+                    "multipliers following the pressures); inner: the Newton solves' own at fixed multipliers "
+                    "(an error of order mu / kappa_AL; the GA's prediction seed uses it); auto: constrained with a "
+                    "direct linear solve, inner with an iterative one (doc/control.md, 'The sensitivities')",
+                    {"auto", "constrained", "inner"});
   io::declareDouble(p, "sensitivity penalty ratio", 1e3, "",
-                    "gradient, augmented Lagrangian: the sensitivities' tangent carries the physical bulk modulus "
-                    "capped at this times mu, with the multipliers following the pressures (the converged loop's "
-                    "linearisation; doc/control.md, 'The sensitivities'); 0: the Newton solves' own tangent at "
-                    "fixed multipliers (an error of order mu / kappa_AL), which the GA's prediction seed uses",
-                    io::Range::closed(0.0, 1e8));
+                    "the constrained sensitivity tangent's cap on the bulk modulus, in units of mu",
+                    io::Range::closed(1.0, 1e8));
   io::declareBool(p, "predicted start", true,
                   "gradient: a candidate's solve starts from the accepted candidate's state moved along its "
                   "sensitivities to the new inputs, with its multipliers, instead of from the step's start "
@@ -150,6 +154,10 @@ ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
   p.verifySensitivities = c.get<bool>("verify sensitivities");
   p.predictedStart = c.get<bool>("predicted start");
   p.sensitivityPenaltyRatio = c.get<double>("sensitivity penalty ratio");
+  const std::string tangent = c.get<std::string>("sensitivity tangent");
+  p.sensitivityTangent = tangent == "constrained" ? control::SensitivityTangent::constrained
+                         : tangent == "inner"     ? control::SensitivityTangent::inner
+                                                  : control::SensitivityTangent::automatic;
   const std::string prediction = c.get<std::string>("prediction seed");
   p.predictionSeed = prediction == "linear extrapolation" ? control::PredictionSeed::extrapolation
                      : prediction == "Gauss-Newton step"  ? control::PredictionSeed::gaussNewtonStep

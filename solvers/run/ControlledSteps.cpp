@@ -114,20 +114,24 @@ void ControlledSteps::keepLast() {
 
 ControlPointSensitivity ControlledSteps::keptSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) {
   const control::ControllerParameters &p = setup_.parameters;
-  const bool gradient = p.type == control::ControllerType::gradient;
-  const bool predicts = gradient && p.predictedStart;
+  const bool predicts = p.type == control::ControllerType::gradient && p.predictedStart;
+  const bool augmented = parts_.uzawa.augmentedLagrangian() && !parts_.uzawa.mixedPressure();
   const assembly::ResultEvaluator results(parts_.assembler);
   parts_.model.setMultipliers(kept_.lambda);
-  // The GA's prediction seed keeps the inner solves' tangent: with the constrained one the supine
-  // GA's seeds moved its population where 39 of 42 candidates failed at t = 0.94 s (doc/control.md).
-  if (!augmentation_ || !gradient || !(p.sensitivityPenaltyRatio > 0.0)) {
+  // The pressures the kept state's multipliers were updated from, and their linear change along
+  // each response with the sensitivity's own volumetric laws (the start's multipliers).
+  std::vector<double> pressure;
+  if (predicts && augmented) pressure = results.elementDilatations(kept_.u, kept_.lambda).pressure;
+  if (!augmentation_) {
     ControlPointSensitivity s = controlPointSensitivity(parts_.newton, kept_.u, groups);
-    if (predicts) start_.record(inputs, groups, s.responses, {}, {});
+    if (predicts)
+      start_.record(inputs, groups, s.responses, pressure,
+                    augmented ? elementPressureResponses(results, kept_.u, kept_.lambda, *s.responses)
+                              : std::vector<std::vector<double>>{});
     return s;
   }
   // The converged loop's linearisation: the multipliers follow the pressures, so an element's
   // volume change costs the physical bulk modulus (capped), not the inner solves' kappa_t.
-  std::vector<double> pressure = results.elementDilatations(kept_.u, kept_.lambda).pressure;
   ControlPointSensitivity s;
   {
     const ConstrainedTangent constrained(*augmentation_, results, kept_.u, kept_.lambda, p.sensitivityPenaltyRatio);
@@ -213,6 +217,7 @@ nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
     c["iterations"] = outcome.iterations;
     c["sensitivity_evaluations"] = outcome.sensitivities;
     c["sensitivity_krylov"] = outcome.sensitivityKrylov;
+    c["sensitivity_tangent"] = augmentation_ ? "constrained" : "inner";
     if (outcome.sensitivityCheck >= 0.0) c["sensitivity_check"] = outcome.sensitivityCheck;
   }
   c["stop"] = outcome.stop;

@@ -37,8 +37,8 @@ class ControlledSteps final : public ControlPlant {
 public:
   // `resumeControlsAt`: a restart's length of controls.csv. `writer`: this rank writes it.
   // `airway`: the deck's lumen, which the controller's airway term measures (null without one).
-  // `augmentation`: the augmented Lagrangian's, whose laws the sensitivities' tangent exchanges
-  // (null under another method).
+  // `augmentation`: the augmented Lagrangian's, whose laws the gradient controller's sensitivities
+  // exchange for the constrained ones (null: the inner solves' tangent).
   ControlledSteps(const ControlSetup &setup, const StepSolverParts &parts, const StepSolver &solver,
                   const LoadStepper &stepper, const CommControlGroups &groups, const std::filesystem::path &dir,
                   std::optional<std::uintmax_t> resumeControlsAt, bool writer, bool talk,
@@ -90,9 +90,9 @@ private:
   std::vector<double> lastInputs_, keptInputs_;
   double lastLoadScale_ = 0.0, keptLoadScale_ = 0.0; // StepAttempt::loadScale of the last solve, of the kept one
   CandidateStart start_;
-  Augmentation *augmentation_ = nullptr; // the augmented Lagrangian's (null: another method)
+  Augmentation *augmentation_ = nullptr; // for the constrained sensitivity tangent (null: the inner one)
   // The sensitivity at the kept state, with the physical bulk modulus capped at the parameters'
-  // ratio (ConstrainedTangent) under the augmented Lagrangian; records the start's prediction.
+  // ratio (ConstrainedTangent) given an augmentation; records the start's prediction.
   ControlPointSensitivity keptSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups);
   // Moves last_ (the kept state on entry) along the kept responses to `inputs`.
   void predictFromKept(const std::vector<double> &inputs);

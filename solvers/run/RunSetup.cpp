@@ -252,6 +252,14 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
     run->recorder->showInertia(run->inertia.get());
   }
   if (run->control.enabled) {
+    // The gradient controller's sensitivity tangent (ControllerParameters::sensitivityTangent): the
+    // constrained one costs MueLu more Krylov iterations than it saves (doc/control.md).
+    const control::ControllerParameters &cp = run->control.parameters;
+    const bool constrainedSensitivity =
+        run->config.incompressibility.method == IncompressibilityMethod::augmentedLagrangian &&
+        cp.type == control::ControllerType::gradient &&
+        (cp.sensitivityTangent == control::SensitivityTangent::constrained ||
+         (cp.sensitivityTangent == control::SensitivityTangent::automatic && run->linearPlan.direct));
     std::optional<std::uintmax_t> resumeAt;
     if (run->restart && run->restart->outputs.csvBytes.count("controls.csv"))
       resumeAt = run->restart->outputs.csvBytes.at("controls.csv");
@@ -259,10 +267,7 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
       run->controlled = std::make_unique<ControlledSteps>(run->control, run->stepSolverParts(), *run->solver,
                                                           *run->stepper, *run->groups, dir, resumeAt, run->root, run->detail,
                                                           run->airway,
-                                                          run->config.incompressibility.method ==
-                                                                  IncompressibilityMethod::augmentedLagrangian
-                                                              ? run->augmentation.get()
-                                                              : nullptr);
+                                                          constrainedSensitivity ? run->augmentation.get() : nullptr);
     });
   }
   return run;

@@ -55,8 +55,8 @@ TEST(ControllerParameters, EachBadFieldIsNamedWithItsRange) {
   expectError([](auto &c) { c.ga.objectiveTolerance = -1e-3; }, "ga.objectiveTolerance", "[0, inf)");
   expectError([](auto &c) { c.pruningTolerance = -0.01; }, "pruningTolerance = -0.01", "[0, inf)");
   expectError([](auto &c) { c.effortWeight = -1e-4; }, "effortWeight = -0.0001", "[0, inf)");
-  expectError([](auto &c) { c.sensitivityPenaltyRatio = -1.0; }, "sensitivityPenaltyRatio = -1", "[0, 1e+08]");
-  expectError([nan](auto &c) { c.sensitivityPenaltyRatio = nan; }, "sensitivityPenaltyRatio", "[0, 1e+08]");
+  expectError([](auto &c) { c.sensitivityPenaltyRatio = 0.5; }, "sensitivityPenaltyRatio = 0.5", "[1, 1e+08]");
+  expectError([nan](auto &c) { c.sensitivityPenaltyRatio = nan; }, "sensitivityPenaltyRatio", "[1, 1e+08]");
   expectError([](auto &c) { c.alwaysEvaluated = {"GGa", ""}; }, "alwaysEvaluated[1]", "group name");
   expectError([](auto &c) { c.alwaysEvaluated = {"GGa", "GGa"}; }, "alwaysEvaluated[1]", "twice");
   // The GA's constructor validates too (without the "ga." prefix).
