@@ -65,7 +65,6 @@ Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const std::vector<double> &a
 
 CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
   const StepTrial &trial = stepper_.trial();
-  lastInputs_ = inputs;
   StepAttempt a;
   UzawaResult predicted; // the counts of a predicted start that failed
   if (start_.ready()) {
@@ -107,7 +106,6 @@ double ControlledSteps::lumenArea(const std::vector<double> &uAll, int section) 
 
 void ControlledSteps::keepLast() {
   kept_.assign(last_);
-  keptInputs_ = lastInputs_;
   keptLoadScale_ = lastLoadScale_;
   start_.forget();
 }

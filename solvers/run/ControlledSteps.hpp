@@ -85,9 +85,7 @@ private:
   const StepSolver &solver_;
   const LoadStepper &stepper_;
   StepState last_, kept_;
-  // The inputs of the last solve and of the kept state; where the gradient controller's next
-  // candidate starts (ControllerParameters::predictedStart).
-  std::vector<double> lastInputs_, keptInputs_;
+  // Where the gradient controller's next candidate starts (ControllerParameters::predictedStart).
   double lastLoadScale_ = 0.0, keptLoadScale_ = 0.0; // StepAttempt::loadScale of the last solve, of the kept one
   CandidateStart start_;
   Augmentation *augmentation_ = nullptr; // for the constrained sensitivity tangent (null: the inner one)

@@ -144,10 +144,10 @@ StepAttempt StepSolver::solveSolid(double time, double dt, StepState &state, boo
   // The Newton tolerance scales with the load: the external force and the step's initial
   // residual, which the first Newton solve assembles anyway (or the caller's load scale, when it
   // starts near the solution).
-  const double externalForce = std::max(parts_.assembler.externalForceNorm(time), loadScale);
+  const double leastScale = std::max(parts_.assembler.externalForceNorm(time), loadScale);
   const double relative = parts_.newton.relativeResidualTolerance();
-  const NewtonSolver::ToleranceRule tolerance = [externalForce, relative, &out](double initialResidualNorm) {
-    double reference = std::max(externalForce, initialResidualNorm);
+  const NewtonSolver::ToleranceRule tolerance = [leastScale, relative, &out](double initialResidualNorm) {
+    double reference = std::max(leastScale, initialResidualNorm);
     if (!(reference > 0.0)) reference = 1.0;
     out.loadScale = reference;
     return relative * reference;

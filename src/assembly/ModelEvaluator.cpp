@@ -429,12 +429,7 @@ std::vector<char> ModelEvaluator::groupElements(int group) const {
   const model::MuscleArchitecture &muscles = assembler_->scene().muscles;
   const auto &local = assembler_->layout().localElements;
   std::vector<char> in(local.size(), 0);
-  for (std::size_t i = 0; i < local.size(); ++i) {
-    const int region = muscles.elementRegion.empty() ? -1 : muscles.elementRegion[static_cast<std::size_t>(local[i])];
-    if (region < 0) continue;
-    const auto &families = muscles.regions[static_cast<std::size_t>(region)].familyGroup;
-    in[i] = std::find(families.begin(), families.end(), group) != families.end() ? 1 : 0;
-  }
+  for (std::size_t i = 0; i < local.size(); ++i) in[i] = muscles.carriesGroup(static_cast<std::size_t>(local[i]), group) ? 1 : 0;
   return in;
 }
 

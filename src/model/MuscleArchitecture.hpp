@@ -6,6 +6,7 @@
 // equally among the families present (eq. 3, paper §5.2). Passive fibre families are Hill
 // fibres whose contractile element never activates (group -1). No Trilinos.
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <string>
@@ -64,6 +65,12 @@ struct MuscleArchitecture {
     return pointDirections.empty() ? nullptr : &pointDirections[e];
   }
   int groupIndex(const std::string &name) const; // -1 if absent
+  // Whether mesh element e carries a fibre family of muscle group `group`.
+  bool carriesGroup(std::size_t e, int group) const {
+    if (elementRegion.empty() || elementRegion[e] < 0) return false;
+    const auto &families = regions[static_cast<std::size_t>(elementRegion[e])].familyGroup;
+    return std::find(families.begin(), families.end(), group) != families.end();
+  }
 };
 
 } // namespace glossa::model
