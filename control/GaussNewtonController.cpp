@@ -16,6 +16,7 @@ std::string toString(GaussNewtonStop stop) {
   case GaussNewtonStop::noDescent: return "no descent";
   case GaussNewtonStop::iterationLimit: return "iteration limit";
   case GaussNewtonStop::startFailed: return "start failed";
+  case GaussNewtonStop::sensitivityFailed: return "sensitivity failed";
   }
   return "unknown";
 }
@@ -58,6 +59,10 @@ GaussNewtonResult GaussNewtonController::minimise(const Eigen::VectorXd &start, 
     }
     const Eigen::MatrixXd S = sensitivity(u);
     ++out.sensitivities;
+    if (S.size() == 0) {
+      out.stop = GaussNewtonStop::sensitivityFailed;
+      return out;
+    }
     if (S.rows() != e.residual.size() || S.cols() != n)
       throw std::runtime_error("Gauss-Newton controller: the sensitivity is " + std::to_string(S.rows()) + " x " +
                                std::to_string(S.cols()) + ", expected " + std::to_string(e.residual.size()) + " x " +

@@ -43,7 +43,8 @@ enum class GaussNewtonStop {
   stationary,          // the bounded step fell below stepTolerance
   noDescent,           // no step length lowered the sum of squares
   iterationLimit,      // maxIterations sensitivity evaluations were used
-  startFailed          // the solve at the starting inputs failed
+  startFailed,         // the solve at the starting inputs failed
+  sensitivityFailed    // the sensitivity at the accepted inputs could not be computed
 };
 std::string toString(GaussNewtonStop stop);
 
@@ -62,7 +63,8 @@ public:
   // evaluation it accepted, so a caller that keeps the state of each evaluation that lowered the
   // sum of squares (below every earlier one) can compute S there.
   using Evaluator = std::function<ControlEvaluation(const Eigen::VectorXd &u)>;
-  // S = dr/du (rows as ControlEvaluation::residual, one column per input) at the accepted state.
+  // S = dr/du (rows as ControlEvaluation::residual, one column per input) at the accepted state;
+  // an empty matrix when it could not be computed (the search then stops at the accepted inputs).
   using Sensitivity = std::function<Eigen::MatrixXd(const Eigen::VectorXd &u)>;
 
   // Throws std::invalid_argument for invalid parameters.

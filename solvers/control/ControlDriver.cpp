@@ -227,6 +227,7 @@ std::vector<std::vector<double>> ControlDriver::gaussNewtonPrediction(Search &se
   if (epsilon > 0.0) r.tail(n) = epsilon * u;
   const Eigen::MatrixXd S = weightedSensitivity(search);
   ++search.result.sensitivities;
+  if (S.size() == 0) return {from}; // no sensitivity: the previous best alone
   const double rho = setup_.parameters.gradient.damping * (S.transpose() * S).diagonal().maxCoeff() +
                      std::numeric_limits<double>::min();
   const Eigen::VectorXd du = control::solveBoundedLeastSquares(S, -r, -u, Eigen::VectorXd::Ones(n) - u, rho).x;
@@ -298,6 +299,10 @@ void ControlDriver::searchGradient(Search &search, const std::vector<double> &pr
 Eigen::MatrixXd ControlDriver::weightedSensitivity(Search &search) {
   ControlStepResult &result = search.result;
   const InputSensitivity s = plant_.sensitivity(result.inputs, result.evaluated);
+  if (!s.failure.empty()) {
+    if (setup_.talk) std::printf("  sensitivity failed (%s): the search stops at the inputs it has\n", s.failure.c_str());
+    return {};
+  }
   result.sensitivityKrylov += s.krylovIterations;
   if (setup_.parameters.verifySensitivities) {
     result.sensitivityCheck = std::max(result.sensitivityCheck, differenceCheck(s, search));

@@ -38,6 +38,8 @@ struct InputSensitivity {
   // With the airway term: d A / d u_M of the kept state's smallest section, one per group asked
   // (empty without the term).
   Eigen::RowVectorXd dAdu;
+  // Why it could not be computed (its tangent solve failed); empty when it was. dxdu is empty then.
+  std::string failure;
 };
 
 class ControlPlant {
@@ -50,7 +52,8 @@ public:
   // Keeps the last solve's state, replacing what was kept.
   virtual void keepLast() = 0;
 
-  // At the kept state, which was solved with `inputs`, for the groups `groups` (scene indices).
+  // At the kept state, which was solved with `inputs`, for the groups `groups` (scene indices). A
+  // failed tangent solve is reported in `failure`, not thrown, and alike on every rank.
   virtual InputSensitivity sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) = 0;
   // The kept state as numbers, and back: a control group adopts the winning group's state.
   // Collective on the plant's own communicator.

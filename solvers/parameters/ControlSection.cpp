@@ -84,20 +84,22 @@ ParameterList controlParameters() {
                   "gradient: also difference two full solves per input (step 1e-3) and report the largest "
                   "relative difference from the tangent's sensitivity (summary.json, sensitivity_check)");
   io::declareString(p, "sensitivity tangent", "auto",
-                    "gradient, augmented Lagrangian: the tangent of the sensitivities; constrained: the converged "
+                    "augmented Lagrangian: the tangent of the gradient controller's sensitivities and of the "
+                    "responses the GA's candidates start along; constrained: the converged "
                     "Uzawa loop's (the physical bulk modulus capped at 'sensitivity penalty ratio' mu, the "
                     "multipliers following the pressures); inner: the Newton solves' own at fixed multipliers "
-                    "(an error of order mu / kappa_AL; the GA's prediction seed uses it); auto: constrained with a "
-                    "direct linear solve, inner with an iterative one (doc/control.md, 'The sensitivities')",
+                    "(an error of order mu / kappa_AL; the GA's prediction seed always uses it); auto: constrained "
+                    "with a direct linear solve, inner with an iterative one (doc/control.md, 'The sensitivities')",
                     {"auto", "constrained", "inner"});
   io::declareDouble(p, "sensitivity penalty ratio", 1e3, "",
                     "the constrained sensitivity tangent's cap on the bulk modulus, in units of mu",
                     io::Range::closed(1.0, 1e8));
   io::declareBool(p, "predicted start", true,
-                  "gradient: a candidate's solve starts from the accepted candidate's state moved along its "
-                  "sensitivities to the new inputs, with its multipliers, instead of from the step's start "
-                  "(retried from there if it fails; doc/control.md, 'Where a candidate starts'); the GA's "
-                  "candidates always start from the step's start");
+                  "a candidate's solve starts from a solved state moved along its sensitivities to the new "
+                  "inputs, with its multipliers, instead of from the step's start (retried from there if it "
+                  "fails; doc/control.md, 'Where a candidate starts'): gradient, the accepted candidate's; "
+                  "GA, the Gauss-Newton seed's solve (Control/prediction seed = Gauss-Newton step; without "
+                  "it the GA's candidates start from the step's start)");
   io::declareInt(p, "seed", 1, "random seed (same seed and rank count: the same run)", io::Range::closed(0, 2147483647));
   return p;
 }

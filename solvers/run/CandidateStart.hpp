@@ -10,8 +10,10 @@
 // instead, a candidate takes 4 to 5 Newton solves (the multipliers' error contracts by 0.3 per
 // update under a controller); from here, mostly 2.
 //
-// Only the gradient controller's candidates start here: the GA's are solved by control groups
-// that must agree, so they all start from the step's start.
+// The GA's candidates start likewise from the state of its Gauss-Newton seed's solve (the
+// previous step's best inputs), which every control group solves and linearises alike, so the
+// groups still agree bit for bit: one CandidateStart for the step, never moved to a group's own
+// best.
 
 #include <vector>
 

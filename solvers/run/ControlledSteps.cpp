@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 #include "airway/ResponseProbe.hpp"
 #include "assembly/Assembler.hpp"
@@ -24,9 +25,10 @@ ControlledSteps::ControlledSteps(const ControlSetup &setup, const StepSolverPart
                                  const LoadStepper &stepper, const CommControlGroups &groups,
                                  const std::filesystem::path &dir, std::optional<std::uintmax_t> resumeControlsAt,
                                  bool writer, bool talk, std::shared_ptr<const model::AirwayOutput> airway,
-                                 Augmentation *augmentation)
+                                 Augmentation *augmentation, bool constrainedSensitivity)
     : setup_(setup), parts_(parts), solver_(solver), stepper_(stepper), last_(stepper.committed()),
-      kept_(stepper.committed()), airway_(std::move(airway)), augmentation_(augmentation) {
+      kept_(stepper.committed()), seed_(stepper.committed()), augmentation_(augmentation),
+      constrainedSensitivity_(constrainedSensitivity && augmentation != nullptr), airway_(std::move(airway)) {
   if (writer)
     controls_ = std::make_unique<io::KeyedCsvWriter>(
         dir / "controls.csv", "group",
@@ -63,26 +65,33 @@ Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const std::vector<double> &a
   return d;
 }
 
-CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
+StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const StepState *from,
+                                       const CandidateStart *start, double loadScale) {
   const StepTrial &trial = stepper_.trial();
-  StepAttempt a;
   UzawaResult predicted; // the counts of a predicted start that failed
-  if (start_.ready()) {
-    last_.assign(kept_);
-    start_.predict(inputs, parts_.uzawa, last_);
-    a = solver_.solve(trial.time, trial.dt, last_, true, stepInputs(inputs, trial.time), keptLoadScale_);
-    // A start moved too far (an element turned inside out on the way) is no reason to fail: the
-    // step's start is tried as without a prediction, its counts added.
-    if (!a.ok) predicted = a.uzawa;
+  if (from) {
+    last_.assign(*from);
+    start->predict(inputs, parts_.uzawa, last_);
+    StepAttempt a = solver_.solve(trial.time, trial.dt, last_, true, stepInputs(inputs, trial.time), loadScale);
+    // A start moved too far (an element turned inside out on the way, which its first residual
+    // finds) is no reason to fail: the step's start is tried as without a prediction, its counts
+    // added. (Half the move instead, tried on the supine GA deck, saved no Newton iterations.)
+    if (a.ok) return a;
+    predicted = a.uzawa;
   }
-  if (!start_.ready() || !a.ok) {
-    last_.assign(stepper_.stepStart());
-    a = solver_.solve(trial.time, trial.dt, last_, true, stepInputs(inputs, trial.time));
-    a.uzawa.solves += predicted.solves;
-    a.uzawa.newtonIterations += predicted.newtonIterations;
-    a.uzawa.linearIterations += predicted.linearIterations;
-    a.uzawa.contactUpdates += predicted.contactUpdates;
-  }
+  last_.assign(stepper_.stepStart());
+  StepAttempt a = solver_.solve(trial.time, trial.dt, last_, true, stepInputs(inputs, trial.time));
+  a.uzawa.solves += predicted.solves;
+  a.uzawa.newtonIterations += predicted.newtonIterations;
+  a.uzawa.linearIterations += predicted.linearIterations;
+  a.uzawa.contactUpdates += predicted.contactUpdates;
+  return a;
+}
+
+CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
+  StepAttempt a = start_.ready()       ? solveFrom(inputs, &kept_, &start_, keptLoadScale_)
+                  : seedStart_.ready() ? solveFrom(inputs, &seed_, &seedStart_, seedLoadScale_)
+                                       : solveFrom(inputs, nullptr, nullptr, 0.0);
   lastLoadScale_ = a.loadScale;
   CandidateSolve out;
   out.ok = a.ok;
@@ -110,20 +119,20 @@ void ControlledSteps::keepLast() {
   start_.forget();
 }
 
-ControlPointSensitivity ControlledSteps::keptSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) {
+ControlPointSensitivity ControlledSteps::keptSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups,
+                                                         bool constrained, CandidateStart *start) {
   const control::ControllerParameters &p = setup_.parameters;
-  const bool predicts = p.type == control::ControllerType::gradient && p.predictedStart;
   const bool augmented = parts_.uzawa.augmentedLagrangian() && !parts_.uzawa.mixedPressure();
   const assembly::ResultEvaluator results(parts_.assembler);
   parts_.model.setMultipliers(kept_.lambda);
   // The pressures the kept state's multipliers were updated from, and their linear change along
   // each response with the sensitivity's own volumetric laws (the start's multipliers).
   std::vector<double> pressure;
-  if (predicts && augmented) pressure = results.elementDilatations(kept_.u, kept_.lambda).pressure;
-  if (!augmentation_) {
+  if (start && augmented) pressure = results.elementDilatations(kept_.u, kept_.lambda).pressure;
+  if (!constrained || !augmentation_) {
     ControlPointSensitivity s = controlPointSensitivity(parts_.newton, kept_.u, groups);
-    if (predicts)
-      start_.record(inputs, groups, s.responses, pressure,
+    if (start)
+      start->record(inputs, groups, s.responses, pressure,
                     augmented ? elementPressureResponses(results, kept_.u, kept_.lambda, *s.responses)
                               : std::vector<std::vector<double>>{});
     return s;
@@ -132,25 +141,57 @@ ControlPointSensitivity ControlledSteps::keptSensitivity(const std::vector<doubl
   // volume change costs the physical bulk modulus (capped), not the inner solves' kappa_t.
   ControlPointSensitivity s;
   {
-    const ConstrainedTangent constrained(*augmentation_, results, kept_.u, kept_.lambda, p.sensitivityPenaltyRatio);
-    parts_.model.setMultipliers(constrained.multipliers());
+    const ConstrainedTangent constrainedTangent(*augmentation_, results, kept_.u, kept_.lambda,
+                                                p.sensitivityPenaltyRatio);
+    parts_.model.setMultipliers(constrainedTangent.multipliers());
     // Fresh factors: the last solve's, of the inner tangent, precondition this one poorly (16
     // block Krylov iterations per sensitivity on the tongue instead of 1-2).
     MumpsPreconditionerFactory::beginNewtonSolve();
     s = controlPointSensitivity(parts_.newton, kept_.u, groups);
-    if (predicts)
-      start_.record(inputs, groups, s.responses, std::move(pressure),
-                    elementPressureResponses(results, kept_.u, constrained.multipliers(), *s.responses));
+    if (start)
+      start->record(inputs, groups, s.responses, std::move(pressure),
+                    elementPressureResponses(results, kept_.u, constrainedTangent.multipliers(), *s.responses));
   }
   parts_.model.setMultipliers(kept_.lambda);
+  return s;
+}
+
+ControlPointSensitivity ControlledSteps::controllerSensitivity(const std::vector<double> &inputs,
+                                                               const std::vector<int> &groups) {
+  const bool predicts = setup_.parameters.predictedStart;
+  if (setup_.parameters.type == control::ControllerType::gradient)
+    return keptSensitivity(inputs, groups, constrainedSensitivity_, predicts ? &start_ : nullptr);
+  // The GA's Gauss-Newton seed keeps the inner tangent (its seeds with the constrained one moved
+  // the supine GA to inputs where most candidates failed: doc/control.md). Its state, which every
+  // control group solved alike, is where the GA's candidates start, moved along the constrained
+  // responses when the controller's rule would take them.
+  if (!predicts) return keptSensitivity(inputs, groups, false, nullptr);
+  seed_.assign(kept_);
+  seedLoadScale_ = keptLoadScale_;
+  if (!constrainedSensitivity_) return keptSensitivity(inputs, groups, false, &seedStart_);
+  ControlPointSensitivity s = keptSensitivity(inputs, groups, false, nullptr);
+  keptSensitivity(inputs, groups, true, &seedStart_);
   return s;
 }
 
 InputSensitivity ControlledSteps::sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) {
   const StepTrial &trial = stepper_.trial();
   parts_.model.beginStep(trial.time, trial.dt, stepInputs(inputs, trial.time));
-  const ControlPointSensitivity s = keptSensitivity(inputs, groups);
-  InputSensitivity out{s.dxdu, s.krylovIterations, {}};
+  ControlPointSensitivity s;
+  try {
+    s = controllerSensitivity(inputs, groups);
+  } catch (const std::runtime_error &e) {
+    // A tangent solve that did not converge (Belos's verdict, the same on every rank) stops the
+    // controller's search at what it has, instead of the run; later candidates start from the
+    // step's start.
+    parts_.model.setMultipliers(kept_.lambda);
+    start_.forget();
+    seedStart_.forget();
+    InputSensitivity failed;
+    failed.failure = e.what();
+    return failed;
+  }
+  InputSensitivity out{s.dxdu, s.krylovIterations, {}, {}};
   if (measuresLumen()) {
     // dA/du_M of the kept state's smallest section: a central difference of the lumen along the
     // linearised response du/du_M (airway/ResponseProbe).
@@ -187,6 +228,7 @@ void ControlledSteps::unpackKept(const std::vector<double> &state) {
 
 void ControlledSteps::step(StepTrial &trial, int committedSteps) {
   start_.forget(); // another step: the last one's responses are of its state
+  seedStart_.forget();
   trial.control = driver_->step(committedSteps, committedStretch_);
   if (!trial.control.found()) {
     trial.attempt.why = "no candidate input converged";
@@ -215,7 +257,7 @@ nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
     c["iterations"] = outcome.iterations;
     c["sensitivity_evaluations"] = outcome.sensitivities;
     c["sensitivity_krylov"] = outcome.sensitivityKrylov;
-    c["sensitivity_tangent"] = augmentation_ ? "constrained" : "inner";
+    c["sensitivity_tangent"] = constrainedSensitivity_ ? "constrained" : "inner";
     if (outcome.sensitivityCheck >= 0.0) c["sensitivity_check"] = outcome.sensitivityCheck;
   }
   c["stop"] = outcome.stop;

@@ -37,12 +37,14 @@ class ControlledSteps final : public ControlPlant {
 public:
   // `resumeControlsAt`: a restart's length of controls.csv. `writer`: this rank writes it.
   // `airway`: the deck's lumen, which the controller's airway term measures (null without one).
-  // `augmentation`: the augmented Lagrangian's, whose laws the gradient controller's sensitivities
-  // exchange for the constrained ones (null: the inner solves' tangent).
+  // `augmentation`: the augmented Lagrangian's (null without one), whose laws the predicted starts'
+  // responses exchange for the constrained ones; `constrainedSensitivity`: the gradient
+  // controller's sensitivities do so too (otherwise they take the inner solves' tangent).
   ControlledSteps(const ControlSetup &setup, const StepSolverParts &parts, const StepSolver &solver,
                   const LoadStepper &stepper, const CommControlGroups &groups, const std::filesystem::path &dir,
                   std::optional<std::uintmax_t> resumeControlsAt, bool writer, bool talk,
-                  std::shared_ptr<const model::AirwayOutput> airway = nullptr, Augmentation *augmentation = nullptr);
+                  std::shared_ptr<const model::AirwayOutput> airway = nullptr, Augmentation *augmentation = nullptr,
+                  bool constrainedSensitivity = false);
   ~ControlledSteps() override;
 
   // Searches the step's inputs; the winner's state and statistics become `trial`'s. Collective.
@@ -85,15 +87,26 @@ private:
   const StepSolver &solver_;
   const LoadStepper &stepper_;
   StepState last_, kept_;
-  // Where the gradient controller's next candidate starts (ControllerParameters::predictedStart).
+  // Where the next candidate starts (ControllerParameters::predictedStart). The gradient
+  // controller's: the kept state moved along its sensitivities (start_). The GA's: the state of
+  // its Gauss-Newton seed's solve (seed_), which every control group solves alike, moved along
+  // that state's constrained responses (seedStart_), so that the groups still agree.
   double lastLoadScale_ = 0.0, keptLoadScale_ = 0.0; // StepAttempt::loadScale of the last solve, of the kept one
-  CandidateStart start_;
-  Augmentation *augmentation_ = nullptr; // for the constrained sensitivity tangent (null: the inner one)
+  CandidateStart start_, seedStart_;
+  StepState seed_;
+  double seedLoadScale_ = 0.0;
+  Augmentation *augmentation_ = nullptr; // the augmented Lagrangian's volumetric laws (null: none)
+  bool constrainedSensitivity_ = false;  // the gradient controller's sensitivities take them
   // The sensitivity at the kept state, with the physical bulk modulus capped at the parameters'
-  // ratio (ConstrainedTangent) given an augmentation; records the start's prediction.
-  ControlPointSensitivity keptSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups);
-  // Moves last_ (the kept state on entry) along the kept responses to `inputs`.
-  void predictFromKept(const std::vector<double> &inputs);
+  // ratio (ConstrainedTangent) when `constrained`; records `start`'s prediction when asked.
+  ControlPointSensitivity keptSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups,
+                                          bool constrained, CandidateStart *start);
+  // The controller's sensitivity at the kept state, recording where later candidates start.
+  ControlPointSensitivity controllerSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups);
+  // Solves a candidate from `from` moved by `start` to `inputs`, then, should that fail, from the
+  // step's start (both solves counted).
+  StepAttempt solveFrom(const std::vector<double> &inputs, const StepState *from, const CandidateStart *start,
+                        double loadScale);
   std::shared_ptr<const model::AirwayOutput> airway_;
   std::unique_ptr<ControlDriver> driver_;
   std::unique_ptr<io::KeyedCsvWriter> controls_;

@@ -255,10 +255,9 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
     // The gradient controller's sensitivity tangent (ControllerParameters::sensitivityTangent): the
     // constrained one costs MueLu more Krylov iterations than it saves (doc/control.md).
     const control::ControllerParameters &cp = run->control.parameters;
+    const bool augmented = run->config.incompressibility.method == IncompressibilityMethod::augmentedLagrangian;
     const bool constrainedSensitivity =
-        run->config.incompressibility.method == IncompressibilityMethod::augmentedLagrangian &&
-        cp.type == control::ControllerType::gradient &&
-        (cp.sensitivityTangent == control::SensitivityTangent::constrained ||
+        augmented && (cp.sensitivityTangent == control::SensitivityTangent::constrained ||
          (cp.sensitivityTangent == control::SensitivityTangent::automatic && run->linearPlan.direct));
     std::optional<std::uintmax_t> resumeAt;
     if (run->restart && run->restart->outputs.csvBytes.count("controls.csv"))
@@ -267,7 +266,8 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
       run->controlled = std::make_unique<ControlledSteps>(run->control, run->stepSolverParts(), *run->solver,
                                                           *run->stepper, *run->groups, dir, resumeAt, run->root, run->detail,
                                                           run->airway,
-                                                          constrainedSensitivity ? run->augmentation.get() : nullptr);
+                                                          augmented ? run->augmentation.get() : nullptr,
+                                                          constrainedSensitivity);
     });
   }
   return run;

@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,6 +25,8 @@ public:
   std::function<bool(const std::vector<double> &)> fails = [](const std::vector<double> &) { return false; };
   // The sensitivity reported is this times the true one (1: exact).
   double sensitivityScale = 1.0;
+  // Every sensitivity fails (as a tangent solve that did not converge), with this reason.
+  std::string sensitivityFailure;
   // A lumen whose smallest area is affine in the inputs, A(u) = area0 + areaRate . u [m^2]
   // (NaN area0: no lumen); its reported dA/du is areaSensitivityScale times the true one.
   double area0 = std::numeric_limits<double>::quiet_NaN();
@@ -66,6 +69,10 @@ public:
   solvers::InputSensitivity sensitivity(const std::vector<double> &inputs, const std::vector<int> &groups) override {
     if (inputs != kept_) throw std::logic_error("LinearPlant: sensitivity away from the kept state");
     solvers::InputSensitivity s;
+    if (!sensitivityFailure.empty()) {
+      s.failure = sensitivityFailure;
+      return s;
+    }
     s.dxdu.resize(A_.rows(), static_cast<Eigen::Index>(groups.size()));
     for (std::size_t j = 0; j < groups.size(); ++j) s.dxdu.col(static_cast<Eigen::Index>(j)) = sensitivityScale * A_.col(groups[j]);
     s.krylovIterations = static_cast<int>(groups.size());

@@ -476,3 +476,34 @@ TEST(ControlDriver, ThePreviousBestIsSolvedOncePerStep) {
   EXPECT_EQ(second.candidates, static_cast<std::size_t>(plant.solves - before));
   EXPECT_LE(second.objective, first.objective + 1e-15); // the previous best still competes
 }
+
+// A sensitivity that cannot be computed (its tangent solve did not converge) stops the search at
+// the inputs it has instead of the run: the gradient controller keeps its start, solved; the GA
+// goes on without its Gauss-Newton seed's prediction, as without the seed.
+TEST(ControlDriver, AFailedSensitivityStopsTheSearchNotTheRun) {
+  const std::vector<double> uStar{0.3, 0.6, 0.45, 0.15};
+  auto s = setup(glossa::control::ControllerType::gradient, uStar);
+  LinearPlant plant(plantMatrix());
+  plant.sensitivityFailure = "tangent solve did not converge";
+  SingleControlGroup one;
+  ControlDriver driver(s, plant, one);
+  const ControlStepResult r = driver.step(0, kStretched);
+  ASSERT_TRUE(r.found());
+  EXPECT_EQ(r.stop, "sensitivity failed");
+  EXPECT_EQ(r.inputs, std::vector<double>(kGroups, 0.0)); // the start, the previous step's inputs
+  EXPECT_NEAR(r.objective, objectiveOf(s, r.inputs), 1e-15);
+  EXPECT_EQ(r.candidates, 1u);
+
+  auto g = setup(glossa::control::ControllerType::geneticAlgorithm, uStar);
+  g.parameters.ga.geneType = glossa::control::GeneType::continuous;
+  g.parameters.ga.generations = 3;
+  g.parameters.ga.populationSize = 8;
+  g.parameters.predictionSeed = glossa::control::PredictionSeed::gaussNewtonStep;
+  LinearPlant failing(plantMatrix());
+  failing.sensitivityFailure = "tangent solve did not converge";
+  ControlDriver ga(g, failing, one);
+  const ControlStepResult seeded = ga.step(0, kStretched);
+  ASSERT_TRUE(seeded.found());
+  EXPECT_NEAR(seeded.objective, objectiveOf(g, seeded.inputs), 1e-15);
+  EXPECT_EQ(seeded.candidates, static_cast<std::size_t>(failing.solves));
+}
