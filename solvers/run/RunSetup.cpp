@@ -252,7 +252,8 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
     run->recorder->showInertia(run->inertia.get());
   }
   if (run->control.enabled) {
-    // The gradient controller's sensitivity tangent (ControllerParameters::sensitivityTangent): the
+    // The sensitivity tangent (ControllerParameters::sensitivityTangent) of the gradient
+    // controller's sensitivities and of the responses the GA's candidates start along: the
     // constrained one costs MueLu more Krylov iterations than it saves (doc/control.md).
     const control::ControllerParameters &cp = run->control.parameters;
     const bool augmented = run->config.incompressibility.method == IncompressibilityMethod::augmentedLagrangian;
