@@ -1,5 +1,9 @@
 #include "solvers/control/ControlSensitivity.hpp"
 
+#include "assembly/TimeSplit.hpp"
+
+#include <optional>
+
 #include <Thyra_DetachedMultiVectorView.hpp>
 #include <Thyra_MultiVectorStdOps.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -11,6 +15,7 @@ using MEB = Thyra::ModelEvaluatorBase;
 
 ControlPointSensitivity controlPointSensitivity(const NewtonSolver &newton, const assembly::Vector &u,
                                                 const std::vector<int> &groups) {
+  std::optional<assembly::PartTimer> derivativesTimer(assembly::TimedPart::inputDerivatives);
   assembly::ModelEvaluator &model = newton.model();
   const auto xSpace = model.get_x_space();
   const auto ownedMap = u.getMap();
@@ -22,6 +27,7 @@ ControlPointSensitivity controlPointSensitivity(const NewtonSolver &newton, cons
   out.set_DfDp(assembly::ModelEvaluator::kNeuralInputs, MEB::Derivative<double>(dfdp, MEB::DERIV_MV_BY_COL));
   out.set_DgDx(0, MEB::Derivative<double>(dgdx, MEB::DERIV_TRANS_MV_BY_ROW));
   model.evalModel(in, out);
+  derivativesTimer.reset();
 
   // W X = -DfDp for the columns asked.
   const auto n = groups.size();

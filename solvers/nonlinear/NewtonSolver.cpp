@@ -1,5 +1,7 @@
 #include "solvers/nonlinear/NewtonSolver.hpp"
 
+#include "assembly/TimeSplit.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -305,15 +307,20 @@ int NewtonSolver::solveTangent(const assembly::Vector &u, const assembly::MultiV
   TEUCHOS_TEST_FOR_EXCEPTION(!model_->mixedPressure().is_null(), std::logic_error,
                              "tangent solves are of the condensed tangent; the mixed method has none");
   model_->resetIterates(u);
-  auto in = model_->createInArgs();
-  auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
-  in.set_x(Thyra::createVector(RCP<assembly::Vector>(uCopy), model_->get_x_space()));
-  auto out = model_->createOutArgs();
-  const RCP<Thyra::LinearOpBase<double>> W = model_->create_W_op();
-  out.set_W_op(W);
-  model_->evalModel(in, out);
-  if (!model_->lastStatus().valid) throw std::runtime_error("tangent solve: an element is inverted at the state");
-  const auto lows = Thyra::linearOpWithSolve<double>(*model_->get_W_factory(), W);
+  RCP<Thyra::LinearOpWithSolveBase<double>> lows;
+  {
+    const assembly::PartTimer timer(assembly::TimedPart::tangentSetup);
+    auto in = model_->createInArgs();
+    auto uCopy = rcp(new assembly::Vector(u, Teuchos::Copy));
+    in.set_x(Thyra::createVector(RCP<assembly::Vector>(uCopy), model_->get_x_space()));
+    auto out = model_->createOutArgs();
+    const RCP<Thyra::LinearOpBase<double>> W = model_->create_W_op();
+    out.set_W_op(W);
+    model_->evalModel(in, out);
+    if (!model_->lastStatus().valid) throw std::runtime_error("tangent solve: an element is inverted at the state");
+    lows = Thyra::linearOpWithSolve<double>(*model_->get_W_factory(), W);
+  }
+  const assembly::PartTimer timer(assembly::TimedPart::tangentSolve);
   return solveWith(*lows, rhs, x, relativeTolerance, "tangent solve");
 }
 

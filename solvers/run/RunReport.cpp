@@ -80,7 +80,8 @@ void prepareOutputDirectory(const std::filesystem::path &dir) {
 RunReport::RunReport(Teuchos::RCP<const Teuchos::Comm<int>> comm, bool root, bool talk)
     : comm_(std::move(comm)), root_(root), talk_(talk), start_(Clock::now()), stepsStart_(start_),
       setupAtStart_(timerSeconds("NOX Total Preconditioner Construction")),
-      solveAtStart_(timerSeconds("NOX Total Linear Solve")) {
+      solveAtStart_(timerSeconds("NOX Total Linear Solve")), partSecondsAtStart_(assembly::kTimedParts),
+      partCallsAtStart_(assembly::kTimedParts) {
   for (std::size_t k = 0; k < partSecondsAtStart_.size(); ++k) {
     const auto timer = assembly::partTimer(static_cast<assembly::TimedPart>(k));
     partSecondsAtStart_[k] = timer->totalElapsedTime();

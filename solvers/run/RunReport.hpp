@@ -4,7 +4,6 @@
 // (SIGTERM, SIGINT), on which summary.json says at once why the run ends and the run stops at
 // the next step boundary on every rank.
 
-#include <array>
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -112,8 +111,8 @@ private:
   Clock::time_point start_, stepsStart_;
   double stepsStartTime_ = 0.0;         // the simulated time when the steps began (a restart's)
   double setupAtStart_, solveAtStart_; // NOX's timers when the run began
-  std::array<double, 7> partSecondsAtStart_{}; // the time split's timers (assembly/TimeSplit.hpp) then
-  std::array<int, 7> partCallsAtStart_{};
+  std::vector<double> partSecondsAtStart_; // the time split's timers (assembly/TimeSplit.hpp) then
+  std::vector<int> partCallsAtStart_;
   std::filesystem::path dir_;
   nlohmann::json doc_;
   // The output lock: a commit's output and the summary writes on the run's thread.

@@ -5,19 +5,32 @@
 // so only coarse parts are timed (a factorisation, an output step), never a point or an element.
 
 #include <array>
+#include <cstddef>
 #include <string>
 
 #include <Teuchos_TimeMonitor.hpp>
 
 namespace glossa::assembly {
 
-enum class TimedPart { analysis, factorisation, directSolve, threeFieldBases, uzawaUpdate, muscleHistory, stepOutput };
+enum class TimedPart {
+  analysis,
+  factorisation,
+  directSolve,
+  threeFieldBases,
+  uzawaUpdate,
+  muscleHistory,
+  stepOutput,
+  inputDerivatives, // a controller's df/dalpha and dg/du (the model's DfDp and DgDx)
+  tangentSetup,     // a tangent solve outside Newton: its tangent and its fresh preconditioner
+  tangentSolve      // that solve's Krylov iterations, all right-hand sides at once
+};
+inline constexpr std::size_t kTimedParts = 10;
 
 // The summary's key of each part, in the order of TimedPart.
-inline const std::array<std::string, 7> &timedPartNames() {
-  static const std::array<std::string, 7> names{"direct_analysis",    "direct_factorisation", "direct_solve",
-                                                "three_field_bases",  "uzawa_update",         "muscle_history",
-                                                "step_output"};
+inline const std::array<std::string, kTimedParts> &timedPartNames() {
+  static const std::array<std::string, kTimedParts> names{
+      "direct_analysis", "direct_factorisation", "direct_solve",       "three_field_bases", "uzawa_update",
+      "muscle_history",  "step_output",          "input_derivatives", "tangent_setup",     "tangent_solve"};
   return names;
 }
 
@@ -34,7 +47,7 @@ public:
 
 private:
   static const Teuchos::RCP<Teuchos::Time> &timerOf(TimedPart part) {
-    static std::array<Teuchos::RCP<Teuchos::Time>, 7> timers;
+    static std::array<Teuchos::RCP<Teuchos::Time>, kTimedParts> timers;
     auto &t = timers[static_cast<std::size_t>(part)];
     if (t.is_null()) t = partTimer(part);
     return t;

@@ -148,6 +148,15 @@ TEST(GradientControl, PredictedStartsSaveSolvesNotAccuracy) {
     return r.at("time_split").at("direct_factorisation").at("calls").get<double>();
   };
   EXPECT_LT(factorisations(predicted), 0.75 * factorisations(fromStepStart));
+  // The summary's time split (doc/output.md): at least one sensitivity per control step, each
+  // with its own tangent and solve (other tangent solves, as the stepper's, count there too).
+  const auto &split = predicted.at("time_split");
+  const int sensitivities = split.at("input_derivatives").at("calls").get<int>();
+  const int tangentSolves = split.at("tangent_solve").at("calls").get<int>();
+  EXPECT_GE(sensitivities, 2);
+  EXPECT_GE(tangentSolves, sensitivities);
+  EXPECT_EQ(split.at("tangent_setup").at("calls").get<int>(), tangentSolves);
+  EXPECT_GT(split.at("tangent_solve").at("seconds").get<double>(), 0.0);
   for (std::size_t k = 0; k < 2; ++k) {
     const double a = predicted.at("steps").at(k).at("control").at("objective").get<double>();
     const double b = fromStepStart.at("steps").at(k).at("control").at("objective").get<double>();
