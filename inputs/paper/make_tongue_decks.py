@@ -100,7 +100,8 @@ class Xml:
 def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=0.1, output_every=1,
          reference=None, zero_strain=None, breathing_start=None, external_sg=True, control=None,
          matrix=None, linear=None, face_sets=None, contact=None, neural=None, output=None,
-         time=None, group=None, incompressibility=None, gravity_table=None, airway=None, airflow=None):
+         time=None, group=None, incompressibility=None, gravity_table=None, airway=None, airflow=None,
+         moved_nodes=None):
     """active: {group: T0s}; groups not listed get neural input 0 (passive fibres).
     gravity: None or direction; pressure: None or p_max [Pa] (linear from P_A to P_P, ramped).
     reference: None or a Mesh/reference coordinates file (relative to the deck);
@@ -125,7 +126,8 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     table time function.
     airway: None or {parameter: (type, value)} of the Airway section (doc/airway.md).
     airflow: None or {parameter: (type, value or {sublist parameter: (type, value)})} of the Airflow
-    section (doc/airflow.md)."""
+    section (doc/airflow.md).
+    moved_nodes: None or a Mesh/File/moved nodes file (relative to the deck): the mended tongue."""
     assert "--" not in comment
     x = Xml()
     x.lines.append("<!--")
@@ -137,6 +139,8 @@ def deck(name, comment, active, gravity=None, pressure=None, end_time=0.3, step=
     x.add("type", "string", "file")
     x.open("File")
     x.add("path", "string", "../tongue/tongue.node")
+    if moved_nodes is not None:
+        x.add("moved nodes", "string", moved_nodes)
     x.add("ANSYS components", "string", "../tongue/CreateMuscles.mac")
     x.add("ANSYS fibres", "string", "../tongue/Fibers.mac")
     x.open("ANSYS fibre anchors")
@@ -668,6 +672,52 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
                  "closing area": ("double", PCRIT_CLOSING_AREA),
                  "lateral half-width": ("double", 0.0125)},
          output={"fields": ("bool", "false")})
+AIRWAY_CONTROL_SUCTION = -3000.0
+AIRWAY_CONTROL = f"""
+Neural control past the airway's closure (doc/airway.md, "Control past the closing suction"):
+s8_5's three supine breaths with the wall of the Pcrit decks (the palate and pharyngeal wall a
+frictionless penalty contact on the implicit surface through palate8.obj, the lumen's 20
+sections, lateral walls 12.5 mm either side, a section closed below 5 mm^2) and the suction
+raised to p_max = {AIRWAY_CONTROL_SUCTION:g} Pa at P_P, past the suction at which the passive airway
+closes. The mended tongue: the published mesh with 93 interior nodes moved by
+inputs/tongue/mend_tongue.py (Mesh/File/moved nodes; surface, sets and connectivity unchanged),
+on its own zero-strain configuration (s8_1/reference_inverse_mended.txt); the published mesh
+folds an element before its passive airway closes in these breaths."""
+AIRWAY_TERM = {"airway weight": ("double", 1000.0), "airway open area": ("double", 2e-5)}
+AIRWAY_CONTROL_TERM = """
+The objective adds the airway term w_A max(0, A_open - A), w_A = 1000 /m and A_open = 20 mm^2
+(doc/control.md, "The airway term"), to eq. 25."""
+AIRWAY_CONTROL_EFFORT = """
+Activation is priced at 5 mm per unit input (effort weight 5e-3 m): the control points cannot
+be held against this suction, and without the price the controller drives GGm, GGp, GH and IL
+to full input, where no candidate's solve converges (t = 1.64 s)."""
+AIRWAY_CONTROL_DECK = dict(gravity=(1, 0, 0), pressure=AIRWAY_CONTROL_SUCTION, end_time=8.75, step=0.3125,
+                           breathing_start=1.25, reference="s8_1/reference_inverse_mended.txt",
+                           moved_nodes="../tongue/tongue_mended_nodes.txt", face_sets=PALATE_SIDE,
+                           contact={"palate": {**PALATE_CONTACT["palate"], "normal field": ("string", "implicit")}},
+                           airway={**AIRWAY_SECTION, "closing area": ("double", PCRIT_CLOSING_AREA),
+                                   "lateral half-width": ("double", 0.0125)},
+                           output={"fields": ("bool", "false")})
+deck("airway_control_passive_supine", "The airway past its closing suction, passive, supine.\n" + COMMON +
+     BREATHING.replace("-350", f"{AIRWAY_CONTROL_SUCTION:g}") + AIRWAY_CONTROL +
+     "\nPassive: no control, the baseline whose airway closes (below 5 mm^2 from about 1.79 s to 1.95 s).\n"
+     "It ends at 2.1 s, the airway open again: at 2.12 s, on the release, the tongue leaves the wall at\n"
+     "a limit point of the quasi-static path (its path stiffness falls to 0.5), which load stepping\n"
+     "cannot pass.", {}, **dict(AIRWAY_CONTROL_DECK, end_time=2.1))
+for controller, (text, control) in CONTROLLERS.items():
+    control = dict(control, **AIRWAY_TERM)
+    linear = None
+    if controller == "ga":
+        control.update({"stagnation generations": ("int", 2), "prediction seed steps": ("int", 3)})
+        linear = {"MueLu reuse scope": ("string", "run")}
+        text += SUPINE_GA
+    else:
+        control["effort weight"] = ("double", 5e-3)
+        text += AIRWAY_CONTROL_EFFORT
+    deck(f"airway_control_{controller}_supine",
+         f"The airway past its closing suction, supine, held open by neural control ({controller}).\n" + COMMON +
+         BREATHING.replace("-350", f"{AIRWAY_CONTROL_SUCTION:g}") + AIRWAY_CONTROL + CONTROLLED + text +
+         AIRWAY_CONTROL_TERM, {}, control=control, linear=linear, **AIRWAY_CONTROL_DECK)
 TWITCH = """
 A styloglossus twitch (doc/dynamics.md, "The tongue twitch"): the SG group at FFMR 25 % (as
 s8_4_sg) on the imaged configuration, no gravity, so the tongue starts at rest in equilibrium.

@@ -11,11 +11,9 @@
 #include "io/deck/SpaceTimeExpression.hpp"
 #include "io/deck/ParameterSpec.hpp"
 #include "loads/BodyForce.hpp"
-#include "mesh/AnsysReader.hpp"
 #include "mesh/BoxGenerator.hpp"
 #include "mesh/CookMembraneGenerator.hpp"
 #include "mesh/HexMesh.hpp"
-#include "mesh/MeshFile.hpp"
 #include "mesh/MeshRefinement.hpp"
 #include "mesh/ReferenceCoordinates.hpp"
 #include "mesh/QuarterCylinderGenerator.hpp"
@@ -27,6 +25,7 @@
 #include "input/ContactParameters.hpp"
 #include "input/DeckSets.hpp"
 #include "input/MaterialFactory.hpp"
+#include "input/MeshFileReading.hpp"
 #include "input/SceneChecks.hpp"
 
 namespace glossa::input {
@@ -50,6 +49,10 @@ ParameterList meshParameters() {
   io::declareString(file, "path", "", "the mesh file, relative to the deck (ANSYS: the .node or the .elem)");
   io::declareString(file, "format", "auto", "by extension (.msh gmsh, .inp abaqus, .node/.elem ansys), or named",
                     {"auto", "gmsh", "abaqus", "ansys"});
+  io::declareString(file, "moved nodes", "",
+                    "a file of 'id x y z' lines [m] whose nodes replace those of the mesh file (its ids), before "
+                    "the sets and the refinement: a mesh kept as published with some nodes moved, as the tongue's "
+                    "interior nodes mended by inputs/tongue/mend_tongue.py; empty: none");
   io::declareInt(file, "refine", 0, "split every hexahedron into 8 this many times (sets carried over)",
                  io::Range::closed(0, 4));
   io::declareString(file, "ANSYS components", "", "ansys: APDL macro of element components (CreateMuscles.mac)");
@@ -224,48 +227,7 @@ mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes, m
                             {c[0], c[1], c[2]});
     } else if (p.get<std::string>("type") == "file") {
       const auto &f = p.sublist("File");
-      auto resolve = [&deck](const std::string &path) { return relativeToDeck(deck, path); };
-      if (f.get<std::string>("path").empty())
-        throw io::DeckError(deck.where({"Mesh", "File", "path"}) + " is empty: name the mesh file");
-      try {
-        mesh::ImportedMesh imported = mesh::readMeshFile(resolve(f.get<std::string>("path")), f.get<std::string>("format"));
-        mesh::AnsysComponents components;
-        if (!f.get<std::string>("ANSYS components").empty())
-          components = mesh::readAnsysComponents(resolve(f.get<std::string>("ANSYS components")), imported);
-        if (!f.get<std::string>("ANSYS fibres").empty()) {
-          if (f.get<std::string>("ANSYS components").empty())
-            throw io::DeckError(deck.where({"Mesh", "File", "ANSYS fibres"}) +
-                                ": the fibre macro numbers its muscles by the components' muscleName array; "
-                                "give 'ANSYS components' too");
-          std::map<std::int64_t, Eigen::Vector3d> anchors;
-          const auto &points = f.sublist("ANSYS fibre anchors");
-          for (auto it = points.begin(); it != points.end(); ++it) {
-            const auto &a = points.sublist(points.name(it));
-            anchors[a.get<int>("id")] = vec3(a.get<Array<double>>("position"));
-          }
-          const auto &names = components.declaredNames.empty() ? components.names : components.declaredNames;
-          try {
-            for (auto &muscle : mesh::readAnsysFibres(resolve(f.get<std::string>("ANSYS fibres")), imported, names, anchors)) {
-              auto &lines = imported.mesh.fibrePolylines[muscle.muscle];
-              for (const auto &fibre : muscle.fibres) {
-                lines.emplace_back();
-                for (const auto &vertex : fibre) lines.back().push_back(vertex.position);
-              }
-            }
-          } catch (const std::runtime_error &e) {
-            throw io::DeckError(deck.where({"Mesh", "File", "ANSYS fibres"}) + ": " + e.what());
-          }
-        }
-        const auto &lists = f.sublist("Node lists");
-        for (auto it = lists.begin(); it != lists.end(); ++it)
-          mesh::readAnsysNodeList(resolve(lists.sublist(lists.name(it)).get<std::string>("file")), lists.name(it), imported);
-        m = std::move(imported.mesh);
-        notes = std::move(imported.notes);
-      } catch (const io::DeckError &) {
-        throw;
-      } catch (const std::runtime_error &e) {
-        throw io::DeckError(deck.where({"Mesh", "File", "path"}) + ": " + e.what());
-      }
+      m = readFileMesh(deck, notes);
       if (f.get<int>("refine") > 0) {
         if (asRead) *asRead = m;
         m = mesh::refineUniformly(m, f.get<int>("refine"));
