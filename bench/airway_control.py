@@ -93,7 +93,7 @@ def plot(rows, runs_dir):
     for r in rows:
         series = lumen(os.path.join(runs_dir, r["run"]))
         bottom.plot([s[0] for s in series], [s[1] for s in series], label=r["run"], marker=".", markersize=3)
-    bottom.axhline(CLOSING_AREA_MM2, color="k", linestyle=":", label="closed below")
+    bottom.axhline(CLOSING_AREA_MM2, color="k", linestyle=":", label=f"closed below {CLOSING_AREA_MM2:g} mm$^2$")
     bottom.set_yscale("log")
     bottom.set_xlabel("time [s]")
     bottom.set_ylabel("smallest lumen area [mm$^2$]")
