@@ -673,10 +673,17 @@ for posture, g in (("upright", (0, 0, -1)), ("supine", (1, 0, 0))):
                  "lateral half-width": ("double", 0.0125)},
          output={"fields": ("bool", "false")})
 AIRWAY_CONTROL_SUCTION = -3000.0
+# s8_5's breaths at this suction, on the mended tongue's own zero-strain configuration.
+AIRWAY_CONTROL_BREATHING = BREATHING.replace("-350", f"{AIRWAY_CONTROL_SUCTION:g}").replace(
+    """zero-strain configuration of s8_1 (s8_1/reference_inverse.txt: upright gravity on it gives back
+the imaged geometry), as the paper's section 8 is;""",
+    """mended tongue's own zero-strain configuration (below: upright gravity on it gives back the
+imaged geometry), as the paper's section 8 is on the published one;""")
 AIRWAY_CONTROL = f"""
 Neural control past the airway's closure (doc/airway.md, "Control past the closing suction"):
 s8_5's three supine breaths with the wall of the Pcrit decks (the palate and pharyngeal wall a
-frictionless penalty contact on the implicit surface through palate8.obj, the lumen's 20
+frictionless contact on the implicit surface through palate8.obj, penalty 1e8 Pa/m and
+augmented-Lagrangian enforcement, the lumen's 20
 sections, lateral walls 12.5 mm either side, a section closed below 5 mm^2) and the suction
 raised to p_max = {AIRWAY_CONTROL_SUCTION:g} Pa at P_P, past the suction at which the passive airway
 closes. The mended tongue: the published mesh with 93 interior nodes moved by
@@ -699,7 +706,7 @@ AIRWAY_CONTROL_DECK = dict(gravity=(1, 0, 0), pressure=AIRWAY_CONTROL_SUCTION, e
                                    "lateral half-width": ("double", 0.0125)},
                            output={"fields": ("bool", "false")})
 deck("airway_control_passive_supine", "The airway past its closing suction, passive, supine.\n" + COMMON +
-     BREATHING.replace("-350", f"{AIRWAY_CONTROL_SUCTION:g}") + AIRWAY_CONTROL +
+     AIRWAY_CONTROL_BREATHING + AIRWAY_CONTROL +
      "\nPassive: no control, the baseline whose airway closes (below 5 mm^2 from about 1.79 s to 1.95 s).\n"
      "It ends at 2.1 s, the airway open again: at 2.12 s, on the release, the tongue leaves the wall at\n"
      "a limit point of the quasi-static path (its path stiffness falls to 0.5), which load stepping\n"
@@ -716,7 +723,7 @@ for controller, (text, control) in CONTROLLERS.items():
         text += AIRWAY_CONTROL_EFFORT
     deck(f"airway_control_{controller}_supine",
          f"The airway past its closing suction, supine, held open by neural control ({controller}).\n" + COMMON +
-         BREATHING.replace("-350", f"{AIRWAY_CONTROL_SUCTION:g}") + AIRWAY_CONTROL + CONTROLLED + text +
+         AIRWAY_CONTROL_BREATHING + AIRWAY_CONTROL + CONTROLLED + text +
          AIRWAY_CONTROL_TERM, {}, control=control, linear=linear, **AIRWAY_CONTROL_DECK)
 TWITCH = """
 A styloglossus twitch (doc/dynamics.md, "The tongue twitch"): the SG group at FFMR 25 % (as
