@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The airway held open by neural control past its closing suction (doc/airway.md, "Control past
 the closing suction").
 

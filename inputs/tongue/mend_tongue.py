@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Mends the tongue mesh's most distorted elements by moving interior nodes only.
 
 Writes tongue_mended_nodes.txt beside this script: 'id x y z' [m] for every node it moved, read by

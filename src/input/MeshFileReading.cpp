@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "input/DeckPaths.hpp"
 #include "input/DeckVector.hpp"
 #include "io/deck/DeckError.hpp"
 #include "mesh/AnsysReader.hpp"
@@ -15,11 +16,6 @@ namespace glossa::input {
 namespace {
 using Teuchos::Array;
 using Teuchos::ParameterList;
-
-std::string relativeToDeck(const io::Deck &deck, const std::string &path) {
-  const std::filesystem::path q(path);
-  return (q.is_relative() ? std::filesystem::path(deck.file()).parent_path() / q : q).string();
-}
 
 // The ANSYS fibre polylines (Mesh/File/ANSYS fibres), numbered by the components' muscle names.
 void readFibres(const io::Deck &deck, const mesh::AnsysComponents &components, mesh::ImportedMesh &imported) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "input/DeckPaths.hpp"
 #include "input/DeckVector.hpp"
 #include "io/deck/DeckError.hpp"
 #include "io/deck/SpaceTimeExpression.hpp"
@@ -210,11 +211,6 @@ ParameterList namedPointParameters() {
 }
 
 // A path the deck gives, relative to the deck's own directory unless absolute.
-std::string relativeToDeck(const io::Deck &deck, const std::string &path) {
-  const std::filesystem::path q(path);
-  return (q.is_relative() ? std::filesystem::path(deck.file()).parent_path() / q : q).string();
-}
-
 // asRead, when given, receives the file's mesh before Mesh/File/refine (empty when not refined).
 mesh::HexMesh buildMesh(const io::Deck &deck, std::vector<std::string> &notes, mesh::HexMesh *asRead = nullptr) {
   const ParameterList &p = deck.root().sublist("Mesh");
