@@ -182,6 +182,25 @@ void RunReport::interrupted(int signal) {
   }
 }
 
+std::unique_lock<std::recursive_timed_mutex> RunReport::holdOutput() {
+  std::unique_lock<std::recursive_timed_mutex> output(mutex_);
+  if (!root_ || interruptedBy_ == 0) return output;
+  // The signal came while this step was being solved: the watcher marked the summary of the step
+  // before, and traces.csv is about to gain this one. Until this step's summary is published, the
+  // one on disk says that a step was being written (renamed, not synced, as the watcher's).
+  nlohmann::json root;
+  unsigned long version = 0;
+  {
+    std::lock_guard<std::mutex> lock(publishMutex_);
+    if (!published_ || published_->root().value("interrupted_while_writing", false)) return output;
+    root = published_->root();
+    version = publishedVersion_;
+  }
+  markInterrupted(root, interruptedBy_, true);
+  publish(std::move(root), io::Durability::renamedOnly, ".interrupted.tmp", version);
+  return output;
+}
+
 bool RunReport::stopRequested(int step, double t) {
   // Every rank agrees to stop at the same step boundary (a signal may reach them apart).
   int signal = stopSignal(), anySignal = 0;

@@ -59,9 +59,9 @@ public:
   void write(const AssemblyCounters &counters);
   // Held over a commit's whole output, so that an interrupted summary.json does not lag a step
   // behind traces.csv (unless the output outlasts kOutputWait: interrupted()).
-  std::unique_lock<std::recursive_timed_mutex> holdOutput() {
-    return std::unique_lock<std::recursive_timed_mutex>(mutex_);
-  }
+  // Once a stop signal has come, the summary on disk is first marked as cut while this output is
+  // written: mpiexec's kill may land before the step's own summary.
+  std::unique_lock<std::recursive_timed_mutex> holdOutput();
 
   // From here a stop signal ends the run at the next step boundary; the time steps begin at t.
   void beginSteps(double t);
