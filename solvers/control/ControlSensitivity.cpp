@@ -38,7 +38,7 @@ ControlPointSensitivity controlPointSensitivity(const NewtonSolver &newton, cons
   for (std::size_t j = 0; j < n; ++j)
     rhs.getVectorNonConst(j)->update(-1.0, *DfDp->getVector(static_cast<std::size_t>(groups[j])), 0.0);
   ControlPointSensitivity result;
-  result.krylovIterations = newton.solveTangent(u, rhs, x);
+  result.krylovIterations = newton.solveSensitivities(u, rhs, x);
   result.responses = solution;
 
   // dg/dp = DgDx^T X (gradient form: DgDx's columns are d g_i / dx).

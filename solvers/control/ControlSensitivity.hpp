@@ -5,7 +5,7 @@
 //
 //   dg/dp = -DgDx W^{-1} DfDp,
 //
-// W the tangent at the converged state (NewtonSolver::solveTangent: one Krylov solve per input,
+// W the tangent at the converged state (NewtonSolver::solveSensitivities: a Krylov solve per input,
 // one preconditioner for all). DfDp comes from the model by finite differences in the groups'
 // activations times d alpha / d u of the backward-Euler activation step (ActivationDynamics).
 // W is the tangent of the model's volumetric laws and multipliers (p1) as they stand. With the

@@ -24,4 +24,15 @@ LinearSolveChoice chooseLinearSolve(const LinearSolverParameters &s, const Linea
   return c;
 }
 
+// Measured on the medium tongue (20,097 unknowns, 2 ranks, the supine gradient deck's first 8
+// steps: doc/performance.md): a sensitivity's 11 right-hand sides took 3.9 s with MueLu and Block
+// GMRES against 2.0 s factored by MUMPS (1.45 s of it the factorisation). With one right-hand
+// side, or far above that size, the Krylov solve is the cheaper; the larger meshes are not
+// measured, hence the limit near the measured size.
+bool directSensitivitySolve(const LinearSolverParameters &s, const LinearProblem &p) {
+  if (s.sensitivitySolve != SensitivitySolve::automatic) return s.sensitivitySolve == SensitivitySolve::direct;
+  const LinearSolveChoice newton = chooseLinearSolve(s, p);
+  return newton.direct ? s.directSolver == DirectSolver::mumps : p.unknowns <= kSensitivityDirectUpTo;
+}
+
 } // namespace glossa::solvers

@@ -27,4 +27,10 @@ long long autoDirectLimit(const LinearSolverParameters &section, const LinearPro
 
 LinearSolveChoice chooseLinearSolve(const LinearSolverParameters &section, const LinearProblem &problem);
 
+// Whether a controller's sensitivities (one tangent, a right-hand side per muscle group) are
+// factored by MUMPS afresh: `sensitivity solve = direct`; auto where Newton's solve is MUMPS, and
+// beside an iterative one up to kSensitivityDirectUpTo unknowns; never with `as Newton`.
+constexpr long long kSensitivityDirectUpTo = 30000;
+bool directSensitivitySolve(const LinearSolverParameters &section, const LinearProblem &problem);
+
 } // namespace glossa::solvers

@@ -238,6 +238,20 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &
   return p;
 }
 
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> directTangentSolver(const LinearSolverParameters &section,
+                                                                              LinearSolverContext context) {
+  LinearSolverParameters direct = section;
+  direct.type = LinearSolverType::direct;
+  direct.directSolver = DirectSolver::mumps;
+  direct.directReuseIterations = 0; // each tangent is a new state's
+  // Gathered where Newton's direct solve is (so that runs and restarts stay the same bit for bit),
+  // else distributed (unless the deck gathers it).
+  const bool gathered = chooseLinearSolve(section, {context.globalRows, context.ranks}).gathered;
+  direct.directDistribution = gathered ? DirectDistribution::gathered : DirectDistribution::distributed;
+  context.direct = true;
+  return buildLinearSolver(direct, context);
+}
+
 namespace {
 void registerPreconditioners(Stratimikos::DefaultLinearSolverBuilder &builder) {
   registerMueLu(builder);

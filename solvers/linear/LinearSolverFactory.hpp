@@ -43,6 +43,9 @@ struct LinearSolverPlan {
   bool direct = false;
   ReuseScope keptScope = ReuseScope::newtonSolve;
   std::string description; // "direct (MUMPS)", "iterative (MueLu)"
+  // A controller's sensitivities are factored by MUMPS: the Newton solves' are, or `sensitivity
+  // solve` chose it beside an iterative one (set by the run, which knows whether it is controlled).
+  bool directSensitivities = false;
 };
 LinearSolverPlan planLinearSolver(const LinearSolverParameters &section, const LinearSolverContext &context,
                                   bool mixedBlockSolve);
@@ -53,6 +56,12 @@ Teuchos::RCP<Teuchos::ParameterList> stratimikosParameters(const LinearSolverPar
 
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>
 buildLinearSolver(const LinearSolverParameters &section, const LinearSolverContext &context);
+
+// MUMPS for a controller's sensitivities (Linear solver/sensitivity solve): a fresh factorisation of
+// every tangent, which Newton's kept factors never stand in for; gathered onto rank 0 where the
+// section's own direct solve would be, distributed over the ranks otherwise.
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> directTangentSolver(const LinearSolverParameters &section,
+                                                                              LinearSolverContext context);
 
 // For the mixed block solve (solvers/linear/MixedBlockSolver): the preconditioner of the displacement
 // block as the section says (MueLu, FROSch, Ifpack2 or none), and Belos GMRES with the section's

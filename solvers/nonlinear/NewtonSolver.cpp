@@ -304,6 +304,17 @@ int NewtonSolver::solveWithLastTangent(const assembly::MultiVector &rhs, assembl
 
 int NewtonSolver::solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs,
                                assembly::MultiVector &x, double relativeTolerance) const {
+  return solveTangentWith(*model_->get_W_factory(), u, rhs, x, relativeTolerance);
+}
+
+int NewtonSolver::solveSensitivities(const assembly::Vector &u, const assembly::MultiVector &rhs,
+                                     assembly::MultiVector &x) const {
+  return solveTangentWith(sensitivitySolver_.is_null() ? *model_->get_W_factory() : *sensitivitySolver_, u, rhs, x, -1.0);
+}
+
+int NewtonSolver::solveTangentWith(const Thyra::LinearOpWithSolveFactoryBase<double> &factory, const assembly::Vector &u,
+                                   const assembly::MultiVector &rhs, assembly::MultiVector &x,
+                                   double relativeTolerance) const {
   TEUCHOS_TEST_FOR_EXCEPTION(!model_->mixedPressure().is_null(), std::logic_error,
                              "tangent solves are of the condensed tangent; the mixed method has none");
   model_->resetIterates(u);
@@ -318,7 +329,7 @@ int NewtonSolver::solveTangent(const assembly::Vector &u, const assembly::MultiV
     out.set_W_op(W);
     model_->evalModel(in, out);
     if (!model_->lastStatus().valid) throw std::runtime_error("tangent solve: an element is inverted at the state");
-    lows = Thyra::linearOpWithSolve<double>(*model_->get_W_factory(), W);
+    lows = Thyra::linearOpWithSolve<double>(factory, W);
   }
   const assembly::PartTimer timer(assembly::TimedPart::tangentSolve);
   return solveWith(*lows, rhs, x, relativeTolerance, "tangent solve");

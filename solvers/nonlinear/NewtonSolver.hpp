@@ -56,6 +56,14 @@ public:
   // `relativeTolerance` > 0 replaces the deck's linear tolerance (a caller that needs a few digits).
   int solveTangent(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x,
                    double relativeTolerance = -1.0) const;
+  // solveTangent for a controller's sensitivities (a right-hand side per muscle group), with the
+  // linear solver setSensitivitySolver gave, else the Newton solves'.
+  int solveSensitivities(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x) const;
+  // Linear solver/sensitivity solve chose MUMPS where Newton's solves are iterative: one
+  // factorisation for all the right-hand sides of a tangent.
+  void setSensitivitySolver(Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> factory) {
+    sensitivitySolver_ = std::move(factory);
+  }
   // The same for one right-hand side with the linear solver the Newton solves keep (MueLu reuse
   // scope = step or run), so its preconditioner is updated by the reuse rule rather than built
   // anew; without a kept solver, solveTangent.
@@ -103,6 +111,9 @@ private:
   bool keepLinearSolver_;
   mutable Teuchos::RCP<NOX::Thyra::Group> group_; // kept between solves when keepLinearSolver_
   mutable Teuchos::RCP<NOX::Thyra::Group> lastGroup_; // the last solve's that iterated: its linear solver
+  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> sensitivitySolver_; // null: the model's
+  int solveTangentWith(const Thyra::LinearOpWithSolveFactoryBase<double> &factory, const assembly::Vector &u,
+                       const assembly::MultiVector &rhs, assembly::MultiVector &x, double relativeTolerance) const;
 };
 
 } // namespace glossa::solvers

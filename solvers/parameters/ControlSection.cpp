@@ -89,7 +89,8 @@ ParameterList controlParameters() {
                     "Uzawa loop's (the physical bulk modulus capped at 'sensitivity penalty ratio' mu, the "
                     "multipliers following the pressures); inner: the Newton solves' own at fixed multipliers "
                     "(an error of order mu / kappa_AL; the GA's prediction seed always uses it); auto: constrained "
-                    "with a direct linear solve, inner with an iterative one (doc/control.md, 'The sensitivities')",
+                    "where the sensitivities are solved directly (Linear solver/sensitivity solve), inner where "
+                    "by a Krylov method (doc/control.md, 'The sensitivities')",
                     {"auto", "constrained", "inner"});
   io::declareDouble(p, "sensitivity penalty ratio", 1e3, "",
                     "the constrained sensitivity tangent's cap on the bulk modulus, in units of mu",

@@ -41,6 +41,12 @@ Teuchos::ParameterList linearSolverParameters() {
                     "lose their quadratic convergence; measured: doc/incompressibility.md) or run (kept across "
                     "steps while they serve; a restarted run's iterates differ within the solver tolerances)",
                     {"Newton solve", "step", "run"});
+  io::declareString(p, "sensitivity solve", "auto",
+                    "a controller's sensitivities (one tangent, a right-hand side per muscle group): direct "
+                    "(MUMPS factors each such tangent afresh, once for all its right-hand sides), as Newton "
+                    "(Newton's solver: its Krylov method, or its factors); auto: direct where Newton's solve is "
+                    "MUMPS, and beside an iterative one up to 30,000 unknowns (measured: doc/performance.md)",
+                    {"auto", "as Newton", "direct"});
   io::declareString(p, "Krylov method", "auto",
                     "auto: CG while the tangent is symmetric, GMRES otherwise", {"auto", "cg", "gmres"});
   io::declareString(p, "preconditioner", "MueLu",
@@ -134,6 +140,10 @@ LinearSolverParameters parseLinearSolverParameters(const Teuchos::ParameterList 
                                                          : DirectDistribution::automatic;
   p.directReuseIterations = s.get<int>("direct reuse iterations");
   p.directReuseScope = reuseScopeOf(s.get<std::string>("direct reuse scope"));
+  const std::string sensitivity = s.get<std::string>("sensitivity solve");
+  p.sensitivitySolve = sensitivity == "direct"      ? SensitivitySolve::direct
+                       : sensitivity == "as Newton" ? SensitivitySolve::asNewton
+                                                    : SensitivitySolve::automatic;
   const std::string krylov = s.get<std::string>("Krylov method");
   p.krylovMethod = krylov == "cg" ? KrylovMethod::cg : krylov == "gmres" ? KrylovMethod::gmres : KrylovMethod::automatic;
   p.preconditionerName = s.get<std::string>("preconditioner");

@@ -23,6 +23,9 @@ enum class EigenvalueMethod { lanczos, power };
 // How long a MueLu hierarchy, or MUMPS factors, reused between Newton iterations live before they
 // are rebuilt.
 enum class ReuseScope { newtonSolve, step, run };
+// The tangent solves outside Newton (a controller's sensitivities, the GA seed's responses, the
+// limit-point monitor's path stiffness): with the Newton solves' solver, or factored by MUMPS.
+enum class SensitivitySolve { automatic, asNewton, direct };
 
 // The defaults are the declared ones (linearSolverParameters()).
 struct LinearSolverParameters {
@@ -32,6 +35,7 @@ struct LinearSolverParameters {
   DirectDistribution directDistribution = DirectDistribution::automatic;
   int directReuseIterations = 10;
   ReuseScope directReuseScope = ReuseScope::step;
+  SensitivitySolve sensitivitySolve = SensitivitySolve::automatic;
   KrylovMethod krylovMethod = KrylovMethod::automatic;
   Preconditioner preconditioner = Preconditioner::mueLu;
   FroschCoarseSpace froschCoarseSpace = FroschCoarseSpace::gdsw;

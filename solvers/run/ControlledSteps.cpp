@@ -144,9 +144,10 @@ ControlPointSensitivity ControlledSteps::keptSensitivity(const std::vector<doubl
     const ConstrainedTangent constrainedTangent(*augmentation_, results, kept_.u, kept_.lambda,
                                                 p.sensitivityPenaltyRatio);
     parts_.model.setMultipliers(constrainedTangent.multipliers());
-    // Fresh factors: the last solve's, of the inner tangent, precondition this one poorly (16
-    // block Krylov iterations per sensitivity on the tongue instead of 1-2).
-    MumpsPreconditionerFactory::beginNewtonSolve();
+    // Fresh factors where Newton's direct solver serves the sensitivities (sensitivity solve =
+    // as Newton): the last solve's, of the inner tangent, precondition this one poorly (16 block
+    // Krylov iterations per sensitivity on the tongue instead of 1-2), in any reuse scope but run.
+    MumpsPreconditionerFactory::beginStep();
     s = controlPointSensitivity(parts_.newton, kept_.u, groups);
     if (start)
       start->record(inputs, groups, s.responses, std::move(pressure),

@@ -18,6 +18,7 @@
 #include "solvers/control/CommControlGroups.hpp"
 #include "solvers/run/AirflowCoupling.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
+#include "solvers/linear/LinearSolverChoice.hpp"
 #include "solvers/linear/MixedBlockSolver.hpp"
 #include "solvers/nonlinear/NewtonSolver.hpp"
 #include "solvers/parameters/RunChecks.hpp"
@@ -90,6 +91,13 @@ void buildSolvers(RunParts &run) {
   for (const auto &x : scene.mesh.nodes) lengthScale = std::max(lengthScale, x.norm());
   run.newton = std::make_unique<NewtonSolver>(run.model, config.newton, lengthScale, config.linear.tolerance,
                                               run.linearPlan.keptScope != ReuseScope::newtonSolve);
+  // A controller's sensitivities: factored afresh by MUMPS of their own, or by Newton's solver.
+  run.linearPlan.directSensitivities = run.linearPlan.direct;
+  if (run.control.enabled && mixedPressure.is_null() &&
+      directSensitivitySolve(config.linear, {context.globalRows, context.ranks})) {
+    run.newton->setSensitivitySolver(directTangentSolver(config.linear, context));
+    run.linearPlan.directSensitivities = true;
+  }
   run.uzawa = std::make_unique<UzawaLoop>(assembly::ResultEvaluator(*run.assembler), *run.newton,
                                           config.incompressibility, *run.augmentation);
   // Every candidate of a controlled step must see the same kappa_AL.
@@ -116,6 +124,8 @@ void describeRun(RunParts &run) {
   const double mu = augmentation.mu(0), kappaT = augmentation.tangentLaws()[0].kappa();
   const Teuchos::RCP<const Teuchos::Comm<int>> &solverComm = run.groups->groupComm();
   doc["linear_solver"] = run.linearPlan.description; // what Linear solver/type = auto chose
+  if (run.control.enabled)
+    doc["sensitivity_solve"] = run.linearPlan.directSensitivities ? "direct (MUMPS)" : run.linearPlan.description;
   for (const std::string &warning : ignoredIterativeSettings(run.config, run.linearPlan.direct,
                                                              run.assembler->layout().numGlobalDofs()))
     run.report->warn(warning);
@@ -254,12 +264,13 @@ std::unique_ptr<RunParts> setUpRun(const io::Deck &deck, const RunConfiguration 
   if (run->control.enabled) {
     // The sensitivity tangent (ControllerParameters::sensitivityTangent) of the gradient
     // controller's sensitivities and of the responses the GA's candidates start along: the
-    // constrained one costs MueLu more Krylov iterations than it saves (doc/control.md).
+    // constrained one costs MueLu more Krylov iterations than it saves (doc/control.md), and a
+    // factorisation nothing more.
     const control::ControllerParameters &cp = run->control.parameters;
     const bool augmented = run->config.incompressibility.method == IncompressibilityMethod::augmentedLagrangian;
     const bool constrainedSensitivity =
         augmented && (cp.sensitivityTangent == control::SensitivityTangent::constrained ||
-         (cp.sensitivityTangent == control::SensitivityTangent::automatic && run->linearPlan.direct));
+         (cp.sensitivityTangent == control::SensitivityTangent::automatic && run->linearPlan.directSensitivities));
     std::optional<std::uintmax_t> resumeAt;
     if (run->restart && run->restart->outputs.csvBytes.count("controls.csv"))
       resumeAt = run->restart->outputs.csvBytes.at("controls.csv");

@@ -56,6 +56,20 @@ TEST(GradientControl, SensitivitiesMatchDifferencesOfFullSolves) {
   EXPECT_GE(expectSensitivitiesMatch(r), 2);  // measured 6.5e-6
 }
 
+// Beside Newton's iterative solves (MueLu), `sensitivity solve = auto` factors the sensitivities'
+// tangent with MUMPS (one factorisation, a right-hand side per group): the summary says so, and
+// the sensitivities still match differences of full solves; `as Newton` keeps the Krylov solve.
+TEST(GradientControl, SensitivitiesFactoredBesideIterativeNewtonSolves) {
+  for (const std::string choice : {"auto", "as Newton"}) {
+    const auto r = checkedBlock("0.1", {"Linear solver/type=iterative", "Linear solver/sensitivity solve=" + choice},
+                                "gradient_sensitivity_solve_" + choice.substr(0, 2));
+    ASSERT_TRUE(r.at("converged").get<bool>()) << choice;
+    EXPECT_EQ(r.at("linear_solver").get<std::string>(), "iterative (MueLu)");
+    EXPECT_EQ(r.at("sensitivity_solve").get<std::string>(), choice == "auto" ? "direct (MUMPS)" : "iterative (MueLu)");
+    EXPECT_GE(expectSensitivitiesMatch(r), 1) << choice;
+  }
+}
+
 // The same block pressed against a rigid lid: its +y face, where the control points are, starts
 // 20 um into a plane (penalty contact, 1e8 Pa/m, enforced by penalty so that the tangent is the
 // exact linearisation) and stays in contact at every step. The sensitivities come from the

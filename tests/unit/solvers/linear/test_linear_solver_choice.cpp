@@ -82,5 +82,23 @@ TEST(LinearSolverChoice, TypeDirectIsDistributedUnlessTheDeckGathersIt) {
   EXPECT_FALSE(chooseLinearSolve(a, {486, 2}).gathered);
 }
 
+// A controller's sensitivities beside iterative Newton solves: factored by MUMPS up to the
+// medium tongue's size, where it was measured to halve their cost; the deck's choice either way.
+TEST(LinearSolverChoice, SensitivitiesAreFactoredUpToTheMeasuredSize) {
+  auto s = section(LinearSolverType::automatic);
+  EXPECT_TRUE(directSensitivitySolve(s, {20097, 2}));
+  EXPECT_TRUE(directSensitivitySolve(s, {kSensitivityDirectUpTo, 1}));
+  EXPECT_FALSE(directSensitivitySolve(s, {kSensitivityDirectUpTo + 1, 2}));
+  EXPECT_TRUE(directSensitivitySolve(s, {2838, 2})); // where Newton's solve is MUMPS
+  s.directSolver = DirectSolver::klu2;
+  EXPECT_FALSE(directSensitivitySolve(s, {2838, 1})); // KLU2 is kept for comparison
+  EXPECT_TRUE(directSensitivitySolve(s, {20097, 1}));
+  s.sensitivitySolve = SensitivitySolve::asNewton;
+  EXPECT_FALSE(directSensitivitySolve(s, {20097, 2}));
+  EXPECT_FALSE(directSensitivitySolve(s, {2838, 2}));
+  s.sensitivitySolve = SensitivitySolve::direct;
+  EXPECT_TRUE(directSensitivitySolve(s, {151167, 2}));
+}
+
 } // namespace
 } // namespace glossa::solvers
