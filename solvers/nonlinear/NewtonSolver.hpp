@@ -59,8 +59,8 @@ public:
   // solveTangent for a controller's sensitivities (a right-hand side per muscle group), with the
   // linear solver setSensitivitySolver gave, else the Newton solves'.
   int solveSensitivities(const assembly::Vector &u, const assembly::MultiVector &rhs, assembly::MultiVector &x) const;
-  // Linear solver/sensitivity solve chose MUMPS where Newton's solves are iterative: one
-  // factorisation for all the right-hand sides of a tangent.
+  // Linear solver/sensitivity solve chose MUMPS of their own: one fresh factorisation for all the
+  // right-hand sides of a tangent, whatever Newton's solver keeps.
   void setSensitivitySolver(Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> factory) {
     sensitivitySolver_ = std::move(factory);
   }

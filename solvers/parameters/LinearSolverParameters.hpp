@@ -23,8 +23,8 @@ enum class EigenvalueMethod { lanczos, power };
 // How long a MueLu hierarchy, or MUMPS factors, reused between Newton iterations live before they
 // are rebuilt.
 enum class ReuseScope { newtonSolve, step, run };
-// The tangent solves outside Newton (a controller's sensitivities, the GA seed's responses, the
-// limit-point monitor's path stiffness): with the Newton solves' solver, or factored by MUMPS.
+// A controller's sensitivities (also the responses the GA's candidates start along): with the
+// Newton solves' solver, or factored afresh by MUMPS (LinearSolverChoice: directSensitivitySolve).
 enum class SensitivitySolve { automatic, asNewton, direct };
 
 // The defaults are the declared ones (linearSolverParameters()).
