@@ -144,23 +144,32 @@ ControlStepResult ControlDriver::step(int committedSteps, const std::vector<doub
 void ControlDriver::searchGenetic(Search &search, int committedSteps, const std::vector<double> &previousInputs) {
   const std::vector<int> &evaluated = search.result.evaluated;
   const auto groupCount = static_cast<std::size_t>(groups_.count());
-  const auto mine = static_cast<std::size_t>(groups_.mine());
   long evaluatedSoFar = 0;
   std::size_t failedInGenerations = 0; // over all groups: every rank sees every value
   auto evaluate = [&](const std::vector<control::Genome> &genomes) {
-    // Candidate i of the batch is solved by control group i mod G; every rank then sees every
-    // objective, each taken from the group that solved it.
+    // With several control groups each group takes the batch's next unsolved candidate when it is
+    // done with one (claim), so a group that drew quick solves (or failures) is not left waiting
+    // for the other; every rank then sees every objective, each taken from the group that solved
+    // it. A candidate's solve starts from the step's own state whichever group solves it, so the
+    // objectives do not depend on who took what (regression.*_ga_control_groups).
     std::vector<double> values(genomes.size(), 0.0);
     std::vector<bool> known(genomes.size(), false);
+    std::vector<std::vector<double>> inputs(genomes.size());
     for (std::size_t i = 0; i < genomes.size(); ++i) {
-      const auto inputs = control::inputsFromGenome(evaluated, genomes[i], setup_.groupNames.size());
-      known[i] = !search.solvedInputs.empty() && inputs == search.solvedInputs;
+      inputs[i] = control::inputsFromGenome(evaluated, genomes[i], setup_.groupNames.size());
+      known[i] = !search.solvedInputs.empty() && inputs[i] == search.solvedInputs;
       if (known[i]) ++search.reused;
-      if (i % groupCount != mine) continue;
-      values[i] = known[i] ? search.solvedValue
-                           : solveCandidate(search, inputs, true, evaluatedSoFar + static_cast<long>(i)).objective +
-                                 effort(inputs); // +inf stays +inf for a failed solve
     }
+    auto solve = [&](std::size_t i) {
+      values[i] = known[i] ? search.solvedValue
+                           : solveCandidate(search, inputs[i], true, evaluatedSoFar + static_cast<long>(i)).objective +
+                                 effort(inputs[i]); // +inf stays +inf for a failed solve
+    };
+    if (groupCount > 1)
+      for (long i = groups_.claim(genomes.size()); i >= 0; i = groups_.claim(genomes.size()))
+        solve(static_cast<std::size_t>(i));
+    else
+      for (std::size_t i = 0; i < genomes.size(); ++i) solve(i);
     evaluatedSoFar += static_cast<long>(genomes.size());
     if (groupCount > 1) values = groups_.sumOfGroupRoots(values);
     for (std::size_t i = 0; i < genomes.size(); ++i)

@@ -5,6 +5,7 @@
 // must reach every group.
 // Abstract so that the driver tests without MPI; CommControlGroups is the Teuchos one.
 
+#include <cstddef>
 #include <vector>
 
 namespace glossa::solvers {
@@ -21,6 +22,11 @@ public:
   virtual std::vector<double> sumOfGroupRoots(const std::vector<double> &values) const = 0;
   // The buffer of group `from`'s root, size included, on every rank.
   virtual void broadcastFromGroup(int from, std::vector<double> &buffer) const = 0;
+  // A batch of `size` candidates shared out as they finish: the index of the next candidate for
+  // this rank's group to solve, or -1 once every candidate of the batch is taken. Every group
+  // claims each batch to its end (-1), the batches in the same order; the -1 is collective over
+  // the world, the others over this rank's group (its ranks get the same indices).
+  virtual long claim(std::size_t size) const = 0;
 };
 
 // One group: every rank solves every candidate, and nothing is exchanged.
@@ -30,6 +36,14 @@ public:
   int mine() const override { return 0; }
   std::vector<double> sumOfGroupRoots(const std::vector<double> &values) const override { return values; }
   void broadcastFromGroup(int, std::vector<double> &) const override {}
+  long claim(std::size_t size) const override {
+    if (next_ < size) return static_cast<long>(next_++);
+    next_ = 0;
+    return -1;
+  }
+
+private:
+  mutable std::size_t next_ = 0;
 };
 
 } // namespace glossa::solvers

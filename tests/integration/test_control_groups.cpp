@@ -1,7 +1,7 @@
 // Control groups (--control-groups) on the control driver alone, under mpiexec -np 2: two groups of one
-// rank, each solving half of every generation on a linear fake plant (LinearPlant.hpp), pick the
-// same winner, bit for bit, as one group solving every candidate, step after step (seeded by the
-// previous winner), and both groups end holding the winner's state; the work really was shared.
+// rank, sharing every generation's candidates as they finish on a linear fake plant (LinearPlant.hpp),
+// pick the same winner, bit for bit, as one group solving every candidate, step after step (seeded by
+// the previous winner), and both groups end holding the winner's state; no candidate is solved twice.
 #include <cstring>
 
 #include <gtest/gtest.h>
@@ -74,9 +74,9 @@ TEST(ControlGroups, TwoGroupsPickTheWinnerOfOne) {
     EXPECT_EQ(b.solve.newton.at(0).residualNorms, a.inputs) << k; // the winner's statistics
     EXPECT_EQ(sharedPlant.kept(), a.inputs) << k;                  // and its state, in both groups
   }
-  // Each group solved only its share of the candidates.
-  EXPECT_LT(sharedPlant.solves, alonePlant.solves);
-  EXPECT_GT(sharedPlant.solves, 0);
+  // Between them the groups solved every candidate once. Which group took how many depends on
+  // which finished first (the fake plant's solves take microseconds, so one group may take nearly
+  // all): the sharing itself is checked in CommControlGroups.ABusyGroupLeavesTheBatchToTheOther.
   int total = 0;
   Teuchos::reduceAll(*world, Teuchos::REDUCE_SUM, sharedPlant.solves, Teuchos::outArg(total));
   EXPECT_EQ(total, alonePlant.solves);
