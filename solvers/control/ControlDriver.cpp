@@ -160,16 +160,14 @@ void ControlDriver::searchGenetic(Search &search, int committedSteps, const std:
       known[i] = !search.solvedInputs.empty() && inputs[i] == search.solvedInputs;
       if (known[i]) ++search.reused;
     }
-    auto solve = [&](std::size_t i) {
+    const auto solve = [&](std::size_t i) {
       values[i] = known[i] ? search.solvedValue
                            : solveCandidate(search, inputs[i], true, evaluatedSoFar + static_cast<long>(i)).objective +
                                  effort(inputs[i]); // +inf stays +inf for a failed solve
     };
-    if (groupCount > 1)
-      for (long i = groups_.claim(genomes.size()); i >= 0; i = groups_.claim(genomes.size()))
-        solve(static_cast<std::size_t>(i));
-    else
-      for (std::size_t i = 0; i < genomes.size(); ++i) solve(i);
+    // One group claims them all, in order.
+    for (long i = groups_.claim(genomes.size()); i >= 0; i = groups_.claim(genomes.size()))
+      solve(static_cast<std::size_t>(i));
     evaluatedSoFar += static_cast<long>(genomes.size());
     if (groupCount > 1) values = groups_.sumOfGroupRoots(values);
     for (std::size_t i = 0; i < genomes.size(); ++i)
