@@ -48,7 +48,10 @@ class Subject {
     using namespace glossa;
     assembly::DofLayout layout = assembly::distributeScene(scene, comm);
     history_ = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
-    assembler_ = std::make_unique<assembly::Assembler>(scene, std::move(layout), *history_, comm);
+    // Every pass here is at the same state: kept displacement parts would measure their reuse,
+    // not the element work.
+    assembler_ = std::make_unique<assembly::Assembler>(scene, std::move(layout), *history_, comm, nullptr,
+                                                       assembly::ElementParts::Fresh);
     results_ = std::make_unique<assembly::ResultEvaluator>(*assembler_);
     K_ = assembler_->createMatrix();
     u_ = std::make_unique<assembly::Vector>(assembler_->layout().ownedMap());

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -41,6 +42,7 @@ std::string readableDuration(double seconds);
 struct AssemblyCounters {
   double assemblySeconds = 0.0;
   int residualEvaluations = 0, tangentEvaluations = 0, tangentsFromResidualPass = 0, residualOnlyPasses = 0;
+  std::uint64_t elementPartsReused = 0, elementPartsEvaluated = 0;
 };
 AssemblyCounters assemblyCounters(const assembly::ModelEvaluator &model);
 

@@ -13,8 +13,10 @@
 namespace glossa::assembly {
 
 Assembler::Assembler(const model::Scene &scene, DofLayout layout, const model::MuscleHistory &history,
-                     Teuchos::RCP<const Comm> comm, const std::vector<materials::VolumetricEnergy> *tangentLaws)
-    : scene_(scene), layout_(std::move(layout), std::move(comm)), history_(history), tangentLaws_(tangentLaws) {
+                     Teuchos::RCP<const Comm> comm, const std::vector<materials::VolumetricEnergy> *tangentLaws,
+                     ElementParts parts)
+    : scene_(scene), layout_(std::move(layout), std::move(comm)), history_(history),
+      parts_(layout_.localElements.size()), keepParts_(parts == ElementParts::Kept), tangentLaws_(tangentLaws) {
   const mesh::HexMesh &mesh = scene_.mesh;
   if (tangentLaws_ && tangentLaws_->size() != scene_.tissues.size())
     throw std::invalid_argument("Assembler: " + std::to_string(tangentLaws_->size()) + " tangent laws for " +
@@ -384,25 +386,79 @@ fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix 
                                            double lambda, const fem::MixedBase *base, bool extrapolate,
                                            fem::Q1P0Output what) const {
   const auto e = static_cast<std::size_t>(layout_.localElements[i]);
-  const int region = scene_.muscles.hasFibres() ? scene_.muscles.elementRegion[e] : -1;
-  const model::Tissue &tissue = scene_.tissueOf(e);
   const materials::VolumetricEnergy &volumetric = volumetricLaw(e);
-  auto kernel = [&](const fem::QuadraturePointLaw &law) {
-    if (scene_.formulation == model::ElementFormulation::PlainQ1)
-      return fem::evaluatePlainQ1(X, ue, law, volumetric, what);
-    if (base) return fem::evaluateQ1P0Mixed(X, ue, *base, law, volumetric, lambda, extrapolate, what);
-    return fem::evaluateQ1P0(X, ue, law, volumetric, lambda, what);
-  };
-  if (region < 0) return kernel(fem::UniformPointLaw(*tissue.matrix));
+  if (scene_.formulation == model::ElementFormulation::PlainQ1) {
+    const model::Tissue &tissue = scene_.tissueOf(e);
+    const int region = scene_.muscles.hasFibres() ? scene_.muscles.elementRegion[e] : -1;
+    if (region < 0) return fem::evaluatePlainQ1(X, ue, fem::UniformPointLaw(*tissue.matrix), volumetric, what);
+    std::array<const double *, 8> lambdaCOld;
+    std::array<double *, 8> lambdaCStart;
+    for (int q = 0; q < 8; ++q) {
+      lambdaCOld[q] = history_.committedLambdaC(i, q);
+      lambdaCStart[q] = history_.lambdaCStart(i, q);
+    }
+    return fem::evaluatePlainQ1(X, ue,
+                                model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
+                                                      history_.familyActivation(i), history_.dt(), lambdaCOld, nullptr,
+                                                      scene_.muscles.pointDirectionsOf(e), lambdaCStart),
+                                volumetric, what);
+  }
+  const fem::Q1P0DisplacementPart &part = displacementPart(i, X, ue, what).part;
+  if (base) return fem::finishQ1P0Mixed(part, ue, *base, volumetric, lambda, extrapolate, what);
+  return fem::finishQ1P0(part, volumetric, lambda, what);
+}
+
+ElementPartKey Assembler::partKey(std::size_t i, const fem::NodeMatrix &ue) const {
+  ElementPartKey key;
+  key.u = ue;
+  const auto e = static_cast<std::size_t>(layout_.localElements[i]);
+  if (scene_.muscles.hasFibres() && scene_.muscles.elementRegion[e] >= 0) {
+    key.alpha = history_.familyActivation(i);
+    key.dt = history_.dt();
+    key.revision = history_.revision();
+  }
+  return key;
+}
+
+const ElementPart &Assembler::displacementPart(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue,
+                                               fem::Q1P0Output what) const {
+  const ElementPartKey key = partKey(i, ue);
+  if (keepParts_)
+    if (const ElementPart *kept = parts_.find(i, key, what)) {
+      parts_.count(true);
+      return *kept;
+    }
+  parts_.count(false);
+  ElementPart &slot = keepParts_ ? parts_.slot(i, key) : scratchPart_;
+  const auto e = static_cast<std::size_t>(layout_.localElements[i]);
+  const int region = scene_.muscles.hasFibres() ? scene_.muscles.elementRegion[e] : -1;
+  if (region < 0) {
+    slot.part = fem::evaluateDisplacementPart(X, ue, fem::UniformPointLaw(*scene_.tissueOf(e).matrix), what);
+    if (keepParts_) parts_.kept(i);
+    return slot;
+  }
   std::array<const double *, 8> lambdaCOld;
   std::array<double *, 8> lambdaCStart;
   for (int q = 0; q < 8; ++q) {
     lambdaCOld[q] = history_.committedLambdaC(i, q);
     lambdaCStart[q] = history_.lambdaCStart(i, q);
   }
-  return kernel(model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
-                                      history_.familyActivation(i), history_.dt(), lambdaCOld, nullptr,
-                                      scene_.muscles.pointDirectionsOf(e), lambdaCStart));
+  slot.part = fem::evaluateDisplacementPart(
+      X, ue,
+      model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
+                            history_.familyActivation(i), history_.dt(), lambdaCOld, &slot.muscle,
+                            scene_.muscles.pointDirectionsOf(e), lambdaCStart),
+      what);
+  if (keepParts_) parts_.kept(i);
+  return slot;
+}
+
+const model::ElementMuscleResponse *Assembler::keptMuscleResponse(std::size_t i, const fem::NodeMatrix &ue) const {
+  if (!keepParts_) return nullptr;
+  const ElementPart *kept = parts_.find(i, partKey(i, ue), fem::Q1P0Output::ResidualOnly);
+  if (!kept || !kept->part.valid || kept->part.lawFailed) return nullptr;
+  parts_.count(true);
+  return &kept->muscle;
 }
 
 double Assembler::externalForceNorm(double time) const {

@@ -25,6 +25,7 @@
 
 #include "assembly/DistributedLayout.hpp"
 #include "assembly/ElementForceCorrection.hpp"
+#include "assembly/ElementPartCache.hpp"
 #include "assembly/ElementScatter.hpp"
 #include "assembly/LoadContribution.hpp"
 #include "assembly/TpetraTypes.hpp"
@@ -62,8 +63,10 @@ public:
   // `tangentLaws`: each tissue's volumetric law in the tangent (kappa_t; the augmentation's,
   // solvers/incompressibility/Augmentation, which may raise it during a run and which must
   // outlive the assembler); null: the scene's own laws. The scene itself is never changed.
+  // `parts`: whether element passes keep each element's displacement part (ElementPartCache).
   Assembler(const model::Scene &scene, DofLayout layout, const model::MuscleHistory &history,
-            Teuchos::RCP<const Comm> comm, const std::vector<materials::VolumetricEnergy> *tangentLaws = nullptr);
+            Teuchos::RCP<const Comm> comm, const std::vector<materials::VolumetricEnergy> *tangentLaws = nullptr,
+            ElementParts parts = ElementParts::Kept);
 
   const model::Scene &scene() const { return scene_; }
   // Who owns what, with the communicator, the maps and the number of local elements.
@@ -137,6 +140,9 @@ public:
   // Norm of the external force vector at time t (the scale of the Newton tolerance).
   double externalForceNorm(double time) const;
 
+  // Element evaluations finished from a kept displacement part, and evaluated (ElementPartCache).
+  ElementPartCounts elementPartCounts() const { return parts_.counts(); }
+
 private:
   // The ResultEvaluator reports a state from this class's own element and load passes (a
   // reaction is the residual's nodal sum at a support, an element field the same kernel call),
@@ -158,9 +164,18 @@ private:
   // A load target at the overlap displacement.
   LoadTarget loadTarget(const Teuchos::ArrayRCP<const double> &uOverlap, Teuchos::ArrayRCP<double> *fData, FEMatrix *K,
                         bool constrainedToo) const;
-  // The element kernel with the point law of local element i (its muscle law if it has fibres).
+  // The element kernel with the point law of local element i (its muscle law if it has fibres),
+  // finished from its displacement part.
   fem::Q1P0Result evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue, double lambda,
                                   const fem::MixedBase *base, bool extrapolate, fem::Q1P0Output what) const;
+  // Local element i's displacement part at ue: kept from an earlier pass at the same key, or
+  // evaluated now and kept (ElementPartCache).
+  const ElementPart &displacementPart(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue,
+                                      fem::Q1P0Output what) const;
+  ElementPartKey partKey(std::size_t i, const fem::NodeMatrix &ue) const;
+  // What the point laws of muscle element i computed at ue in the kept part, if it is kept at the
+  // history's present key and every point law succeeded; null otherwise.
+  const model::ElementMuscleResponse *keptMuscleResponse(std::size_t i, const fem::NodeMatrix &ue) const;
   // The loads that `which` admits (assembly order: dead tractions, body forces, follower
   // pressures, external muscles, elastic supports) subtracted at (u, t) from the overlap residual
   // (at constrained dofs only if `constrainedToo`) and, with K, their tangent. False if one could
@@ -192,6 +207,9 @@ private:
   mutable std::shared_ptr<const ElementScatter> scatter_;
   mutable const void *scatterPattern_ = nullptr;
   const model::MuscleHistory &history_;
+  mutable ElementPartCache parts_;
+  mutable ElementPart scratchPart_; // the part of a pass that keeps none
+  bool keepParts_;
   const std::vector<materials::VolumetricEnergy> *tangentLaws_; // per tissue; null: the scene's
   // The volumetric law the tangent carries in mesh element e.
   const materials::VolumetricEnergy &volumetricLaw(std::size_t element) const;

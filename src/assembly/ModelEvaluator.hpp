@@ -89,6 +89,9 @@ public:
   int tangentEvaluations() const { return tangentEvaluations_; }
   // Tangents NOX asked for that the residual pass at the same point had already assembled.
   int tangentsFromResidualPass() const { return tangentsFromResidualPass_; }
+  // Element evaluations of this rank's elements: those that finished from a kept displacement
+  // part (assembly/ElementPartCache) and those evaluated.
+  ElementPartCounts elementPartCounts() const { return assembler_->elementPartCounts(); }
   double assemblySeconds() const { return assemblySeconds_; }
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }

@@ -50,12 +50,17 @@ MuscleFields updateMuscleHistory(const ResultEvaluator &results, const Vector &u
         lambdaCOld[q] = history.committedLambdaC(i, q);
         lambdaCStart[q] = history.lambdaCStart(i, q);
       }
-      model::ElementMuscleResponse response;
-      const model::TissuePointLaw law(*r.law, muscles.directions[e], history.familyActivation(i), history.dt(),
-                                      lambdaCOld, &response, muscles.pointDirectionsOf(e), lambdaCStart);
-      materials::PointResponse ignored;
+      model::ElementMuscleResponse evaluated;
       bool ok = fem::quadratureDeformationGradients(X, ue, F, dV);
-      for (int q = 0; ok && q < 8; ++q) ok = F[q].determinant() > 0.0 && law.evaluate(q, F[q], ignored);
+      // The last Newton pass was usually at this state: what its point laws computed is kept.
+      const model::ElementMuscleResponse *kept = ok ? results.keptMuscleResponse(i, ue) : nullptr;
+      if (!kept) {
+        const model::TissuePointLaw law(*r.law, muscles.directions[e], history.familyActivation(i), history.dt(),
+                                        lambdaCOld, &evaluated, muscles.pointDirectionsOf(e), lambdaCStart);
+        materials::PointResponse ignored;
+        for (int q = 0; ok && q < 8; ++q) ok = F[q].determinant() > 0.0 && law.evaluate(q, F[q], ignored);
+      }
+      const model::ElementMuscleResponse &response = kept ? *kept : evaluated;
       if (!ok) {
         localValid = 0;
         continue;

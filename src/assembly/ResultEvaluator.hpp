@@ -111,6 +111,11 @@ public:
   fem::NodeMatrix elementDisplacement(std::size_t localElement, const Teuchos::ArrayRCP<const double> &uOverlap) const {
     return assembler_.elementDisplacement(localElement, uOverlap);
   }
+  // What the point laws of muscle element i computed at ue, when the assembler keeps it from an
+  // earlier pass at the same state (assembly/ElementPartCache); null otherwise.
+  const model::ElementMuscleResponse *keptMuscleResponse(std::size_t localElement, const fem::NodeMatrix &ue) const {
+    return assembler_.keptMuscleResponse(localElement, ue);
+  }
   // A load target at the overlap displacement, for evaluations outside assemble (MuscleResponse).
   LoadTarget loadTarget(const Teuchos::ArrayRCP<const double> &uOverlap, Teuchos::ArrayRCP<double> *fData, FEMatrix *K,
                         bool constrainedToo) const {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/LU>
 
@@ -55,21 +56,21 @@ bool kinematics(const NodeMatrix &X, const NodeMatrix &u, std::array<PointKinema
   return true;
 }
 
-void addPoint(Q1P0Result &r, const PointKinematics &pt, const Eigen::Matrix3d &P,
-              const Tangent9 &A, Q1P0Output what) {
+void addPoint(ElementVector &residual, ElementMatrix &tangent, Eigen::Matrix3d &cauchyIntegral,
+              const PointKinematics &pt, const Eigen::Matrix3d &P, const Tangent9 &A, Q1P0Output what) {
   // R_a = P dN_a/dX; K_ab(i,k) = sum_JL dN_a/dX_J A(iJ,kL) dN_b/dX_L, using the sparsity of the
   // gradient operator B (a third of the flops of the dense B^T A B).
   const Eigen::Matrix<double, 8, 3> &dN = pt.dNdX;
-  for (int a = 0; a < 8; ++a) r.residual.segment<3>(3 * a).noalias() += P * dN.row(a).transpose() * pt.dV;
+  for (int a = 0; a < 8; ++a) residual.segment<3>(3 * a).noalias() += P * dN.row(a).transpose() * pt.dV;
   if (what == Q1P0Output::ResidualAndTangent) {
     Eigen::Matrix<double, 9, 24> AB; // (A B)(iJ, 3b+k) = sum_L A(iJ, kL) dN_b/dX_L
     for (int b = 0; b < 8; ++b)
       for (int k = 0; k < 3; ++k) AB.col(3 * b + k).noalias() = A.middleCols<3>(3 * k) * dN.row(b).transpose();
     for (int a = 0; a < 8; ++a)
       for (int i = 0; i < 3; ++i)
-        r.tangent.row(3 * a + i).noalias() += pt.dV * dN.row(a) * AB.middleRows<3>(3 * i);
+        tangent.row(3 * a + i).noalias() += pt.dV * dN.row(a) * AB.middleRows<3>(3 * i);
   }
-  r.cauchyMean += P * pt.F.transpose() * pt.dV; // int sigma dv = int P F^T dV
+  cauchyIntegral += P * pt.F.transpose() * pt.dV; // int sigma dv = int P F^T dV
 }
 
 } // namespace
@@ -94,23 +95,6 @@ void volumeAndGradient(const std::array<PointKinematics, 8> &pts, double &V, dou
   }
 }
 
-// Adds int (P_iso + p J F^{-T}) : grad N and its tangent at fixed p.
-// False if the point law failed at some point.
-bool addDeviatoricAndPressure(Q1P0Result &r, const std::array<PointKinematics, 8> &pts, double p,
-                              const QuadraturePointLaw &law, Q1P0Output what) {
-  materials::PointResponse iso;
-  for (int q = 0; q < 8; ++q) {
-    const PointKinematics &pt = pts[q];
-    if (!law.evaluate(q, pt.F, iso)) return false;
-    const Eigen::Matrix3d &Finv = pt.Finv;
-    const Eigen::Matrix3d P = iso.P + p * pt.J * Finv.transpose();
-    Tangent9 A;
-    if (what == Q1P0Output::ResidualAndTangent) A = iso.dPdF + p * cofactorDerivative(Finv, pt.J);
-    addPoint(r, pt, P, A, what);
-    r.energy += iso.energy * pt.dV;
-  }
-  return true;
-}
 } // namespace
 
 namespace {
@@ -140,15 +124,66 @@ MixedBase mixedBase(const NodeMatrix &X, const NodeMatrix &u, const MixedBase *p
   return b;
 }
 
-Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const MixedBase &base,
-                             const QuadraturePointLaw &law, const materials::VolumetricEnergy &volumetric,
-                             double lambda, bool extrapolate, Q1P0Output what) {
-  Q1P0Result r;
+Q1P0DisplacementPart evaluateDisplacementPart(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
+                                              Q1P0Output what) {
+  Q1P0DisplacementPart part;
   std::array<PointKinematics, 8> pts;
-  if (!base.valid || !kinematics(X, u, pts, r.minJ) || !(r.minJ > 0.0)) return r;
-  double V = 0.0, v = 0.0;
-  ElementVector g;
-  volumeAndGradient(pts, V, v, g);
+  if (!kinematics(X, u, pts, part.minJ) || !(part.minJ > 0.0)) return part;
+  part.valid = true;
+  volumeAndGradient(pts, part.referenceVolume, part.volume, part.volumeGradient);
+  const bool withTangent = what == Q1P0Output::ResidualAndTangent;
+  // sum_q J dV n n^T over the points, n the spatial gradients flattened (n(3a+i) = n_a,i); its
+  // entries rearranged give the volume's Hessian (d(J F^{-T})/dF contracted with B on both sides).
+  ElementMatrix spatialGradientProducts = ElementMatrix::Zero();
+  materials::PointResponse iso;
+  for (int q = 0; q < 8; ++q) {
+    const PointKinematics &pt = pts[q];
+    if (!law.evaluate(q, pt.F, iso)) {
+      part.lawFailed = true;
+      return part;
+    }
+    addPoint(part.residual, part.tangent, part.cauchyIntegral, pt, iso.P, iso.dPdF, what);
+    part.energy += iso.energy * pt.dV;
+    if (withTangent) {
+      ElementVector n;
+      for (int a = 0; a < 8; ++a) n.segment<3>(3 * a).noalias() = pt.Finv.transpose() * pt.dNdX.row(a).transpose();
+      spatialGradientProducts.selfadjointView<Eigen::Upper>().rankUpdate(n, pt.J * pt.dV);
+    }
+  }
+  if (withTangent) {
+    const ElementMatrix S = spatialGradientProducts.selfadjointView<Eigen::Upper>();
+    for (int a = 0; a < 8; ++a)
+      for (int b = 0; b < 8; ++b)
+        for (int i = 0; i < 3; ++i)
+          for (int k = 0; k < 3; ++k)
+            part.volumeHessian(3 * a + i, 3 * b + k) = S(3 * a + i, 3 * b + k) - S(3 * a + k, 3 * b + i);
+  }
+  part.withTangent = withTangent;
+  return part;
+}
+
+namespace {
+// R = R_iso + p g and K = K_iso + p d2v/du2 (+ the caller's volumetric term), the energy's
+// isochoric part and the mean Cauchy stress (int sigma dv = int P_iso F^T dV + p v I).
+void addPressure(const Q1P0DisplacementPart &part, double p, Q1P0Output what, Q1P0Result &r) {
+  if (what == Q1P0Output::ResidualAndTangent && !part.withTangent)
+    throw std::logic_error("finishQ1P0: the tangent of a displacement part formed without it");
+  r.residual = part.residual + p * part.volumeGradient;
+  if (what == Q1P0Output::ResidualAndTangent) r.tangent = part.tangent + p * part.volumeHessian;
+  r.energy = part.energy;
+  r.cauchyMean = (part.cauchyIntegral + p * part.volume * Eigen::Matrix3d::Identity()) / part.volume;
+}
+} // namespace
+
+Q1P0Result finishQ1P0Mixed(const Q1P0DisplacementPart &part, const NodeMatrix &u, const MixedBase &base,
+                           const materials::VolumetricEnergy &volumetric, double lambda, bool extrapolate,
+                           Q1P0Output what) {
+  Q1P0Result r;
+  if (!base.valid) return r;
+  r.minJ = part.minJ;
+  if (!part.valid) return r;
+  const double V = part.referenceVolume, v = part.volume;
+  const ElementVector &g = part.volumeGradient;
   r.volumeGradient = g;
   double theta = base.theta, p = base.pressure;
   if (extrapolate) extrapolateState(base, u, V, volumetric, lambda, theta, p);
@@ -156,45 +191,49 @@ Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const Mix
   r.referenceVolume = V;
   r.theta = theta;
   r.pressure = p;
-  if (!addDeviatoricAndPressure(r, pts, p, law, what)) {
+  if (part.lawFailed) {
     r.lawFailed = true;
     return r;
   }
+  addPressure(part, p, what, r);
   const double Rp = v - theta * V;
   const double Rtheta = V * (volumetric.dU(theta) - p + lambda);
   const double d2U = volumetric.d2U(theta);
   r.residual += g * ((d2U * Rp + Rtheta) / V);
   if (what == Q1P0Output::ResidualAndTangent) r.tangent.noalias() += (d2U / V) * g * g.transpose();
   r.energy += V * (volumetric.energy(theta) + lambda * (theta - 1.0)) + p * Rp;
-  r.cauchyMean /= v;
   r.forceScale = std::hypot(r.residual.norm(), volumetric.d2U(theta) * std::cbrt(V * V));
   r.valid = true;
   return r;
 }
 
-Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
-                        const materials::VolumetricEnergy &volumetric, double lambda,
-                        Q1P0Output what) {
-  Q1P0Result r;
-  std::array<PointKinematics, 8> pts;
-  if (!kinematics(X, u, pts, r.minJ) || !(r.minJ > 0.0)) return r;
+Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const MixedBase &base,
+                             const QuadraturePointLaw &law, const materials::VolumetricEnergy &volumetric,
+                             double lambda, bool extrapolate, Q1P0Output what) {
+  if (!base.valid) return Q1P0Result{};
+  return finishQ1P0Mixed(evaluateDisplacementPart(X, u, law, what), u, base, volumetric, lambda, extrapolate, what);
+}
 
+Q1P0Result finishQ1P0(const Q1P0DisplacementPart &part, const materials::VolumetricEnergy &volumetric, double lambda,
+                      Q1P0Output what) {
+  Q1P0Result r;
+  r.minJ = part.minJ;
+  if (!part.valid) return r;
   // Condensed dilatation: theta = v / V, and g_a = int J F^{-T} dN_a/dX dV = d v / d u_a.
-  double V = 0.0, v = 0.0;
-  ElementVector g;
-  volumeAndGradient(pts, V, v, g);
+  const double V = part.referenceVolume;
+  const ElementVector &g = part.volumeGradient;
   r.volumeGradient = g;
   r.referenceVolume = V;
-  r.theta = v / V;
+  r.theta = part.volume / V;
   r.pressure = volumetric.dU(r.theta) + lambda;
-  if (!addDeviatoricAndPressure(r, pts, r.pressure, law, what)) {
+  if (part.lawFailed) {
     r.lawFailed = true;
     return r;
   }
+  addPressure(part, r.pressure, what, r);
   if (what == Q1P0Output::ResidualAndTangent)
     r.tangent.noalias() += (volumetric.d2U(r.theta) / V) * g * g.transpose();
   r.energy += V * (volumetric.energy(r.theta) + lambda * (r.theta - 1.0));
-  r.cauchyMean /= v;
   // The pressure's nodal forces p g cancel against the deviatoric ones in the residual, so their
   // size belongs in the round-off scale too: with the mixed method (kappa = 0 here, the pressure
   // an unknown) the residual of a uniform active state is otherwise below its own round-off and
@@ -203,6 +242,11 @@ Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const Quadratu
                             r.pressure * g.norm());
   r.valid = true;
   return r;
+}
+
+Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
+                        const materials::VolumetricEnergy &volumetric, double lambda, Q1P0Output what) {
+  return finishQ1P0(evaluateDisplacementPart(X, u, law, what), volumetric, lambda, what);
 }
 
 Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
@@ -227,7 +271,7 @@ Q1P0Result evaluatePlainQ1(const NodeMatrix &X, const NodeMatrix &u, const Quadr
       const auto c = flatten(JFinvT);
       A = iso.dPdF + p * cofactorDerivative(Finv, pt.J) + volumetric.d2U(pt.J) * c * c.transpose();
     }
-    addPoint(r, pt, P, A, what);
+    addPoint(r.residual, r.tangent, r.cauchyMean, pt, P, A, what);
     r.energy += (iso.energy + volumetric.energy(pt.J)) * pt.dV;
     V += pt.dV;
     v += pt.J * pt.dV;

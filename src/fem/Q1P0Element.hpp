@@ -47,6 +47,35 @@ struct Q1P0Result {
 
 enum class Q1P0Output { ResidualOnly, ResidualAndTangent };
 
+// What the kernel computes from the displacement and the point law alone, before any pressure:
+// every element pass at the same displacement (an Uzawa update changes only Lambda, so the next
+// Newton solve's first pass; the muscle history's and the output's passes at a converged state)
+// finishes from it (finishQ1P0, finishQ1P0Mixed) without evaluating the point laws or forming
+// the element matrices again. With p constant in the element,
+//   R = residual + p g,   K = tangent + p volumeHessian + U''(theta)/V g g^T.
+struct Q1P0DisplacementPart {
+  bool valid = false;       // the kinematics: a regular reference element and J > 0 everywhere
+  bool lawFailed = false;   // a point law failed (valid kinematics)
+  bool withTangent = false; // tangent and volumeHessian were formed
+  double minJ = 1.0;
+  double referenceVolume = 0.0, volume = 0.0; // V and v = int J dV
+  ElementVector volumeGradient = ElementVector::Zero(); // g = dv/du
+  ElementVector residual = ElementVector::Zero();       // int P_iso : grad N dV
+  ElementMatrix tangent = ElementMatrix::Zero();        // int B^T A_iso B dV
+  // d^2 v / du^2 = int J (n_a,i n_b,k - n_a,k n_b,i) dV with n_a = F^{-T} grad N_a: the
+  // pressure's geometric stiffness per unit pressure (the cofactor's derivative, eq. 7).
+  ElementMatrix volumeHessian = ElementMatrix::Zero();
+  double energy = 0.0;                                   // int psi_iso dV
+  Eigen::Matrix3d cauchyIntegral = Eigen::Matrix3d::Zero(); // int P_iso F^T dV
+};
+
+Q1P0DisplacementPart evaluateDisplacementPart(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
+                                              Q1P0Output what);
+// The condensed element (evaluateQ1P0) from its displacement part; `what` may ask the tangent only
+// of a part formed with it.
+Q1P0Result finishQ1P0(const Q1P0DisplacementPart &part, const materials::VolumetricEnergy &volumetric, double lambda,
+                      Q1P0Output what);
+
 // X: reference nodal coordinates; u: nodal displacements; lambda: the element's augmented
 // Lagrange multiplier.
 Q1P0Result evaluateQ1P0(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
@@ -87,6 +116,10 @@ Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const Mix
                              const QuadraturePointLaw &law, const materials::VolumetricEnergy &volumetric,
                              double lambda, bool extrapolate,
                              Q1P0Output what = Q1P0Output::ResidualAndTangent);
+// The same from the displacement part at u.
+Q1P0Result finishQ1P0Mixed(const Q1P0DisplacementPart &part, const NodeMatrix &u, const MixedBase &base,
+                           const materials::VolumetricEnergy &volumetric, double lambda, bool extrapolate,
+                           Q1P0Output what);
 inline Q1P0Result evaluateQ1P0Mixed(const NodeMatrix &X, const NodeMatrix &u, const MixedBase &base,
                                     const materials::IsochoricMaterial &material,
                                     const materials::VolumetricEnergy &volumetric, double lambda,

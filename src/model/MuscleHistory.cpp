@@ -42,6 +42,7 @@ void MuscleHistory::beginStep(double tNew, double dt, const std::vector<double> 
                                 std::to_string(alpha_.size()) + " muscle groups");
   dt_ = dt;
   timeTrial_ = tNew;
+  ++revision_;
   if (!architecture_) return;
   for (std::size_t g = 0; g < alpha_.size(); ++g) {
     inputTrial_[g] = inputs.empty() ? input(static_cast<int>(g), tNew) : std::clamp(inputs[g], 0.0, 1.0);
@@ -107,6 +108,7 @@ void MuscleHistory::commit() {
   externalLambdaC_ = externalLambdaCTrial_;
   alpha_ = alphaTrial_;
   time_ = timeTrial_;
+  ++revision_;
 }
 
 MuscleHistory::Snapshot MuscleHistory::snapshot() const {
@@ -125,6 +127,7 @@ void MuscleHistory::restore(const Snapshot &state) {
   externalLambdaC_ = externalLambdaCTrial_ = state.externalLambdaC;
   time_ = timeTrial_ = state.time;
   dt_ = state.dt;
+  ++revision_;
 }
 
 } // namespace glossa::model

@@ -10,6 +10,7 @@
 // begins again: nothing committed has changed. So a controller may evaluate many candidate
 // inputs from one committed state.
 
+#include <cstdint>
 #include <vector>
 
 #include "materials/MuscleMaterial.hpp"
@@ -81,6 +82,11 @@ public:
   // Throws std::invalid_argument if its sizes are not this history's (another mesh or partition).
   void restore(const Snapshot &state);
 
+  // Changes whenever what a point law reads here may have changed, other than the trial
+  // activation (beginStep, commit, restore): the committed lambda_c, the step size, and the
+  // starts of the local solves. What was evaluated under another revision is stale.
+  std::uint64_t revision() const { return revision_; }
+
 private:
   const MuscleArchitecture *architecture_ = nullptr;
   std::vector<int> region_;         // per local element
@@ -91,6 +97,7 @@ private:
   std::vector<double> alpha_, alphaTrial_, inputTrial_;
   // dt before the first step: any positive value (the reference state has no rate).
   double time_ = 0.0, dt_ = 1.0, timeTrial_ = 0.0;
+  std::uint64_t revision_ = 0;
 };
 
 } // namespace glossa::model

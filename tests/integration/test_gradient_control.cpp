@@ -18,6 +18,7 @@
 #include <Thyra_VectorStdOps.hpp>
 
 #include "CsvRows.hpp"
+#include "MuscleBlockScene.hpp"
 #include "RunDeck.hpp"
 #include "assembly/ModelEvaluator.hpp"
 #include "assembly/ResultEvaluator.hpp"
@@ -215,12 +216,7 @@ TEST(GradientControl, HoldsTheCornerWithContinuousInputs) {
 TEST(ModelParameters, InputDerivativeResponseAndMultipliers) {
   using MEB = Thyra::ModelEvaluatorBase;
   using Extract = Thyra::TpetraOperatorVectorExtraction<double, assembly::LO, assembly::GO, assembly::Node>;
-  const auto schema = app::deckSchema();
-  auto deck = io::Deck::fromFile(test::inputPath("paper/s7_2_gradient.xml"));
-  deck.applyOverride("Mesh/Box/cells={3,3,3}", schema);
-  deck.applyOverride("Material/Poisson's ratio=0.45", schema); // a finite kappa: the scene's own law
-  deck.validate(schema);
-  const model::Scene scene = input::buildScene(deck, 1.0);
+  const model::Scene scene = test::smallMuscleBlockScene();
   const auto comm = Tpetra::getDefaultComm();
   assembly::DofLayout layout = assembly::distributeScene(scene, comm);
   model::MuscleHistory history(scene.muscles, layout.localElements);

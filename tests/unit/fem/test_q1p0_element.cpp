@@ -239,3 +239,63 @@ TEST(Q1P0Element, VolumeGradientIsTheDerivativeOfTheCurrentVolume) {
   ASSERT_TRUE(fem::elementVolumeGradient(X, uh, V, v, g));
   EXPECT_NEAR(v, V * F.determinant(), 1e-12 * V);
 }
+
+namespace {
+// A distorted element at a small random displacement, and its displacement part with the tangent.
+struct PartSample : Fixture {
+  explicit PartSample(unsigned seed)
+      : rng(seed), X(distortedHex(rng)), u(fem::testing::randomNodalDisplacement(rng, 1e-4)), law(iso),
+        part(fem::evaluateDisplacementPart(X, u, law, fem::Q1P0Output::ResidualAndTangent)) {}
+  std::mt19937 rng;
+  NodeMatrix X, u;
+  fem::UniformPointLaw law;
+  fem::Q1P0DisplacementPart part;
+};
+} // namespace
+
+// The volume's Hessian in the displacement part (the pressure's geometric stiffness per unit
+// pressure) is the derivative of its volume gradient: central differences of g(u).
+TEST(Q1P0Element, VolumeHessianIsTheDerivativeOfTheVolumeGradient) {
+  const PartSample sample(11);
+  const NodeMatrix &X = sample.X, &u = sample.u;
+  const fem::Q1P0DisplacementPart &part = sample.part;
+  const fem::UniformPointLaw &law = sample.law;
+  ASSERT_TRUE(part.valid && part.withTangent);
+  fem::ElementMatrix fd;
+  const double h = 1e-9;
+  for (int c = 0; c < 24; ++c) {
+    NodeMatrix up = u, um = u;
+    up(c / 3, c % 3) += h;
+    um(c / 3, c % 3) -= h;
+    fd.col(c) = (fem::evaluateDisplacementPart(X, up, law, fem::Q1P0Output::ResidualOnly).volumeGradient -
+                 fem::evaluateDisplacementPart(X, um, law, fem::Q1P0Output::ResidualOnly).volumeGradient) /
+                (2 * h);
+  }
+  EXPECT_LT((fd - part.volumeHessian).norm(), 1e-6 * part.volumeHessian.norm());
+  EXPECT_LT((part.volumeHessian - part.volumeHessian.transpose()).norm(), 1e-12 * part.volumeHessian.norm());
+}
+
+// One displacement part finishes to the element at any multiplier and base, bit for bit as a
+// whole evaluation there: what lets an Uzawa update reuse the point laws of the state it starts at.
+TEST(Q1P0Element, ADisplacementPartFinishesAtEveryMultiplierAsAWholeEvaluation) {
+  const PartSample f(13);
+  const NodeMatrix &X = f.X, &u = f.u;
+  const fem::Q1P0DisplacementPart &part = f.part;
+  const fem::UniformPointLaw &law = f.law;
+  const fem::MixedBase base = fem::mixedBase(X, 0.9 * u, nullptr, f.vol, 1e4);
+  for (const double lambda : {0.0, 2e5, -7e4}) {
+    const auto whole = fem::evaluateQ1P0(X, u, f.iso, f.vol, lambda);
+    const auto finished = fem::finishQ1P0(part, f.vol, lambda, fem::Q1P0Output::ResidualAndTangent);
+    EXPECT_TRUE(whole.residual == finished.residual && whole.tangent == finished.tangent) << lambda;
+    EXPECT_EQ(whole.energy, finished.energy);
+    EXPECT_EQ(whole.pressure, finished.pressure);
+    const auto wholeMixed = fem::evaluateQ1P0Mixed(X, u, base, f.iso, f.vol, lambda, true);
+    const auto finishedMixed =
+        fem::finishQ1P0Mixed(part, u, base, f.vol, lambda, true, fem::Q1P0Output::ResidualAndTangent);
+    EXPECT_TRUE(wholeMixed.residual == finishedMixed.residual && wholeMixed.tangent == finishedMixed.tangent)
+        << lambda;
+  }
+  // A part formed for the residual alone cannot give a tangent.
+  const auto residualOnly = fem::evaluateDisplacementPart(X, u, law, fem::Q1P0Output::ResidualOnly);
+  EXPECT_THROW(fem::finishQ1P0(residualOnly, f.vol, 0.0, fem::Q1P0Output::ResidualAndTangent), std::logic_error);
+}
