@@ -12,11 +12,23 @@
 
 namespace glossa::assembly {
 
+namespace {
+// Which local elements keep their displacement parts: the muscle elements, unless none should.
+std::vector<char> keptElements(const model::Scene &scene, const std::vector<mesh::ElementId> &localElements,
+                               ElementParts parts) {
+  std::vector<char> keeps(localElements.size(), 0);
+  if (parts == ElementParts::Fresh || !scene.muscles.hasFibres()) return keeps;
+  for (std::size_t i = 0; i < localElements.size(); ++i)
+    keeps[i] = scene.muscles.elementRegion[static_cast<std::size_t>(localElements[i])] >= 0;
+  return keeps;
+}
+} // namespace
+
 Assembler::Assembler(const model::Scene &scene, DofLayout layout, const model::MuscleHistory &history,
                      Teuchos::RCP<const Comm> comm, const std::vector<materials::VolumetricEnergy> *tangentLaws,
                      ElementParts parts)
     : scene_(scene), layout_(std::move(layout), std::move(comm)), history_(history),
-      parts_(layout_.localElements.size()), keepParts_(parts == ElementParts::Kept), tangentLaws_(tangentLaws) {
+      parts_(keptElements(scene_, layout_.localElements, parts)), tangentLaws_(tangentLaws) {
   const mesh::HexMesh &mesh = scene_.mesh;
   if (tangentLaws_ && tangentLaws_->size() != scene_.tissues.size())
     throw std::invalid_argument("Assembler: " + std::to_string(tangentLaws_->size()) + " tangent laws for " +
@@ -411,30 +423,27 @@ fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix 
 ElementPartKey Assembler::partKey(std::size_t i, const fem::NodeMatrix &ue) const {
   ElementPartKey key;
   key.u = ue;
-  const auto e = static_cast<std::size_t>(layout_.localElements[i]);
-  if (scene_.muscles.hasFibres() && scene_.muscles.elementRegion[e] >= 0) {
-    key.alpha = history_.familyActivation(i);
-    key.dt = history_.dt();
-    key.revision = history_.revision();
-  }
+  key.alpha = history_.familyActivation(i);
+  key.dt = history_.dt();
+  key.revision = history_.revision();
   return key;
 }
 
 const ElementPart &Assembler::displacementPart(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue,
                                                fem::Q1P0Output what) const {
-  const ElementPartKey key = partKey(i, ue);
-  if (keepParts_)
+  const bool keep = parts_.keeps(i);
+  const ElementPartKey key = keep ? partKey(i, ue) : ElementPartKey{};
+  if (keep)
     if (const ElementPart *kept = parts_.find(i, key, what)) {
       parts_.count(true);
       return *kept;
     }
   parts_.count(false);
-  ElementPart &slot = keepParts_ ? parts_.slot(i, key) : scratchPart_;
+  ElementPart &slot = keep ? parts_.slot(i, key) : scratchPart_;
   const auto e = static_cast<std::size_t>(layout_.localElements[i]);
   const int region = scene_.muscles.hasFibres() ? scene_.muscles.elementRegion[e] : -1;
   if (region < 0) {
     slot.part = fem::evaluateDisplacementPart(X, ue, fem::UniformPointLaw(*scene_.tissueOf(e).matrix), what);
-    if (keepParts_) parts_.kept(i);
     return slot;
   }
   std::array<const double *, 8> lambdaCOld;
@@ -449,12 +458,12 @@ const ElementPart &Assembler::displacementPart(std::size_t i, const fem::NodeMat
                             history_.familyActivation(i), history_.dt(), lambdaCOld, &slot.muscle,
                             scene_.muscles.pointDirectionsOf(e), lambdaCStart),
       what);
-  if (keepParts_) parts_.kept(i);
+  if (keep) parts_.kept(i);
   return slot;
 }
 
 const model::ElementMuscleResponse *Assembler::keptMuscleResponse(std::size_t i, const fem::NodeMatrix &ue) const {
-  if (!keepParts_) return nullptr;
+  if (!parts_.keeps(i)) return nullptr;
   const ElementPart *kept = parts_.find(i, partKey(i, ue), fem::Q1P0Output::ResidualOnly);
   if (!kept || !kept->part.valid || kept->part.lawFailed) return nullptr;
   parts_.count(true);

@@ -63,7 +63,7 @@ public:
   // `tangentLaws`: each tissue's volumetric law in the tangent (kappa_t; the augmentation's,
   // solvers/incompressibility/Augmentation, which may raise it during a run and which must
   // outlive the assembler); null: the scene's own laws. The scene itself is never changed.
-  // `parts`: whether element passes keep each element's displacement part (ElementPartCache).
+  // `parts`: whether element passes keep each muscle element's displacement part (ElementPartCache).
   Assembler(const model::Scene &scene, DofLayout layout, const model::MuscleHistory &history,
             Teuchos::RCP<const Comm> comm, const std::vector<materials::VolumetricEnergy> *tangentLaws = nullptr,
             ElementParts parts = ElementParts::Kept);
@@ -169,7 +169,7 @@ private:
   fem::Q1P0Result evaluateElement(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue, double lambda,
                                   const fem::MixedBase *base, bool extrapolate, fem::Q1P0Output what) const;
   // Local element i's displacement part at ue: kept from an earlier pass at the same key, or
-  // evaluated now and kept (ElementPartCache).
+  // evaluated now (and kept, for a muscle element: ElementPartCache).
   const ElementPart &displacementPart(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue,
                                       fem::Q1P0Output what) const;
   ElementPartKey partKey(std::size_t i, const fem::NodeMatrix &ue) const;
@@ -208,8 +208,7 @@ private:
   mutable const void *scatterPattern_ = nullptr;
   const model::MuscleHistory &history_;
   mutable ElementPartCache parts_;
-  mutable ElementPart scratchPart_; // the part of a pass that keeps none
-  bool keepParts_;
+  mutable ElementPart scratchPart_; // the part of an element that keeps none
   const std::vector<materials::VolumetricEnergy> *tangentLaws_; // per tissue; null: the scene's
   // The volumetric law the tangent carries in mesh element e.
   const materials::VolumetricEnergy &volumetricLaw(std::size_t element) const;
