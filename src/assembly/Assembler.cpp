@@ -400,20 +400,9 @@ fem::Q1P0Result Assembler::evaluateElement(std::size_t i, const fem::NodeMatrix 
   const auto e = static_cast<std::size_t>(layout_.localElements[i]);
   const materials::VolumetricEnergy &volumetric = volumetricLaw(e);
   if (scene_.formulation == model::ElementFormulation::PlainQ1) {
-    const model::Tissue &tissue = scene_.tissueOf(e);
-    const int region = scene_.muscles.hasFibres() ? scene_.muscles.elementRegion[e] : -1;
-    if (region < 0) return fem::evaluatePlainQ1(X, ue, fem::UniformPointLaw(*tissue.matrix), volumetric, what);
-    std::array<const double *, 8> lambdaCOld;
-    std::array<double *, 8> lambdaCStart;
-    for (int q = 0; q < 8; ++q) {
-      lambdaCOld[q] = history_.committedLambdaC(i, q);
-      lambdaCStart[q] = history_.lambdaCStart(i, q);
-    }
-    return fem::evaluatePlainQ1(X, ue,
-                                model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
-                                                      history_.familyActivation(i), history_.dt(), lambdaCOld, nullptr,
-                                                      scene_.muscles.pointDirectionsOf(e), lambdaCStart),
-                                volumetric, what);
+    if (!isMuscleElement(e))
+      return fem::evaluatePlainQ1(X, ue, fem::UniformPointLaw(*scene_.tissueOf(e).matrix), volumetric, what);
+    return fem::evaluatePlainQ1(X, ue, musclePointLaw(i, nullptr), volumetric, what);
   }
   const fem::Q1P0DisplacementPart &part = displacementPart(i, X, ue, what).part;
   if (base) return fem::finishQ1P0Mixed(part, ue, *base, volumetric, lambda, extrapolate, what);
@@ -441,25 +430,31 @@ const ElementPart &Assembler::displacementPart(std::size_t i, const fem::NodeMat
   parts_.count(false);
   ElementPart &slot = keep ? parts_.slot(i, key) : scratchPart_;
   const auto e = static_cast<std::size_t>(layout_.localElements[i]);
-  const int region = scene_.muscles.hasFibres() ? scene_.muscles.elementRegion[e] : -1;
-  if (region < 0) {
-    slot.part = fem::evaluateDisplacementPart(X, ue, fem::UniformPointLaw(*scene_.tissueOf(e).matrix), what);
+  if (!isMuscleElement(e)) {
+    fem::evaluateDisplacementPart(X, ue, fem::UniformPointLaw(*scene_.tissueOf(e).matrix), what, slot.part);
     return slot;
   }
+  fem::evaluateDisplacementPart(X, ue, musclePointLaw(i, &slot.muscle), what, slot.part);
+  if (keep) parts_.kept(i);
+  return slot;
+}
+
+bool Assembler::isMuscleElement(std::size_t e) const {
+  return scene_.muscles.hasFibres() && scene_.muscles.elementRegion[e] >= 0;
+}
+
+model::TissuePointLaw Assembler::musclePointLaw(std::size_t i, model::ElementMuscleResponse *record) const {
+  const auto e = static_cast<std::size_t>(layout_.localElements[i]);
   std::array<const double *, 8> lambdaCOld;
   std::array<double *, 8> lambdaCStart;
   for (int q = 0; q < 8; ++q) {
     lambdaCOld[q] = history_.committedLambdaC(i, q);
     lambdaCStart[q] = history_.lambdaCStart(i, q);
   }
-  slot.part = fem::evaluateDisplacementPart(
-      X, ue,
-      model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
-                            history_.familyActivation(i), history_.dt(), lambdaCOld, &slot.muscle,
-                            scene_.muscles.pointDirectionsOf(e), lambdaCStart),
-      what);
-  if (keep) parts_.kept(i);
-  return slot;
+  const auto region = static_cast<std::size_t>(scene_.muscles.elementRegion[e]);
+  return model::TissuePointLaw(*scene_.muscles.regions[region].law, scene_.muscles.directions[e],
+                               history_.familyActivation(i), history_.dt(), lambdaCOld, record,
+                               scene_.muscles.pointDirectionsOf(e), lambdaCStart);
 }
 
 const model::ElementMuscleResponse *Assembler::keptMuscleResponse(std::size_t i, const fem::NodeMatrix &ue) const {

@@ -173,6 +173,10 @@ private:
   const ElementPart &displacementPart(std::size_t i, const fem::NodeMatrix &X, const fem::NodeMatrix &ue,
                                       fem::Q1P0Output what) const;
   ElementPartKey partKey(std::size_t i, const fem::NodeMatrix &ue) const;
+  // Whether mesh element e has fibres; the point law of muscle element i (local), writing what
+  // its points compute to `record` when given.
+  bool isMuscleElement(std::size_t e) const;
+  model::TissuePointLaw musclePointLaw(std::size_t i, model::ElementMuscleResponse *record) const;
   // What the point laws of muscle element i computed at ue in the kept part, if it is kept at the
   // history's present key and every point law succeeded; null otherwise.
   const model::ElementMuscleResponse *keptMuscleResponse(std::size_t i, const fem::NodeMatrix &ue) const;

@@ -124,14 +124,20 @@ MixedBase mixedBase(const NodeMatrix &X, const NodeMatrix &u, const MixedBase *p
   return b;
 }
 
-Q1P0DisplacementPart evaluateDisplacementPart(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
-                                              Q1P0Output what) {
-  Q1P0DisplacementPart part;
+void evaluateDisplacementPart(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
+                              Q1P0Output what, Q1P0DisplacementPart &part) {
+  // Reset in place: the part is the caller's kept slot, too large to build and copy per element.
+  part.valid = part.lawFailed = part.withTangent = false;
+  part.minJ = 1.0;
+  part.referenceVolume = part.volume = part.energy = 0.0;
+  part.residual.setZero();
+  part.cauchyIntegral.setZero();
+  const bool withTangent = what == Q1P0Output::ResidualAndTangent;
+  if (withTangent) part.tangent.setZero();
   std::array<PointKinematics, 8> pts;
-  if (!kinematics(X, u, pts, part.minJ) || !(part.minJ > 0.0)) return part;
+  if (!kinematics(X, u, pts, part.minJ) || !(part.minJ > 0.0)) return;
   part.valid = true;
   volumeAndGradient(pts, part.referenceVolume, part.volume, part.volumeGradient);
-  const bool withTangent = what == Q1P0Output::ResidualAndTangent;
   // sum_q J dV n n^T over the points, n the spatial gradients flattened (n(3a+i) = n_a,i); its
   // entries rearranged give the volume's Hessian (d(J F^{-T})/dF contracted with B on both sides).
   ElementMatrix spatialGradientProducts = ElementMatrix::Zero();
@@ -140,7 +146,7 @@ Q1P0DisplacementPart evaluateDisplacementPart(const NodeMatrix &X, const NodeMat
     const PointKinematics &pt = pts[q];
     if (!law.evaluate(q, pt.F, iso)) {
       part.lawFailed = true;
-      return part;
+      return;
     }
     addPoint(part.residual, part.tangent, part.cauchyIntegral, pt, iso.P, iso.dPdF, what);
     part.energy += iso.energy * pt.dV;
@@ -159,7 +165,6 @@ Q1P0DisplacementPart evaluateDisplacementPart(const NodeMatrix &X, const NodeMat
             part.volumeHessian(3 * a + i, 3 * b + k) = S(3 * a + i, 3 * b + k) - S(3 * a + k, 3 * b + i);
   }
   part.withTangent = withTangent;
-  return part;
 }
 
 namespace {

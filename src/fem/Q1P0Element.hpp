@@ -69,8 +69,15 @@ struct Q1P0DisplacementPart {
   Eigen::Matrix3d cauchyIntegral = Eigen::Matrix3d::Zero(); // int P_iso F^T dV
 };
 
-Q1P0DisplacementPart evaluateDisplacementPart(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
-                                              Q1P0Output what);
+// Fills `part` in place (every field it had is replaced).
+void evaluateDisplacementPart(const NodeMatrix &X, const NodeMatrix &u, const QuadraturePointLaw &law,
+                              Q1P0Output what, Q1P0DisplacementPart &part);
+inline Q1P0DisplacementPart evaluateDisplacementPart(const NodeMatrix &X, const NodeMatrix &u,
+                                                     const QuadraturePointLaw &law, Q1P0Output what) {
+  Q1P0DisplacementPart part;
+  evaluateDisplacementPart(X, u, law, what, part);
+  return part;
+}
 // The condensed element (evaluateQ1P0) from its displacement part; `what` may ask the tangent only
 // of a part formed with it.
 Q1P0Result finishQ1P0(const Q1P0DisplacementPart &part, const materials::VolumetricEnergy &volumetric, double lambda,
