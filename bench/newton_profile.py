@@ -39,7 +39,7 @@ import subprocess
 import sys
 import tempfile
 
-from glossa_command import glossa_run_command
+from glossa_command import cpu_seconds_of, glossa_run_command
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(ROOT, "bench", "results", "newton_profile.csv")
@@ -68,14 +68,11 @@ def run_once(glossa, deck, overrides, perf_data=None):
     cmd = glossa_run_command(glossa, deck, out, overrides)
     if perf_data:
         cmd = ["perf", "record", "-q", "-F", "999", "-o", perf_data, "--"] + cmd
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=ROOT)
-    _, status, usage = os.wait4(proc.pid, 0)
-    if status != 0:
-        sys.exit(f"newton_profile: {' '.join(cmd)} exited with {status}")
+    cpu = cpu_seconds_of(cmd, ROOT, "newton_profile")
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
     shutil.rmtree(out, ignore_errors=True)
-    summary["cpu_seconds"] = usage.ru_utime + usage.ru_stime
+    summary["cpu_seconds"] = cpu
     return summary
 
 

@@ -218,6 +218,7 @@ Teuchos::RCP<ParameterList> stratimikosParameters(const LinearSolverParameters &
     p->set("Preconditioner Type", "MUMPS");
     auto &mumps = p->sublist("Preconditioner Types").sublist("MUMPS");
     mumps.set("symmetric", c.symmetric);
+    mumps.set("ordering", s.directOrdering);
     mumps.set("reuse iterations", s.directReuseIterations);
     mumps.set("reuse scope", std::string(s.directReuseScope == ReuseScope::run    ? "run"
                                          : s.directReuseScope == ReuseScope::step ? "step"

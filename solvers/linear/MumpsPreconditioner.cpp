@@ -1,4 +1,5 @@
 #include "solvers/linear/MumpsPreconditioner.hpp"
+#include "solvers/linear/DirectFactorStatistics.hpp"
 
 #include "assembly/TimeSplit.hpp"
 
@@ -28,7 +29,38 @@ MPI_Comm rawComm(const Teuchos::Comm<int> &comm) {
   if (!mpi) throw std::logic_error("MUMPS needs an MPI communicator");
   return *mpi->getRawMpiComm();
 }
+
+// MUMPS's ICNTL(7) for an ordering's name and the unknowns. With neither METIS nor SCOTCH in
+// Debian's build, MUMPS's own choice (7) takes AMF for the small tangents solved directly, which
+// costs 1.6x the flops of PORD (MUMPS's built-in nested dissection) on the coarse tongue and 1.7x
+// on the section 7.1 block (doc/performance.md, "The direct solver's ordering"). PORD ends the
+// process on a graph too small to dissect (a single element: "no valid number of stages in
+// multisector"), so auto takes it only from kPordFrom unknowns, where it also begins to pay.
+constexpr long long kPordFrom = 1000;
+int orderingControl(const std::string &name, long long unknowns) {
+  if (name == "AMD") return 0;
+  if (name == "AMF") return 2;
+  if (name == "QAMD") return 6;
+  if (name == "PORD") return 4;
+  return unknowns >= kPordFrom ? 4 : 7; // auto
+}
+
+std::string orderingName(int infog7) {
+  switch (infog7) {
+  case 0: return "AMD";
+  case 2: return "AMF";
+  case 3: return "SCOTCH";
+  case 4: return "PORD";
+  case 5: return "METIS";
+  case 6: return "QAMD";
+  default: return "other (" + std::to_string(infog7) + ")";
+  }
+}
+
+DirectFactorStatistics lastStatistics;
 } // namespace
+
+const DirectFactorStatistics &lastDirectFactorisation() { return lastStatistics; }
 
 // One MUMPS instance: the pattern of the matrix it analysed, and its current numerical factors.
 // Gathered (on several ranks): MUMPS runs on rank 0 alone, on a communicator of that rank, and the
@@ -36,8 +68,10 @@ MPI_Comm rawComm(const Teuchos::Comm<int> &comm) {
 // work dynamically, so the last bits of its answer vary from run to run; on one rank they do not.
 class MumpsFactorization {
 public:
-  MumpsFactorization(const Teuchos::RCP<const Teuchos::Comm<int>> &comm, bool symmetric, bool gathered)
-      : comm_(comm), symmetric_(symmetric), gathered_(gathered && comm->getSize() > 1) {
+  // `ordering`: the name orderingControl turns into MUMPS's ICNTL(7) at each analysis.
+  MumpsFactorization(const Teuchos::RCP<const Teuchos::Comm<int>> &comm, bool symmetric, bool gathered,
+                     std::string ordering)
+      : comm_(comm), symmetric_(symmetric), gathered_(gathered && comm->getSize() > 1), ordering_(std::move(ordering)) {
     MPI_Comm mumpsComm = rawComm(*comm);
     if (gathered_) {
       MPI_Comm_split(mumpsComm, comm->getRank() == 0 ? 0 : MPI_UNDEFINED, 0, &rootComm_);
@@ -53,7 +87,6 @@ public:
     id_.icntl[3] = 0;
     id_.icntl[17] = 3;  // ICNTL(18): entries given distributed, each rank its owned rows
     id_.icntl[13] = 40; // ICNTL(14): working-space margin, % (pivoting of indefinite tangents needs room)
-    id_.icntl[6] = 7;   // ICNTL(7): ordering chosen by MUMPS (METIS or SCOTCH here)
   }
   ~MumpsFactorization() {
     // Ending the instance is collective (MUMPS frees the communicator it duplicated). While an
@@ -90,6 +123,7 @@ public:
       id_.irn_loc = mumpsRows().data();
       id_.jcn_loc = mumpsCols().data();
       id_.a_loc = mumpsValues().data();
+      id_.icntl[6] = orderingControl(ordering_, n); // ICNTL(7): the fill-reducing ordering
       const assembly::PartTimer timer(assembly::TimedPart::analysis);
       call(1);
       check("analysis");
@@ -108,6 +142,11 @@ public:
       break;
     }
     check("factorisation");
+    if (inMumps_) {
+      // INFOG(29) counts in millions, negated, once it would overflow an int.
+      const double entries = id_.infog[28] >= 0 ? id_.infog[28] : -1e6 * id_.infog[28];
+      lastStatistics = {orderingName(id_.infog[6]), entries, id_.rinfog[2]};
+    }
     factoredMatrix_ = &A;
     factoredEpoch_ = newtonSolveEpoch;
     factoredStep_ = stepEpoch;
@@ -248,6 +287,7 @@ private:
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   bool symmetric_;
   bool gathered_;
+  std::string ordering_;
   MPI_Comm rootComm_ = MPI_COMM_NULL; // gathered: rank 0 alone (MPI_COMM_NULL elsewhere)
   bool inMumps_ = true;               // this rank calls MUMPS
   std::vector<int> counts_, offsets_; // gathered: each rank's entries and where they start
@@ -323,7 +363,8 @@ void MumpsPreconditionerFactory::initializePrec(const Teuchos::RCP<const Thyra::
   const int reuse = params_.is_null() ? 0 : params_->get<int>("reuse iterations", 0);
   const std::string scope = params_.is_null() ? std::string("Newton solve") : params_->get<std::string>("reuse scope");
   const bool gathered = !params_.is_null() && params_->get<bool>("gathered", false);
-  if (!factorization_) factorization_ = std::make_shared<MumpsFactorization>(A->getComm(), symmetric, gathered);
+  const std::string ordering = params_.is_null() ? std::string("auto") : params_->get<std::string>("ordering");
+  if (!factorization_) factorization_ = std::make_shared<MumpsFactorization>(A->getComm(), symmetric, gathered, ordering);
   if (!factorization_->stillServes(*A, reuse, scope)) factorization_->factor(*A);
   auto inverse = Teuchos::rcp(new MumpsInverse(factorization_, A->getDomainMap(), A->getRangeMap()));
   const Teuchos::RCP<Thyra::LinearOpBase<double>> inverseOp =
@@ -363,6 +404,9 @@ Teuchos::RCP<const Teuchos::ParameterList> MumpsPreconditionerFactory::getValidP
     p->set("reuse scope", std::string("Newton solve"),
            "how long kept factors live: Newton solve, step (beginStep) or run",
            Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("Newton solve", "step", "run"))));
+    p->set("ordering", std::string("auto"),
+           "the fill-reducing ordering: auto (PORD from 1,000 unknowns, MUMPS's own choice below), PORD, AMD, AMF or QAMD",
+           Teuchos::rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("auto", "PORD", "AMD", "AMF", "QAMD"))));
     p->set("gathered", false,
            "on several ranks: factor on rank 0 alone, the entries gathered there (the same answer bit for "
            "bit run after run); otherwise every rank takes part");

@@ -20,6 +20,12 @@ Teuchos::ParameterList linearSolverParameters() {
                  "(gathered onto rank 0 up to this / R; the measured crossover with MueLu on the step-44 block "
                  "lies between 6,591 and 14,739 on one rank, above 6,591 on two; doc/incompressibility.md)",
                  io::Range::atLeast(0));
+  io::declareString(p, "direct ordering", "auto",
+                    "MUMPS's fill-reducing ordering (its ICNTL(7)): auto takes PORD (MUMPS's own nested dissection) "
+                    "from 1,000 unknowns and leaves the choice to MUMPS below (AMF or QAMD, as Debian's MUMPS has "
+                    "neither METIS nor SCOTCH); PORD, AMD, AMF, QAMD always (PORD fails on a single element). "
+                    "Measured: doc/performance.md, \"The direct solver's ordering\"",
+                    {"auto", "PORD", "AMD", "AMF", "QAMD"});
   io::declareString(p, "direct distribution", "auto",
                     "MUMPS on several ranks: gathered (the entries gathered onto rank 0 and factored there "
                     "alone: the same answer bit for bit run after run, so a restart ends as the uninterrupted "
@@ -134,6 +140,7 @@ LinearSolverParameters parseLinearSolverParameters(const Teuchos::ParameterList 
   p.directSolverName = s.get<std::string>("direct solver");
   p.directSolver = p.directSolverName == "KLU2" ? DirectSolver::klu2 : DirectSolver::mumps;
   p.directUpTo = s.get<int>("direct up to");
+  p.directOrdering = s.get<std::string>("direct ordering");
   const std::string distribution = s.get<std::string>("direct distribution");
   p.directDistribution = distribution == "gathered"      ? DirectDistribution::gathered
                          : distribution == "distributed" ? DirectDistribution::distributed

@@ -33,6 +33,7 @@ struct LinearSolverParameters {
   DirectSolver directSolver = DirectSolver::mumps;
   int directUpTo = 8000;
   DirectDistribution directDistribution = DirectDistribution::automatic;
+  std::string directOrdering = "auto"; // MUMPS's fill-reducing ordering, the deck's word handed to it as it is
   int directReuseIterations = 10;
   ReuseScope directReuseScope = ReuseScope::step;
   SensitivitySolve sensitivitySolve = SensitivitySolve::automatic;

@@ -11,6 +11,7 @@
 #include "assembly/TimeSplit.hpp"
 #include "io/output/OutputError.hpp"
 #include "io/output/SummaryWriter.hpp"
+#include "solvers/linear/DirectFactorStatistics.hpp"
 #include "solvers/run/StopSignals.hpp"
 
 namespace glossa::solvers {
@@ -126,6 +127,10 @@ void RunReport::write(const AssemblyCounters &counters) {
     doc_["time_split"][assembly::timedPartNames()[k]] = {
         {"seconds", timer->totalElapsedTime() - partSecondsAtStart_[k]}, {"calls", timer->numCalls() - partCallsAtStart_[k]}};
   }
+  // The direct solver's last factorisation: its ordering, fill and flops (doc/output.md).
+  const DirectFactorStatistics &direct = lastDirectFactorisation();
+  if (!direct.ordering.empty())
+    doc_["direct_factors"] = {{"ordering", direct.ordering}, {"entries", direct.factorEntries}, {"flops", direct.flops}};
   double peak = peakMemoryMegabytes(), peakMax = 0.0;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, peak, Teuchos::outArg(peakMax));
   doc_["peak_memory_mb_per_rank"] = peakMax;

@@ -79,6 +79,38 @@ TEST(SolverChoices, AutoNamesTheIterativeSettingsItDoesNotUse) {
   EXPECT_FALSE(iterative.contains("warnings"));
 }
 
+// direct ordering: every fill-reducing ordering factors the same tangent, so the answer is deal.II's
+// with each, and summary.json names the one MUMPS used. auto leaves the 375 unknowns of the 4^3
+// block to MUMPS's own choice (PORD would end the process on a single element) and takes PORD from
+// 1,000: on the 8^3 block (2,187 unknowns) its factorisation needs fewer flops than AMF's, the
+// ordering MUMPS itself picks there (measured 0.58x; doc/performance.md, "The direct solver's
+// ordering"). Flops and entries are counts, not times: the same on any machine.
+TEST(SolverChoices, EveryOrderingGivesTheAnswerAndAutoTakesPordOnLargerTangents) {
+  const std::string deck = test::inputPath("verification/step44_block.xml");
+  auto run = [&](const std::string &cells, const std::string &ordering) {
+    return test::runDeck(deck, {"Mesh/Box/cells=" + cells, "Linear solver/type=direct",
+                                "Linear solver/direct ordering=" + ordering},
+                         test::scratchDirectory("ordering_" + ordering));
+  };
+  for (const char *ordering : {"PORD", "AMD", "AMF", "QAMD"}) {
+    const auto s = run("4,4,4", ordering);
+    ASSERT_TRUE(s.at("converged").get<bool>()) << ordering;
+    EXPECT_NEAR(topCentre(s), kDealII4, 1e-5 * std::abs(kDealII4)) << ordering;
+    EXPECT_EQ(s.at("direct_factors").at("ordering").get<std::string>(), ordering);
+  }
+  const auto small = run("4,4,4", "auto");
+  ASSERT_TRUE(small.at("converged").get<bool>());
+  EXPECT_NE(small.at("direct_factors").at("ordering").get<std::string>(), "PORD");
+
+  const auto pord = run("8,8,8", "auto"), amf = run("8,8,8", "AMF");
+  ASSERT_TRUE(pord.at("converged").get<bool>());
+  ASSERT_TRUE(amf.at("converged").get<bool>());
+  EXPECT_EQ(pord.at("direct_factors").at("ordering").get<std::string>(), "PORD");
+  EXPECT_LT(pord.at("direct_factors").at("flops").get<double>(), 0.8 * amf.at("direct_factors").at("flops").get<double>());
+  EXPECT_LT(pord.at("direct_factors").at("entries").get<double>(), amf.at("direct_factors").at("entries").get<double>());
+  EXPECT_NEAR(topCentre(pord), topCentre(amf), 1e-8 * std::abs(topCentre(amf)));
+}
+
 // direct reuse iterations = 10: the factors of a Newton solve's first tangent precondition its
 // later iterations (more than one Krylov iteration per solve), and the answer stays deal.II's.
 TEST(SolverChoices, AReusedFactorisationPreconditionsLaterNewtonIterations) {

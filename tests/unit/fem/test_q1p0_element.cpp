@@ -299,3 +299,60 @@ TEST(Q1P0Element, ADisplacementPartFinishesAtEveryMultiplierAsAWholeEvaluation) 
   const auto residualOnly = fem::evaluateDisplacementPart(X, u, law, fem::Q1P0Output::ResidualOnly);
   EXPECT_THROW(fem::finishQ1P0(residualOnly, f.vol, 0.0, fem::Q1P0Output::ResidualAndTangent), std::logic_error);
 }
+
+namespace {
+// A symmetric law (neo-Hookean, its A symmetric to round-off) whose tangent gets an unsymmetric part
+// from point `first` on: the element kernel adds a symmetric point's upper blocks only, so a law
+// like the eq. 5 fibre stress form, unsymmetric at some points, must still get every block right.
+class SkewedFromPoint final : public fem::QuadraturePointLaw {
+public:
+  SkewedFromPoint(const materials::IsochoricMaterial &m, int first) : m_(m), first_(first) {}
+  bool evaluate(int q, const Eigen::Matrix3d &F, materials::PointResponse &out) const override {
+    out = m_.evaluate(F);
+    if (q >= first_)
+      for (int r = 0; r < 9; ++r)
+        for (int c = 0; c < r; ++c) out.dPdF(r, c) += 1e5 * (1 + r + 2 * c + q);
+    return true;
+  }
+
+private:
+  const materials::IsochoricMaterial &m_;
+  int first_;
+};
+
+// sum_q dV B^T A_q B with the dense 9x24 gradient operator B(iJ, 3b+k) = delta_ik dN_b/dX_J.
+fem::ElementMatrix denseTangent(const NodeMatrix &X, const NodeMatrix &u, const fem::QuadraturePointLaw &law) {
+  fem::ElementMatrix K = fem::ElementMatrix::Zero();
+  const auto &rule = fem::gaussHex2();
+  for (int q = 0; q < 8; ++q) {
+    Eigen::Matrix<double, 8, 3> dN;
+    double detJ0 = 0.0;
+    EXPECT_TRUE(fem::hexGradients(X, rule[q].xi, dN, detJ0));
+    materials::PointResponse r;
+    law.evaluate(q, Eigen::Matrix3d::Identity() + u.transpose() * dN, r);
+    Eigen::Matrix<double, 9, 24> B = Eigen::Matrix<double, 9, 24>::Zero();
+    for (int b = 0; b < 8; ++b)
+      for (int i = 0; i < 3; ++i)
+        for (int J = 0; J < 3; ++J) B(3 * i + J, 3 * b + i) = dN(b, J);
+    K += detJ0 * rule[q].weight * B.transpose() * r.dPdF * B;
+  }
+  return K;
+}
+} // namespace
+
+// The element tangent is sum B^T A B (the dense product, an independent reference) for a symmetric
+// law (upper blocks mirrored), a law unsymmetric at every point, and one unsymmetric from the
+// fourth point on (the blocks of the first three completed before the rest are added in full).
+TEST(Q1P0Element, TangentIsBTransposeABForSymmetricAndUnsymmetricLaws) {
+  const PartSample f(17);
+  for (const int first : {8, 0, 3}) {
+    const SkewedFromPoint law(f.iso, first);
+    const auto part = fem::evaluateDisplacementPart(f.X, f.u, law, fem::Q1P0Output::ResidualAndTangent);
+    ASSERT_TRUE(part.valid && part.withTangent);
+    const fem::ElementMatrix reference = denseTangent(f.X, f.u, law);
+    EXPECT_LT((part.tangent - reference).norm(), 1e-13 * reference.norm()) << first;
+    const double skew = (reference - reference.transpose()).norm() / reference.norm();
+    if (first == 8) EXPECT_LT((part.tangent - part.tangent.transpose()).norm(), 1e-15 * reference.norm());
+    else EXPECT_GT(skew, 1e-3) << first;
+  }
+}
