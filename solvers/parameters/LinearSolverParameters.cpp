@@ -21,10 +21,8 @@ Teuchos::ParameterList linearSolverParameters() {
                  "lies between 6,591 and 14,739 on one rank, above 6,591 on two; doc/incompressibility.md)",
                  io::Range::atLeast(0));
   io::declareString(p, "direct ordering", "auto",
-                    "MUMPS's fill-reducing ordering (its ICNTL(7)): auto takes PORD (MUMPS's own nested dissection) "
-                    "from 1,000 unknowns and leaves the choice to MUMPS below (AMF or QAMD, as Debian's MUMPS has "
-                    "neither METIS nor SCOTCH); PORD, AMD, AMF, QAMD always (PORD fails on a single element). "
-                    "Measured: doc/performance.md, \"The direct solver's ordering\"",
+                    "MUMPS's fill-reducing ordering (ICNTL(7)): auto, PORD from 1,000 unknowns and MUMPS's own choice "
+                    "below (AMF, QAMD); PORD, AMD, AMF, QAMD always (PORD fails on a single element; doc/performance.md)",
                     {"auto", "PORD", "AMD", "AMF", "QAMD"});
   io::declareString(p, "direct distribution", "auto",
                     "MUMPS on several ranks: gathered (the entries gathered onto rank 0 and factored there "
