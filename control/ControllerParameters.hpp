@@ -52,6 +52,12 @@ struct ControllerParameters {
   // start (a failed start there is retried from the step's start). The GA's candidates always start
   // from the step's start, so that control groups agree (doc/control.md, "Where a candidate starts").
   bool predictedStart = true;
+  // GA: a candidate whose moved start turns an element over (at the start or on Newton's way
+  // from it) is solved again from the step's start (true), or ranked as failed (false). Such
+  // candidates lie far from the seed's inputs; on the s8_5 GA decks none of them came near the
+  // step's best, and their solves from the step's start cost a quarter of the Newton iterations
+  // (doc/control.md, "Where a candidate starts").
+  bool retryTurnedOverStarts = true;
   // gradient: the tangent of its sensitivities under the augmented Lagrangian (doc/control.md,
   // "The sensitivities"). constrained: the physical bulk modulus capped at sensitivityPenaltyRatio
   // mu, the multipliers following the pressures (the converged loop's linearisation, to order

@@ -29,6 +29,7 @@ struct ControlDriver::Search {
   double solvedValue = std::numeric_limits<double>::infinity(); // eq. 25 + effort; inf: failed
   std::size_t reused = 0; // genomes valued from solvedInputs (counted alike in every group)
   std::size_t failed = 0, failedPredictions = 0; // this group's failed solves; of them, seed solves
+  std::size_t screened = 0, screenedPredictions = 0; // of the failed, screened (CandidateSolve::screened)
   double keptArea = std::numeric_limits<double>::quiet_NaN(); // the kept candidate's smallest lumen area
 };
 
@@ -75,6 +76,7 @@ control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const s
   if (!solve.ok) {
     ++search.failed;
     if (index < 0) ++search.failedPredictions;
+    if (solve.screened) ++(index < 0 ? search.screenedPredictions : search.screened);
     if (search.result.firstFailure.empty()) search.result.firstFailure = solve.why.empty() ? "no reason given" : solve.why;
   }
   control::ControlEvaluation e;
@@ -182,6 +184,11 @@ void ControlDriver::searchGenetic(Search &search, int committedSteps, const std:
   search.result.candidates = gaResult.evaluations - search.reused + search.predictionSolves;
   search.result.generations = gaResult.generations;
   search.result.failedCandidates = failedInGenerations + search.failedPredictions;
+  // The seeds' solves are every group's alike; the generations' each group's own, summed.
+  const std::vector<double> screened{static_cast<double>(search.screened)};
+  search.result.screenedCandidates =
+      search.screenedPredictions +
+      static_cast<std::size_t>(groupCount > 1 ? groups_.sumOfGroupRoots(screened)[0] : screened[0]);
   search.result.stop = control::toString(gaResult.stopReason);
   if (groupCount > 1) shareWinner(search);
 }

@@ -44,6 +44,7 @@ template <class Io, class R> void resultFields(Io &io, R &r) {
   io(r.sensitivityKrylov);
   io(r.sensitivityCheck);
   io(r.failedCandidates);
+  io(r.screenedCandidates);
   io(r.firstFailure);
   io(r.stop);
   io(r.pointErrors);

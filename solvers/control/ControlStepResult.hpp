@@ -25,6 +25,8 @@ struct ControlStepResult {
   int sensitivityKrylov = 0;   // gradient: their Krylov iterations
   double sensitivityCheck = -1.0; // verify sensitivities: max |S - S_fd| / max |S_fd| (-1: not checked)
   std::size_t failedCandidates = 0; // candidate solves that did not converge (all control groups)
+  std::size_t screenedCandidates = 0; // of them, GA candidates whose moved start turned an element over
+                                      // and that were not solved again (Control/retry turned-over starts)
   std::string firstFailure;    // why the first of them this control group saw failed ("" if none)
   std::string stop;            // why the search stopped
   Eigen::VectorXd pointErrors; // ||x_p - xbar_p|| per control point at the winner

@@ -101,6 +101,10 @@ ParameterList controlParameters() {
                   "fails; doc/control.md, 'Where a candidate starts'): gradient, the accepted candidate's; "
                   "GA, the Gauss-Newton seed's solve (Control/prediction seed = Gauss-Newton step; without "
                   "it the GA's candidates start from the step's start)");
+  io::declareBool(p, "retry turned-over starts", true,
+                  "GA with predicted start: a candidate whose moved start turns an element over (there or on "
+                  "Newton's way) is solved again from the step's start (true), or ranked as failed without that "
+                  "solve (false: faster, a different search; doc/control.md, 'Where a candidate starts')");
   io::declareInt(p, "seed", 1, "random seed (same seed and rank count: the same run)", io::Range::closed(0, 2147483647));
   return p;
 }
@@ -156,6 +160,7 @@ ControlSetup buildControl(const io::Deck &deck, const model::Scene &scene) {
                                                     : control::ControllerType::geneticAlgorithm;
   p.verifySensitivities = c.get<bool>("verify sensitivities");
   p.predictedStart = c.get<bool>("predicted start");
+  p.retryTurnedOverStarts = c.get<bool>("retry turned-over starts");
   p.sensitivityPenaltyRatio = c.get<double>("sensitivity penalty ratio");
   const std::string tangent = c.get<std::string>("sensitivity tangent");
   p.sensitivityTangent = tangent == "constrained" ? control::SensitivityTangent::constrained

@@ -66,7 +66,8 @@ Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const std::vector<double> &a
 }
 
 StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const StepState *from,
-                                       const CandidateStart *start, double loadScale) {
+                                       const CandidateStart *start, double loadScale, bool screen, bool &screened) {
+  screened = false;
   const StepTrial &trial = stepper_.trial();
   UzawaResult predicted; // the counts of a predicted start that failed
   if (from) {
@@ -77,6 +78,11 @@ StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const 
     // finds) is no reason to fail: the step's start is tried as without a prediction, its counts
     // added. (Half the move instead, tried on the supine GA deck, saved no Newton iterations.)
     if (a.ok) return a;
+    if (screen && a.uzawa.elementInverted) {
+      screened = true;
+      a.why = "its moved start turned an element over (not retried: Control/retry turned-over starts = false)";
+      return a;
+    }
     predicted = a.uzawa;
   }
   last_.assign(stepper_.stepStart());
@@ -89,12 +95,16 @@ StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const 
 }
 
 CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
-  StepAttempt a = start_.ready()       ? solveFrom(inputs, &kept_, &start_, keptLoadScale_)
-                  : seedStart_.ready() ? solveFrom(inputs, &seed_, &seedStart_, seedLoadScale_)
-                                       : solveFrom(inputs, nullptr, nullptr, 0.0);
+  const control::ControllerParameters &p = setup_.parameters;
+  const bool screen = p.type == control::ControllerType::geneticAlgorithm && !p.retryTurnedOverStarts;
+  bool screened = false;
+  StepAttempt a = start_.ready()       ? solveFrom(inputs, &kept_, &start_, keptLoadScale_, screen, screened)
+                  : seedStart_.ready() ? solveFrom(inputs, &seed_, &seedStart_, seedLoadScale_, screen, screened)
+                                       : solveFrom(inputs, nullptr, nullptr, 0.0, screen, screened);
   lastLoadScale_ = a.loadScale;
   CandidateSolve out;
   out.ok = a.ok;
+  out.screened = screened;
   out.why = a.why;
   out.statistics = std::move(a.uzawa);
   out.couplingIterations = a.airflow.iterations;
@@ -264,6 +274,7 @@ nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
   c["stop"] = outcome.stop;
   // Candidates whose solve failed are ranked last and otherwise silent: count them, with a reason.
   c["failed_candidates"] = outcome.failedCandidates;
+  if (ga && !setup_.parameters.retryTurnedOverStarts) c["screened_candidates"] = outcome.screenedCandidates;
   if (!outcome.firstFailure.empty()) c["first_candidate_failure"] = outcome.firstFailure;
   const auto &groups = parts_.assembler.scene().muscles.groups;
   nlohmann::json inputs = nlohmann::json::object(), errors = nlohmann::json::object();
@@ -279,10 +290,16 @@ nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
   c["inputs"] = inputs;
   c["point_errors"] = errors;
   if (controls_) controls_->append(t, rows);
-  char line[200];
-  std::snprintf(line, sizeof line, "  control: %s %.3g m, %zu candidates (%zu failed), %s %d (%s)",
-                measuresLumen() ? "eq. 25 + airway term" : "eq. 25", outcome.objective, outcome.candidates, outcome.failedCandidates, ga ? "generations" : "iterations",
-                ga ? outcome.generations : outcome.iterations, outcome.stop.c_str());
+  char failed[64];
+  if (ga && !setup_.parameters.retryTurnedOverStarts)
+    std::snprintf(failed, sizeof failed, "%zu failed, %zu of them screened", outcome.failedCandidates,
+                  outcome.screenedCandidates);
+  else
+    std::snprintf(failed, sizeof failed, "%zu failed", outcome.failedCandidates);
+  char line[240];
+  std::snprintf(line, sizeof line, "  control: %s %.3g m, %zu candidates (%s), %s %d (%s)",
+                measuresLumen() ? "eq. 25 + airway term" : "eq. 25", outcome.objective, outcome.candidates, failed,
+                ga ? "generations" : "iterations", ga ? outcome.generations : outcome.iterations, outcome.stop.c_str());
   controlLine_ = line;
   return c;
 }

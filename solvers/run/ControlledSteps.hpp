@@ -104,9 +104,10 @@ private:
   // The controller's sensitivity at the kept state, recording where later candidates start.
   ControlPointSensitivity controllerSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups);
   // Solves a candidate from `from` moved by `start` to `inputs`, then, should that fail, from the
-  // step's start (both solves counted).
+  // step's start (both solves counted); with `screen`, a moved start that turned an element over
+  // is not retried (the candidate fails; `screened` says so).
   StepAttempt solveFrom(const std::vector<double> &inputs, const StepState *from, const CandidateStart *start,
-                        double loadScale);
+                        double loadScale, bool screen, bool &screened);
   std::shared_ptr<const model::AirwayOutput> airway_;
   std::unique_ptr<ControlDriver> driver_;
   std::unique_ptr<io::KeyedCsvWriter> controls_;

@@ -23,6 +23,8 @@ public:
 
   // Inputs for which the solve fails.
   std::function<bool(const std::vector<double> &)> fails = [](const std::vector<double> &) { return false; };
+  // Of the failing inputs, those reported as screened (CandidateSolve::screened).
+  std::function<bool(const std::vector<double> &)> screens = [](const std::vector<double> &) { return false; };
   // The sensitivity reported is this times the true one (1: exact).
   double sensitivityScale = 1.0;
   // Every sensitivity fails (as a tangent solve that did not converge), with this reason.
@@ -51,6 +53,7 @@ public:
     out.ok = !fails(inputs);
     if (!out.ok) {
       out.why = "the fake solve failed";
+      out.screened = screens(inputs);
       return out;
     }
     out.pointDisplacement = displacement(inputs);

@@ -132,6 +132,23 @@ TEST(ControlDriver, AFailedCandidateIsNeverTheWinner) {
   EXPECT_GT(failing.solves, 0);
   EXPECT_EQ(none.failedCandidates, static_cast<std::size_t>(failing.solves));
 
+  // Screened candidates are failed ones, counted apart: here every solve but those of the best
+  // inputs fails, and those with the first group on are screened.
+  LinearPlant screening(plantMatrix());
+  screening.fails = [&](const std::vector<double> &u) { return u != ranked[0]; };
+  screening.screens = [](const std::vector<double> &u) { return u[0] > 0.5; };
+  ControlDriver screened(s, screening, one);
+  const ControlStepResult sr = screened.step(0, kStretched);
+  ASSERT_TRUE(sr.found());
+  EXPECT_EQ(sr.inputs, ranked[0]);
+  const auto screenedSolves = std::count_if(screening.solved.begin(), screening.solved.end(),
+                                            [&](const auto &u) { return u != ranked[0] && u[0] > 0.5; });
+  const auto bestSolves = std::count(screening.solved.begin(), screening.solved.end(), ranked[0]);
+  EXPECT_GT(screenedSolves, 0);
+  EXPECT_EQ(sr.screenedCandidates, static_cast<std::size_t>(screenedSolves));
+  EXPECT_EQ(sr.failedCandidates, static_cast<std::size_t>(screening.solves - bestSolves));
+  EXPECT_EQ(r.screenedCandidates, 0u);
+
   // The gradient controller counts its failed solves too.
   const auto g = setup(glossa::control::ControllerType::gradient, {0.9, 0.1, 0.8, 0.2});
   LinearPlant failingGradient(plantMatrix());

@@ -30,6 +30,7 @@ ControlStepResult awkwardResult() {
   r.sensitivityKrylov = 41;
   r.sensitivityCheck = -1.0;
   r.failedCandidates = 3;
+  r.screenedCandidates = 2;
   r.couplingIterations = 7;
   r.couplingChange = 0.0371;
   r.firstFailure = "CG met negative curvature";
@@ -79,6 +80,7 @@ TEST(ControlStepResult, RoundTripIsBitForBit) {
   EXPECT_EQ(back.sensitivityKrylov, r.sensitivityKrylov);
   EXPECT_TRUE(sameBits(back.sensitivityCheck, r.sensitivityCheck));
   EXPECT_EQ(back.failedCandidates, r.failedCandidates);
+  EXPECT_EQ(back.screenedCandidates, r.screenedCandidates);
   EXPECT_EQ(back.couplingIterations, r.couplingIterations);
   EXPECT_TRUE(sameBits(back.couplingChange, r.couplingChange));
   EXPECT_EQ(back.firstFailure, r.firstFailure);
