@@ -472,7 +472,7 @@ SCREENED_GA = """
 A candidate whose start, moved along the seed's responses, turns an element over is ranked as
 failed, not solved again from the step's start (Control/retry turned-over starts = false). Such
 candidates lie far from the seed's inputs: in the supine run's first 2 s their objectives were
-2-15x the step's best so far, and their solves from the step's start took a quarter of the GA's
+2.5-16x the step's best so far, and their solves from the step's start took a quarter of the GA's
 Newton iterations. Measured over the three breaths: 0.82x the wall time supine, 0.52x upright,
 other choices, every check of bench/tongue_control.py passing (doc/control.md, "Where a
 candidate starts")."""
