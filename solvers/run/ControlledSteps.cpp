@@ -66,7 +66,7 @@ Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const std::vector<double> &a
 }
 
 StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const StepState *from,
-                                       const CandidateStart *start, double loadScale, bool screen, bool &screened) {
+                                       const CandidateStart *start, double loadScale, bool &screened) {
   screened = false;
   const StepTrial &trial = stepper_.trial();
   UzawaResult predicted; // the counts of a predicted start that failed
@@ -78,7 +78,7 @@ StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const 
     // finds) is no reason to fail: the step's start is tried as without a prediction, its counts
     // added. (Half the move instead, tried on the supine GA deck, saved no Newton iterations.)
     if (a.ok) return a;
-    if (screen && a.uzawa.elementInverted) {
+    if (screensTurnedOverStarts() && a.uzawa.elementInverted) {
       screened = true;
       a.why = "its moved start turned an element over (not retried: Control/retry turned-over starts = false)";
       return a;
@@ -94,13 +94,16 @@ StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const 
   return a;
 }
 
-CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
+bool ControlledSteps::screensTurnedOverStarts() const {
   const control::ControllerParameters &p = setup_.parameters;
-  const bool screen = p.type == control::ControllerType::geneticAlgorithm && !p.retryTurnedOverStarts;
+  return p.type == control::ControllerType::geneticAlgorithm && !p.retryTurnedOverStarts;
+}
+
+CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
   bool screened = false;
-  StepAttempt a = start_.ready()       ? solveFrom(inputs, &kept_, &start_, keptLoadScale_, screen, screened)
-                  : seedStart_.ready() ? solveFrom(inputs, &seed_, &seedStart_, seedLoadScale_, screen, screened)
-                                       : solveFrom(inputs, nullptr, nullptr, 0.0, screen, screened);
+  StepAttempt a = start_.ready()       ? solveFrom(inputs, &kept_, &start_, keptLoadScale_, screened)
+                  : seedStart_.ready() ? solveFrom(inputs, &seed_, &seedStart_, seedLoadScale_, screened)
+                                       : solveFrom(inputs, nullptr, nullptr, 0.0, screened);
   lastLoadScale_ = a.loadScale;
   CandidateSolve out;
   out.ok = a.ok;
@@ -274,7 +277,7 @@ nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
   c["stop"] = outcome.stop;
   // Candidates whose solve failed are ranked last and otherwise silent: count them, with a reason.
   c["failed_candidates"] = outcome.failedCandidates;
-  if (ga && !setup_.parameters.retryTurnedOverStarts) c["screened_candidates"] = outcome.screenedCandidates;
+  if (screensTurnedOverStarts()) c["screened_candidates"] = outcome.screenedCandidates;
   if (!outcome.firstFailure.empty()) c["first_candidate_failure"] = outcome.firstFailure;
   const auto &groups = parts_.assembler.scene().muscles.groups;
   nlohmann::json inputs = nlohmann::json::object(), errors = nlohmann::json::object();
@@ -291,7 +294,7 @@ nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
   c["point_errors"] = errors;
   if (controls_) controls_->append(t, rows);
   char failed[64];
-  if (ga && !setup_.parameters.retryTurnedOverStarts)
+  if (screensTurnedOverStarts())
     std::snprintf(failed, sizeof failed, "%zu failed, %zu of them screened", outcome.failedCandidates,
                   outcome.screenedCandidates);
   else

@@ -104,10 +104,12 @@ private:
   // The controller's sensitivity at the kept state, recording where later candidates start.
   ControlPointSensitivity controllerSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups);
   // Solves a candidate from `from` moved by `start` to `inputs`, then, should that fail, from the
-  // step's start (both solves counted); with `screen`, a moved start that turned an element over
-  // is not retried (the candidate fails; `screened` says so).
+  // step's start (both solves counted); a moved start that turned an element over is not retried
+  // when screensTurnedOverStarts() (the candidate fails; `screened` says so).
   StepAttempt solveFrom(const std::vector<double> &inputs, const StepState *from, const CandidateStart *start,
-                        double loadScale, bool screen, bool &screened);
+                        double loadScale, bool &screened);
+  // The GA with Control/retry turned-over starts = false.
+  bool screensTurnedOverStarts() const;
   std::shared_ptr<const model::AirwayOutput> airway_;
   std::unique_ptr<ControlDriver> driver_;
   std::unique_ptr<io::KeyedCsvWriter> controls_;
