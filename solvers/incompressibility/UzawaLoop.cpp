@@ -129,6 +129,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     return std::max(t, t * innerTolerance_ / newton_.relativeResidualTolerance());
   };
   bool tight = !inexact_;
+  bool continuing = false; // the next solve tightens the last one: nothing moved between
   std::vector<double> previousErrors; // after the last tight solve, per tissue
   // Anderson's history of this loop's multiplier updates (none: plain updates), and the
   // dilatation error after the last solve that fed it.
@@ -136,12 +137,13 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
   double lastFedError = std::numeric_limits<double>::infinity();
   for (int k = 1; k <= (measuresPhysicalLaw() || augmentedContact_ || outer ? maxIterations_ : 1); ++k) {
     newton_.model().setMultipliers(lambda);
-    NewtonResult n = tight ? newton_.solve(u, NewtonSolver::ToleranceRule(tightTolerance), onNewton)
+    NewtonResult n = tight ? newton_.solve(u, NewtonSolver::ToleranceRule(tightTolerance), onNewton, continuing)
                            : newton_.solveToResidual(u, NewtonSolver::ToleranceRule(looseTolerance), onNewton,
                                                      innerLinearTolerance_);
     // Mixed: the element pressures were unknowns of the solve.
     if (mixed_) lambda = newton_.model().multipliers();
     ++result.solves;
+    continuing = false;
     result.newtonIterations += n.iterations;
     result.linearIterations += n.linearIterations;
     result.elementInverted = n.elementInverted;
@@ -184,6 +186,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
       // The inexact solve meets the tolerance already (its multipliers were well predicted):
       // Newton goes on from its iterate to the full tolerance with them, no update between.
       tight = true;
+      continuing = true;
       continue;
     }
     // lambda_q <- max(0, lambda_q - eps g_q) at the recorded gaps, beside the volume update: each

@@ -126,8 +126,8 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
 }
 
 NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toleranceRule,
-                                 const IterationCallback &onIteration) const {
-  return run(u, toleranceRule, onIteration, /*updateTest=*/true, kForcingCeiling);
+                                 const IterationCallback &onIteration, bool continuesLastSolve) const {
+  return run(u, toleranceRule, onIteration, /*updateTest=*/true, kForcingCeiling, continuesLastSolve);
 }
 
 NewtonResult NewtonSolver::solveToResidual(assembly::Vector &u, const ToleranceRule &toleranceRule,
@@ -136,12 +136,16 @@ NewtonResult NewtonSolver::solveToResidual(assembly::Vector &u, const ToleranceR
 }
 
 NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleranceRule,
-                               const IterationCallback &onIteration, bool updateTest, double maximumForcing) const {
+                               const IterationCallback &onIteration, bool updateTest, double maximumForcing,
+                               bool continuesLastSolve) const {
   using namespace NOX::StatusTest;
   NewtonResult result;
+  result.continuesLastSolve = continuesLastSolve;
 
   model_->resetIterates(u);
-  MumpsPreconditionerFactory::beginNewtonSolve();
+  // A continued solve is the last one's problem from its last iterate: its factors were kept for
+  // a tangent no farther away than within one solve.
+  if (!continuesLastSolve) MumpsPreconditionerFactory::beginNewtonSolve();
   NOX::Thyra::Vector initialGuess(model_->initialGuess(u));
   RCP<NOX::Thyra::Group> group;
   if (keepLinearSolver_ && !group_.is_null()) {

@@ -40,7 +40,11 @@ public:
   // converged: the residual below `residualTolerance` (absolute; the caller scales it by the
   // load) and the update below the deck's update tolerance relative to the whole field.
   NewtonResult solve(assembly::Vector &u, double residualTolerance, const IterationCallback &onIteration) const;
-  NewtonResult solve(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration) const;
+  // `continuesLastSolve`: the same problem as the last solve (the Uzawa loop tightening an inexact
+  // solve that met the volume, no multiplier moved), so a direct solve's kept factors still serve
+  // as they would within one Newton solve ("reuse iterations"), instead of being refactored.
+  NewtonResult solve(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration,
+                     bool continuesLastSolve = false) const;
   // The Uzawa loop's inexact first solve: it stops on the residual test alone, and each Krylov
   // solve goes to at most `maximumForcing` relative (Eisenstat-Walker may ask less). Where it
   // stops the multipliers are updated, so that iterate must not depend on the linear solver:
@@ -94,9 +98,9 @@ public:
 
 private:
   // `updateTest`: the deck's (solve) or none (solveToResidual); `maximumForcing`: the
-  // Eisenstat-Walker forcing's first and largest value.
+  // Eisenstat-Walker forcing's first and largest value; `continuesLastSolve` as for solve.
   NewtonResult run(assembly::Vector &u, const ToleranceRule &residualTolerance, const IterationCallback &onIteration,
-                   bool updateTest, double maximumForcing) const;
+                   bool updateTest, double maximumForcing, bool continuesLastSolve = false) const;
   // Solves lows x_j = b_j for every column to `relativeTolerance` (<= 0: the deck's linear
   // tolerance); `what` names the solve in the error it throws when it does not converge.
   int solveWith(Thyra::LinearOpWithSolveBase<double> &lows, const assembly::MultiVector &rhs, assembly::MultiVector &x,

@@ -13,6 +13,9 @@ namespace glossa::solvers {
 struct NewtonResult {
   bool converged = false;
   bool elementInverted = false;
+  // Tightened the last solve (the Uzawa loop's inexact one met the volume, nothing moved between):
+  // the same problem from its last iterate, its direct factors kept.
+  bool continuesLastSolve = false;
   int iterations = 0;
   int linearIterations = 0;
   std::vector<double> residualNorms; // ||f|| before each iteration and at the end

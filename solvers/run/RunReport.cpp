@@ -241,7 +241,10 @@ void RunReport::addStep(const StepTrial &trial, double t, bool onPath, double as
   step["seconds"] = since(trial.start);
   step["assembly_seconds"] = assemblySeconds - trial.assemblyAtStart;
   nlohmann::json histories = nlohmann::json::array();
-  for (const auto &n : r.newton) histories.push_back({{"residual_norms", n.residualNorms}, {"krylov", n.linearIterationsPerStep}});
+  for (const auto &n : r.newton)
+    histories.push_back({{"residual_norms", n.residualNorms},
+                         {"krylov", n.linearIterationsPerStep},
+                         {"continues_last_solve", n.continuesLastSolve}});
   step["newton_solves"] = histories;
   doc_["steps"].push_back(step);
 }
