@@ -134,6 +134,7 @@ HillFibreResponse HillMuscleFibre::evaluate(const HillFibreInput &in) const {
     return r;
   }
   const double dTs = s.dLambdaF * (dR - s.dLambdaC) / dR;
+  r.dLambdaCdLambdaF = -s.dLambdaF / dR;
   return finish(root.x, s, dTs, HillSolveStatus::Taut);
 }
 

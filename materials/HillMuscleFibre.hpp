@@ -64,6 +64,9 @@ struct HillFibreResponse {
   double lambdaC = 1.0;       // new contractile stretch (commit when the step converges)
   double lambdaCRate = 0.0;   // (lambdaC - lambdaCOld) / dt
   double storedEnergy = 0.0;  // psi_p(lambda_f) + psi_s(lambda_f; lambda_c) [J/m^3]
+  // d lambda_c / d lambda_f of the taut solve's root (NaN otherwise): where a solve at a nearby
+  // lambda_f in the same step may start.
+  double dLambdaCdLambdaF = std::numeric_limits<double>::quiet_NaN();
   int iterations = 0;
   HillSolveStatus status = HillSolveStatus::InvalidInput;
 };

@@ -1,5 +1,6 @@
 #include "materials/MuscleMaterial.hpp"
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -33,6 +34,7 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
   r.lambdaC = in.lambdaCOld;
   r.lambdaF = FamilyValues::Ones(n);
   r.T = FamilyValues::Zero(n);
+  r.dLambdaCdLambdaF = FamilyValues::Constant(n, std::numeric_limits<double>::quiet_NaN());
   const bool ownDirections = in.directions.cols() == 0;
   if (in.alpha.size() != n || in.lambdaCOld.size() != n || (!ownDirections && in.directions.cols() != n) ||
       !(in.F.determinant() > 0.0)) {
@@ -53,7 +55,11 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
     const Family &family = families_[f];
     const Eigen::Vector3d N = ownDirections ? family.geometry.N : Eigen::Vector3d(in.directions.col(f));
     const FibreStretch s = fibreStretch(frame, N);
-    const double start = in.lambdaCStart.size() == n ? in.lambdaCStart(f) : std::numeric_limits<double>::quiet_NaN();
+    double start = in.lambdaCStart.size() == n ? in.lambdaCStart(f) : std::numeric_limits<double>::quiet_NaN();
+    if (in.lambdaFAtStart.size() == n && in.startSlope.size() == n) {
+      const double predicted = start + in.startSlope(f) * (s.lambdaBar - in.lambdaFAtStart(f));
+      if (std::isfinite(predicted)) start = predicted;
+    }
     const HillFibreResponse h = family.fibre.evaluate({s.lambdaBar, in.alpha(f), in.dt, in.lambdaCOld(f), start});
     if (!succeeded(h.status)) {
       r.status = h.status;
@@ -64,6 +70,7 @@ MusclePointResponse MuscleMaterial::evaluate(const MusclePointInput &in) const {
     r.lambdaC(f) = h.lambdaC;
     r.lambdaF(f) = s.lambdaBar;
     r.T(f) = h.T;
+    r.dLambdaCdLambdaF(f) = h.dLambdaCdLambdaF;
     const double phi = family.geometry.volumeFraction;
     if (form_ == MatrixStressForm::FibreDirectionRemoved)
       removeMatrixFibreDirectionStress(frame, N, s, phi, matrix, fibres);

@@ -33,6 +33,10 @@ struct MusclePointInput {
   FamilyValues alpha;       // activation of each family's muscle group, in [0, 1]
   FamilyValues lambdaCOld;  // committed contractile stretch per family
   FamilyValues lambdaCStart; // where each family's local solve starts (empty: lambdaCOld)
+  // With lambdaCStart, the fibre stretch it was the root at and d lambda_c / d lambda_f there
+  // (empty or NaN: none): the solve starts from lambdaCStart + slope (lambda_f - lambdaFAtStart),
+  // the root to first order.
+  FamilyValues lambdaFAtStart, startSlope;
   // Reference fibre directions at this point (unit columns, one per family) when the direction
   // varies over the body (a fan, a field read from a file); empty: each family's own N.
   FamilyDirections directions;
@@ -45,6 +49,7 @@ struct MusclePointResponse {
   FamilyValues lambdaC;  // new contractile stretch per family (commit on convergence)
   FamilyValues lambdaF;  // isochoric fibre stretch per family
   FamilyValues T;        // fibre tension T_f per family [Pa]
+  FamilyValues dLambdaCdLambdaF;  // of each family's root (NaN unless found by the taut solve)
   HillSolveStatus status = HillSolveStatus::Taut;  // the first failure, else Taut (any family
                                                    // pulling) or Slack
   int failedFamily = -1;                           // index of the family that failed, -1 if none

@@ -1,6 +1,7 @@
 #include "model/MuscleHistory.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace glossa::model {
@@ -23,7 +24,7 @@ MuscleHistory::MuscleHistory(const MuscleArchitecture &architecture, const std::
   // The zero-strain configuration is the optimal length: lambda_c = 1 (MuscleMaterial::initialLambdaC).
   lambdaC_.assign(n, 1.0);
   lambdaCTrial_ = lambdaC_;
-  lambdaCStart_ = lambdaC_;
+  resetLambdaCStarts();
   for (const auto &m : architecture.external) externalLambdaC_.emplace_back(m.fibres.size(), 1.0);
   externalLambdaCTrial_ = externalLambdaC_;
   for (const auto &g : architecture.groups) alpha_.push_back(g.initialActivation);
@@ -49,7 +50,7 @@ void MuscleHistory::beginStep(double tNew, double dt, const std::vector<double> 
     alphaTrial_[g] = architecture_->groups[g].activation.step(alpha_[g], inputTrial_[g], dt);
   }
   lambdaCTrial_ = lambdaC_;
-  lambdaCStart_ = lambdaC_;
+  resetLambdaCStarts();
   externalLambdaCTrial_ = externalLambdaC_;
 }
 
@@ -100,7 +101,18 @@ double *MuscleHistory::trialLambdaC(std::size_t i, int q) {
 }
 
 double *MuscleHistory::lambdaCStart(std::size_t i, int q) const {
-  return lambdaCStart_.data() + offset_[i] + static_cast<std::size_t>(q * familyCount(i));
+  return lambdaCStart_.data() + 3 * (offset_[i] + static_cast<std::size_t>(q * familyCount(i)));
+}
+
+void MuscleHistory::resetLambdaCStarts() {
+  lambdaCStart_.assign(3 * lambdaC_.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < offset_.size(); ++i) {
+    const auto n = static_cast<std::size_t>(familyCount(i));
+    for (std::size_t k = 0; k < 8 * n; ++k) {
+      const std::size_t q = k / n, f = k % n;
+      lambdaCStart_[3 * (offset_[i] + q * n) + f] = lambdaC_[offset_[i] + k];
+    }
+  }
 }
 
 void MuscleHistory::commit() {
@@ -121,7 +133,8 @@ void MuscleHistory::restore(const Snapshot &state) {
   for (std::size_t m = 0; fits && m < externalLambdaC_.size(); ++m)
     fits = state.externalLambdaC[m].size() == externalLambdaC_[m].size();
   if (!fits) throw std::invalid_argument("MuscleHistory::restore: the state is another mesh's or partition's");
-  lambdaC_ = lambdaCTrial_ = lambdaCStart_ = state.lambdaC;
+  lambdaC_ = lambdaCTrial_ = state.lambdaC;
+  resetLambdaCStarts();
   alpha_ = alphaTrial_ = state.alpha;
   inputTrial_ = state.input;
   externalLambdaC_ = externalLambdaCTrial_ = state.externalLambdaC;

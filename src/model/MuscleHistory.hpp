@@ -44,12 +44,14 @@ public:
   const double *committedLambdaC(std::size_t localElement, int q) const;
   double *trialLambdaC(std::size_t localElement, int q);
   int familyCount(std::size_t localElement) const;
-  // Where the next local solve for lambda_c of point q starts, and where it leaves its root: a
-  // cache, not state (any start inside the solve's bracket finds the root to its tolerance, 1e-14
-  // of lambda_c), reset to the committed values by beginStep and restore so that a step's
-  // evaluations do not depend on what ran before it (a restart repeats them bit for bit). Within
-  // a step, Newton's iterates move lambda_c little: started from the last one, the local solve
-  // takes fewer iterations.
+  // Where the next local solves for lambda_c of point q start, and where they leave their roots:
+  // 3 x familyCount values, the last roots lambda_c, the fibre stretches lambda_f they were found
+  // at and d lambda_c / d lambda_f there (materials::MusclePointInput::lambdaCStart). A cache,
+  // not state (any start inside the solve's bracket finds the root to its tolerance, 1e-14 of
+  // lambda_c), reset by beginStep and restore to the committed lambda_c with no lambda_f (NaN)
+  // so that a step's evaluations do not depend on what ran before it (a restart repeats them bit
+  // for bit). Within a step lambda_c is a function of lambda_f alone: started from the last root
+  // moved along its slope, the local solve takes fewer iterations.
   double *lambdaCStart(std::size_t localElement, int q) const;
   // lambda_c of fibre k of external muscle m (every rank keeps all; the node's owner updates it).
   double committedExternalLambdaC(std::size_t muscle, std::size_t k) const { return externalLambdaC_[muscle][k]; }
@@ -92,12 +94,14 @@ private:
   std::vector<int> region_;         // per local element
   std::vector<std::size_t> offset_; // per local element: first lambda_c value (8 points x families)
   std::vector<double> lambdaC_, lambdaCTrial_;
-  mutable std::vector<double> lambdaCStart_;
+  mutable std::vector<double> lambdaCStart_; // 3 x familyCount per point (lambdaCStart)
   std::vector<std::vector<double>> externalLambdaC_, externalLambdaCTrial_;
   std::vector<double> alpha_, alphaTrial_, inputTrial_;
   // dt before the first step: any positive value (the reference state has no rate).
   double time_ = 0.0, dt_ = 1.0, timeTrial_ = 0.0;
   std::uint64_t revision_ = 0;
+
+  void resetLambdaCStarts(); // the committed lambda_c, no lambda_f and slope
 };
 
 } // namespace glossa::model

@@ -23,8 +23,9 @@ public:
   // `lambdaCOld(q)` points at familyCount() committed values for point q.
   // `pointDirections`, when not null, gives the directions per point (the element's directions
   // varying inside it) and replaces `directions`.
-  // `lambdaCStart(q)`, when given, points at familyCount() values where point q's local solves
-  // start, and receives their roots (MuscleHistory::lambdaCStart).
+  // `lambdaCStart(q)`, when given, points at 3 x familyCount() values: the last roots of point q's
+  // local solves, the fibre stretches at them and their slopes d lambda_c / d lambda_f, where the
+  // next solves start; it receives the new ones (MuscleHistory::lambdaCStart).
   TissuePointLaw(const materials::MuscleMaterial &law, const materials::FamilyDirections &directions,
                  const materials::FamilyValues &alpha, double dt,
                  std::array<const double *, 8> lambdaCOld, ElementMuscleResponse *record = nullptr,
@@ -43,9 +44,17 @@ public:
     if (pointDirections_) input_.directions = (*pointDirections_)[static_cast<std::size_t>(q)];
     input_.lambdaCOld = Eigen::Map<const Eigen::VectorXd>(lambdaCOld_[q], n);
     double *start = lambdaCStart_[static_cast<std::size_t>(q)];
-    if (start) input_.lambdaCStart = Eigen::Map<const Eigen::VectorXd>(start, n);
+    if (start) {
+      input_.lambdaCStart = Eigen::Map<const Eigen::VectorXd>(start, n);
+      input_.lambdaFAtStart = Eigen::Map<const Eigen::VectorXd>(start + n, n);
+      input_.startSlope = Eigen::Map<const Eigen::VectorXd>(start + 2 * n, n);
+    }
     const materials::MusclePointResponse r = law_.evaluate(input_);
-    if (start && r.ok()) Eigen::Map<Eigen::VectorXd>(start, n) = r.lambdaC;
+    if (start && r.ok()) {
+      Eigen::Map<Eigen::VectorXd>(start, n) = r.lambdaC;
+      Eigen::Map<Eigen::VectorXd>(start + n, n) = r.lambdaF;
+      Eigen::Map<Eigen::VectorXd>(start + 2 * n, n) = r.dLambdaCdLambdaF;
+    }
     if (record_) {
       record_->lambdaC[q] = r.lambdaC;
       record_->lambdaF[q] = r.lambdaF;

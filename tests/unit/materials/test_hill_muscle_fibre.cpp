@@ -150,6 +150,60 @@ TEST(HillMuscleFibre, TangentMatchesFiniteDifferences) {
   EXPECT_GT(checked, 380);
 }
 
+// The root's slope d lambda_c / d lambda_f (implicit differentiation) against central differences
+// of the roots; and a solve started from a nearby root moved along that slope (what a Newton
+// iteration's point law does within a step) finds the same root in fewer local iterations than
+// one started from the nearby root itself.
+TEST(HillMuscleFibre, RootSlopeMatchesFiniteDifferencesAndPredictsTheNextRoot) {
+  std::mt19937 rng(57);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int checked = 0, plainIterations = 0, predictedIterations = 0;
+  for (const ContractileCurves &curves : {paperTableIICurves(), physiologicalCurves()})
+    for (int sample = 0; sample < 200; ++sample) {
+      const HillMuscleFibre f = fibre(sample % 2 ? 1.0 : 0.1, curves);
+      const double lambdaF = 0.7 + 0.8 * unit(rng);
+      const HillFibreInput in{lambdaF, 0.05 + 0.95 * unit(rng), std::pow(10.0, -4.0 + 3.0 * unit(rng)),
+                              lambdaF * (0.97 + 0.04 * unit(rng))};
+      const HillFibreResponse r = f.evaluate(in);
+      if (r.status != HillSolveStatus::Taut || !std::isfinite(r.dLambdaCdLambdaF)) continue;
+      // Central differences at h and h/2, Richardson-extrapolated (error O(h^4)): the curves'
+      // steep terms (B = 90 over |d|^2) leave O(h^2) at 1e-6 relative with h = 1e-6.
+      auto central = [&](double h, bool &sameBranch) {
+        HillFibreInput plus = in, minus = in;
+        plus.lambdaF += h;
+        minus.lambdaF -= h;
+        const HillFibreResponse rp = f.evaluate(plus), rm = f.evaluate(minus);
+        sameBranch = sameBranch && rp.status == r.status && rm.status == r.status;
+        return (rp.lambdaC - rm.lambdaC) / (2 * h);
+      };
+      bool sameBranch = true;
+      const double h = 1e-5 * lambdaF;
+      const double coarse = central(h, sameBranch), fine = central(0.5 * h, sameBranch);
+      // A kink of a curve within h (the p = 1 term of f_cL at lambda_c = 1.325): the differences
+      // then disagree at first order, and neither is a derivative.
+      if (!sameBranch || std::abs(coarse - fine) > 1e-4 * (std::abs(fine) + 1.0)) continue;
+      const double fd = (4.0 * fine - coarse) / 3.0;
+      EXPECT_NEAR(r.dLambdaCdLambdaF, fd, 1e-6 * (std::abs(fd) + 1.0)) << "sample " << sample;
+      // The next Newton iterate's fibre stretch, 1e-3 away: started plain and predicted.
+      HillFibreInput next = in;
+      next.lambdaF = lambdaF * (1.0 + 1e-3);
+      const HillFibreResponse reference = f.evaluate(next);
+      if (reference.status != HillSolveStatus::Taut) continue;
+      next.lambdaCStart = r.lambdaC;
+      const HillFibreResponse plain = f.evaluate(next);
+      next.lambdaCStart = r.lambdaC + r.dLambdaCdLambdaF * (next.lambdaF - lambdaF);
+      const HillFibreResponse predicted = f.evaluate(next);
+      ASSERT_EQ(predicted.status, HillSolveStatus::Taut);
+      EXPECT_NEAR(predicted.lambdaC, reference.lambdaC, 1e-13) << "sample " << sample;
+      EXPECT_NEAR(plain.lambdaC, reference.lambdaC, 1e-13) << "sample " << sample;
+      plainIterations += plain.iterations;
+      predictedIterations += predicted.iterations;
+      ++checked;
+    }
+  EXPECT_GT(checked, 300);
+  EXPECT_LT(predictedIterations, 0.85 * plainIterations) << plainIterations << " against " << predictedIterations;
+}
+
 // Isometric activation (lambda_f = 1, u = 1 from rest): the fibre tension is the contractile
 // tension at every step, T = T0s T0max alpha_n f_cL(lambda_c) f_cV(rate), alpha_n follows
 // 1 - exp(-t/tau_R) within the backward-Euler bound, and the tension history converges at first
