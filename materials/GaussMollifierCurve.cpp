@@ -54,8 +54,11 @@ GaussMollifierCurve::GaussMollifierCurve(std::vector<GaussMollifierTerm> terms, 
     bound += std::max(t.A, 0.0) * closing;
   }
   upperBound_ = std::max({bound, below_, above_});
-  for (const GaussMollifierTerm &t : terms_)
-    prepared_.push_back({t.R > 0.0 ? std::pow(t.R, t.q) : 0.0, smallInteger(t.p), smallInteger(t.q), smallInteger(t.s)});
+  for (const GaussMollifierTerm &t : terms_) {
+    const int pInt = smallInteger(t.p), qInt = smallInteger(t.q), sInt = smallInteger(t.s);
+    const bool quadratic = pInt == 2 && (t.R == 0.0 || (qInt == 2 && sInt >= 1));
+    prepared_.push_back({t.R > 0.0 ? std::pow(t.R, t.q) : 0.0, pInt, qInt, sInt, quadratic});
+  }
 }
 
 double GaussMollifierCurve::zeroBelow() const {
@@ -72,6 +75,24 @@ CurveValue GaussMollifierCurve::evaluate(double x) const {
     const double d = x - t.mu;
     const double ad = std::abs(d);
     if (t.R > 0.0 && ad >= t.R) continue;  // outside the closing factor's support: no exp needed
+    if (pt.quadratic) {
+      // The general branch below with p = q = 2, to the bit: |d| |d| = d d, and a product with
+      // |d| then sign(d) is the product with d.
+      const double d2 = d * d;
+      const double G = t.A * std::exp(-t.B * d2);
+      const double dG = -G * t.B * t.p * d;
+      if (t.R > 0.0) {
+        const double w = pt.Rq - d2;
+        const double mBelow = integerPower(w, pt.sInt - 1);
+        const double dM = -t.s * t.q * mBelow * d;
+        f.value += G * (mBelow * w);
+        f.slope += dG * (mBelow * w) + G * dM;
+      } else {
+        f.value += G;
+        f.slope += dG;
+      }
+      continue;
+    }
     const double sign = d > 0.0 ? 1.0 : (d < 0.0 ? -1.0 : 0.0);
     // Gauss part G = A exp(-B |d|^p), dG/dx = -G B p |d|^(p-1) sign(d).
     const PowerPair dp = powers(ad, t.p, pt.pInt);

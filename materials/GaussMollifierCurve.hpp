@@ -45,6 +45,9 @@ class GaussMollifierCurve final : public ForceCurve {
   struct PreparedTerm {
     double Rq;
     int pInt, qInt, sInt;  // -1: not a small non-negative integer, std::pow
+    // p = 2 and, closed, q = 2 and s a positive integer (every term of both parameter sets but
+    // the paper's p = 1, 4 and 8 ones): |d|^p = d^2 and sign(d) |d| = d, no power chains.
+    bool quadratic;
   };
   std::vector<GaussMollifierTerm> terms_;
   std::vector<PreparedTerm> prepared_;
