@@ -116,9 +116,9 @@ private:
 } // namespace
 
 NewtonSolver::NewtonSolver(RCP<assembly::ModelEvaluator> model, const NewtonParameters &parameters, double lengthScale,
-                           double linearTolerance, bool keepLinearSolver)
+                           double linearTolerance, bool keepLinearSolver, bool directSolve)
     : model_(std::move(model)), parameters_(parameters), lengthScale_(lengthScale), linearTolerance_(linearTolerance),
-      keepLinearSolver_(keepLinearSolver) {}
+      keepLinearSolver_(keepLinearSolver), directSolve_(directSolve) {}
 
 NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
                                  const IterationCallback &onIteration) const {
@@ -127,11 +127,12 @@ NewtonResult NewtonSolver::solve(assembly::Vector &u, double residualTolerance,
 
 NewtonResult NewtonSolver::solve(assembly::Vector &u, const ToleranceRule &toleranceRule,
                                  const IterationCallback &onIteration, bool continuesLastSolve) const {
-  // A continued solve starts near its solution, with factors of an earlier tangent: the forcing's
-  // loose first tolerance would leave its first Newton step inexact (on the §7.1 (b) and (c)
-  // blocks 282 and 303 Newton iterations against 234 and 243), so it asks the deck's.
+  // A continued direct solve starts near its solution, with factors of an earlier tangent: the
+  // forcing's loose first tolerance would leave its first Newton step inexact (on the §7.1 (b) and
+  // (c) blocks 282 and 303 Newton iterations against 234 and 243), so it asks the deck's. An
+  // iterative one keeps the forcing: its preconditioner is what it would have been anyway.
   return run(u, toleranceRule, onIteration, /*updateTest=*/true,
-             continuesLastSolve ? linearTolerance_ : kForcingCeiling, continuesLastSolve);
+             continuesLastSolve && directSolve_ ? linearTolerance_ : kForcingCeiling, continuesLastSolve);
 }
 
 NewtonResult NewtonSolver::solveToResidual(assembly::Vector &u, const ToleranceRule &toleranceRule,

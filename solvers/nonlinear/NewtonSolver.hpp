@@ -28,9 +28,10 @@ public:
   // `linearTolerance`: relative residual reduction asked of each Krylov solve. `keepLinearSolver`:
   // one NOX group (and so one Stratimikos solver with its preconditioner) serves every solve
   // until forgetLinearSolver(), so that a reused MueLu hierarchy lives across Uzawa iterations
-  // (and load steps, if never forgotten).
+  // (and load steps, if never forgotten). `directSolve`: the linear solver is MUMPS (a continued
+  // solve then keeps its factors and asks its Krylov solves for `linearTolerance` at once).
   NewtonSolver(Teuchos::RCP<assembly::ModelEvaluator> model, const NewtonParameters &parameters,
-               double lengthScale, double linearTolerance, bool keepLinearSolver = false);
+               double lengthScale, double linearTolerance, bool keepLinearSolver = false, bool directSolve = false);
 
   // The absolute residual tolerance of a solve, from the norm of its initial residual (a caller
   // that scales the tolerance by the residual at the start needs no assembly of its own).
@@ -113,6 +114,7 @@ private:
   double lengthScale_;
   double linearTolerance_;
   bool keepLinearSolver_;
+  bool directSolve_;
   mutable Teuchos::RCP<NOX::Thyra::Group> group_; // kept between solves when keepLinearSolver_
   mutable Teuchos::RCP<NOX::Thyra::Group> lastGroup_; // the last solve's that iterated: its linear solver
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> sensitivitySolver_; // null: the model's

@@ -90,7 +90,7 @@ void buildSolvers(RunParts &run) {
   double lengthScale = 0.0; // the largest |X| of the mesh
   for (const auto &x : scene.mesh.nodes) lengthScale = std::max(lengthScale, x.norm());
   run.newton = std::make_unique<NewtonSolver>(run.model, config.newton, lengthScale, config.linear.tolerance,
-                                              run.linearPlan.keptScope != ReuseScope::newtonSolve);
+                                              run.linearPlan.keptScope != ReuseScope::newtonSolve, run.linearPlan.direct);
   // A controller's sensitivities: factored afresh by MUMPS of their own, or by Newton's solver.
   run.linearPlan.directSensitivities = run.linearPlan.direct;
   if (run.control.enabled && mixedPressure.is_null() &&
