@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include <Teuchos_CommHelpers.hpp>
 
@@ -128,8 +129,7 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
     const double t = tightTolerance(initialNorm);
     return std::max(t, t * innerTolerance_ / newton_.relativeResidualTolerance());
   };
-  bool tight = !inexact_;
-  bool continuing = false; // the next solve tightens the last one: nothing moved between
+  bool tight = !inexact_, continuing = false; // continuing: the next solve tightens the last, nothing moved
   std::vector<double> previousErrors; // after the last tight solve, per tissue
   // Anderson's history of this loop's multiplier updates (none: plain updates), and the
   // dilatation error after the last solve that fed it.
@@ -137,13 +137,12 @@ UzawaResult UzawaLoop::solve(assembly::Vector &u, std::vector<double> &lambda,
   double lastFedError = std::numeric_limits<double>::infinity();
   for (int k = 1; k <= (measuresPhysicalLaw() || augmentedContact_ || outer ? maxIterations_ : 1); ++k) {
     newton_.model().setMultipliers(lambda);
-    NewtonResult n = tight ? newton_.solve(u, NewtonSolver::ToleranceRule(tightTolerance), onNewton, continuing)
+    NewtonResult n = tight ? newton_.solve(u, tightTolerance, onNewton, std::exchange(continuing, false))
                            : newton_.solveToResidual(u, NewtonSolver::ToleranceRule(looseTolerance), onNewton,
                                                      innerLinearTolerance_);
     // Mixed: the element pressures were unknowns of the solve.
     if (mixed_) lambda = newton_.model().multipliers();
     ++result.solves;
-    continuing = false;
     result.newtonIterations += n.iterations;
     result.linearIterations += n.linearIterations;
     result.elementInverted = n.elementInverted;

@@ -32,11 +32,9 @@ Teuchos::ParameterList linearSolverParameters() {
                     "ranks, distributed otherwise",
                     {"auto", "gathered", "distributed"});
   io::declareInt(p, "direct reuse iterations", 10,
-                 "MUMPS: 0 refactors the tangent at every Newton iteration; k > 0 factors at the first "
-                 "iteration of each Newton solve and keeps the factors as the Krylov method's preconditioner "
-                 "while a solve takes at most k iterations (a Newton solve that tightens the Uzawa loop's "
-                 "inexact one, nothing changed between, continues it and keeps them too; measured: "
-                 "doc/incompressibility.md)",
+                 "MUMPS: 0 refactors the tangent at every Newton iteration; k > 0 factors at the first iteration of each "
+                 "Newton solve (one tightening the Uzawa loop's inexact one continues it) and keeps the factors as the Krylov "
+                 "method's preconditioner while a solve takes at most k iterations (doc/incompressibility.md)",
                  io::Range::atLeast(0));
   io::declareString(p, "direct reuse scope", "Newton solve",
                     "MUMPS, with 'direct reuse iterations' > 0: how long kept factors live: Newton solve "
