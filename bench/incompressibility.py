@@ -62,6 +62,14 @@ STRATEGIES = {
                                      "Linear solver/Chebyshev eigenvalue ratio=100",
                                      "Incompressibility/Uzawa acceleration=inexact",
                                      f"Incompressibility/penalty ratio={r}"] for r in (30, 10, 3)},
+    # The same with every Krylov solve to the Linear solver tolerance (no Eisenstat-Walker forcing):
+    # the largest count per solve then measures the preconditioner alone, not how little the
+    # forcing asks of the easiest solves.
+    **{f"cheb6r100-inexact-kal{r}-constant": ["Linear solver/MueLu smoother=Chebyshev", "Linear solver/smoother degree=6",
+                                              "Linear solver/Chebyshev eigenvalue ratio=100",
+                                              "Incompressibility/Uzawa acceleration=inexact",
+                                              f"Incompressibility/penalty ratio={r}",
+                                              "Nonlinear solver/forcing term=constant"] for r in (30, 3)},
     # Incompressibility/method = mixed: element pressures as unknowns, GMRES on the block system with
     # Teko's block upper-triangular preconditioner (the default MueLu on K, C + M_p/mu on the Schur
     # complement); no Uzawa loop at any nu, nu = 0.5 exactly.

@@ -74,7 +74,8 @@ void buildSolvers(RunParts &run) {
   run.assembler = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *run.history, solverComm,
                                                         &run.augmentation->tangentLaws()));
   LinearSolverContext context{assembly::coordinates(*run.assembler), assembly::rigidBodyModes(*run.assembler), solverComm->getSize(),
-                              run.assembler->layout().numGlobalDofs(), scene.symmetricTangent};
+                              run.assembler->layout().numGlobalDofs(), scene.symmetricTangent,
+                              std::nullopt};
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
   if (config.incompressibility.method == IncompressibilityMethod::mixed)
     mixedPressure = Teuchos::rcp(
