@@ -61,7 +61,13 @@ Eigen::Vector3d nearestSegmentDirection(const Polylines &polylines, const Eigen:
       const double length2 = d.squaredNorm();
       if (!(length2 > 0.0)) continue;
       const double s = std::clamp((x - a).dot(d) / length2, 0.0, 1.0);
-      const double distance = (a + s * d - x).norm();
+      // At a clamped end the nearest point is that vertex itself, not a + s d rounded (a + 1 d can
+      // miss the next vertex by an ulp): a vertex shared by two segments is then exactly as near
+      // from both, and the tie goes to the first, as documented, whatever the rounding.
+      const Eigen::Vector3d foot = s <= 0.0   ? a
+                                   : s >= 1.0 ? Eigen::Vector3d(line[k + 1])
+                                              : Eigen::Vector3d(a + s * d);
+      const double distance = (foot - x).norm();
       if (distance < best) {
         best = distance;
         direction = d / std::sqrt(length2);

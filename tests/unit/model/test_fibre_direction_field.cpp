@@ -124,6 +124,20 @@ TEST(FibreDirectionField, NearestSegmentIsChosen) {
   EXPECT_LT((N[1] - Eigen::Vector3d::UnitZ()).norm(), 1e-15);
 }
 
+TEST(FibreDirectionField, AVertexSharedByTwoSegmentsGoesToTheFirstWhateverTheRounding) {
+  // A point beyond the shared vertex a1 of both segments (s = 1 on the first, s = 0 on the second):
+  // the vertex is its nearest point on both, a tie the documented rule gives to the first segment.
+  // a0 + 1 (a1 - a0) rounds to a point 1 ulp off a1 here, which made the second segment nearer by
+  // 1e-16 and gave it the point (doc/materials.md, "In decks").
+  const Eigen::Vector3d a0(0.5800356635322673, 0.7377223518974553, 0.36911421306560027),
+      a1(-0.8772781329503792, 2.8858594384327594, 2.7714056273893544),
+      a2(-1.5549088263423414, 3.3938675817365036, 3.2017074238642613),
+      x(-0.7868908433359323, 2.907636278026478, 2.83928019129692);
+  ASSERT_NE((a0 + 1.0 * (a1 - a0) - a1).norm(), 0.0);  // the rounding this test is about
+  const Eigen::Vector3d first = (a1 - a0).normalized();
+  EXPECT_LT((model::nearestSegmentDirection({{a0, a1, a2}}, x) - first).norm(), 1e-15);
+}
+
 TEST(FibreDirectionField, PolylinesWithoutASegmentAreRefused) {
   EXPECT_THROW(model::nearestSegmentDirection({}, Eigen::Vector3d::Zero()), std::invalid_argument);
   EXPECT_THROW(model::nearestSegmentDirection({{{1, 1, 1}, {1, 1, 1}}}, Eigen::Vector3d::Zero()),
