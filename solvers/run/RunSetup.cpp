@@ -73,8 +73,12 @@ void buildSolvers(RunParts &run) {
   run.history = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
   run.assembler = Teuchos::rcp(new assembly::Assembler(scene, std::move(layout), *run.history, solverComm,
                                                         &run.augmentation->tangentLaws()));
-  LinearSolverContext context{assembly::coordinates(*run.assembler), assembly::rigidBodyModes(*run.assembler), solverComm->getSize(),
-                              run.assembler->layout().numGlobalDofs(), scene.symmetricTangent,
+  // `direct` is left empty here: the plan below decides it, and the context then carries it.
+  LinearSolverContext context{assembly::coordinates(*run.assembler),
+                              assembly::rigidBodyModes(*run.assembler),
+                              solverComm->getSize(),
+                              run.assembler->layout().numGlobalDofs(),
+                              scene.symmetricTangent,
                               std::nullopt};
   Teuchos::RCP<assembly::MixedPressureState> mixedPressure;
   if (config.incompressibility.method == IncompressibilityMethod::mixed)
