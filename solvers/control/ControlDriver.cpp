@@ -30,6 +30,7 @@ struct ControlDriver::Search {
   std::size_t reused = 0; // genomes valued from solvedInputs (counted alike in every group)
   std::size_t failed = 0, failedPredictions = 0; // this group's failed solves; of them, seed solves
   std::size_t screened = 0, screenedPredictions = 0; // of the failed, screened (CandidateSolve::screened)
+  std::size_t solvedAgain = 0, solvedAgainPredictions = 0;    // solved twice (CandidateSolve::solvedAgain)
   double keptArea = std::numeric_limits<double>::quiet_NaN(); // the kept candidate's smallest lumen area
 };
 
@@ -73,6 +74,7 @@ std::vector<double> ControlDriver::allInputs(const std::vector<int> &evaluated, 
 control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const std::vector<double> &inputs,
                                                          bool rankByObjective, long index) {
   const CandidateSolve solve = plant_.solve(inputs);
+  if (solve.solvedAgain) ++(index < 0 ? search.solvedAgainPredictions : search.solvedAgain);
   if (!solve.ok) {
     ++search.failed;
     if (index < 0) ++search.failedPredictions;
@@ -185,10 +187,12 @@ void ControlDriver::searchGenetic(Search &search, int committedSteps, const std:
   search.result.generations = gaResult.generations;
   search.result.failedCandidates = failedInGenerations + search.failedPredictions;
   // The seeds' solves are every group's alike; the generations' each group's own, summed.
-  const std::vector<double> screened{static_cast<double>(search.screened)};
-  search.result.screenedCandidates =
-      search.screenedPredictions +
-      static_cast<std::size_t>(groupCount > 1 ? groups_.sumOfGroupRoots(screened)[0] : screened[0]);
+  std::vector<double> ownCounts{static_cast<double>(search.screened),
+                                static_cast<double>(search.solvedAgain)};
+  if (groupCount > 1) ownCounts = groups_.sumOfGroupRoots(ownCounts);
+  search.result.screenedCandidates = search.screenedPredictions + static_cast<std::size_t>(ownCounts[0]);
+  search.result.solvedAgainCandidates =
+      search.solvedAgainPredictions + static_cast<std::size_t>(ownCounts[1]);
   search.result.stop = control::toString(gaResult.stopReason);
   if (groupCount > 1) shareWinner(search);
 }
@@ -305,6 +309,7 @@ void ControlDriver::searchGradient(Search &search, const std::vector<double> &pr
   const auto gn = controller.minimise(start, evaluate, sensitivity);
   search.result.candidates = static_cast<std::size_t>(gn.evaluations);
   search.result.failedCandidates = search.failed;
+  search.result.solvedAgainCandidates = search.solvedAgain;
   search.result.iterations = gn.iterations;
   search.result.sensitivities = gn.sensitivities;
   search.result.stop = control::toString(gn.stop);

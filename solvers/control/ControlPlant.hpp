@@ -21,6 +21,7 @@ struct CandidateSolve {
   bool ok = false;
   std::string why;                   // when not ok
   bool screened = false;             // not ok: a GA candidate's moved start turned an element over, not retried
+  bool solvedAgain = false;          // its moved start failed; it was solved again from the step's start
   Eigen::Matrix3Xd pointDisplacement; // when ok: one column per control point
   UzawaResult statistics;
   // With an airflow (doc/airflow.md): the candidate's coupling iterations and the largest change

@@ -45,6 +45,7 @@ template <class Io, class R> void resultFields(Io &io, R &r) {
   io(r.sensitivityCheck);
   io(r.failedCandidates);
   io(r.screenedCandidates);
+  io(r.solvedAgainCandidates);
   io(r.firstFailure);
   io(r.stop);
   io(r.pointErrors);

@@ -27,6 +27,7 @@ struct ControlStepResult {
   std::size_t failedCandidates = 0; // candidate solves that did not converge (all control groups)
   std::size_t screenedCandidates = 0; // of them, GA candidates whose moved start turned an element over
                                       // and that were not solved again (Control/retry turned-over starts)
+  std::size_t solvedAgainCandidates = 0;  // moved starts that failed, solved again from the step's start
   std::string firstFailure;    // why the first of them this control group saw failed ("" if none)
   std::string stop;            // why the search stopped
   Eigen::VectorXd pointErrors; // ||x_p - xbar_p|| per control point at the winner

@@ -66,8 +66,8 @@ Eigen::Matrix3Xd ControlledSteps::pointDisplacement(const std::vector<double> &a
 }
 
 StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const StepState *from,
-                                       const CandidateStart *start, double loadScale, bool &screened) {
-  screened = false;
+                                       const CandidateStart *start, double loadScale, StartOutcome &outcome) {
+  outcome = StartOutcome{};
   const StepTrial &trial = stepper_.trial();
   UzawaResult predicted; // the counts of a predicted start that failed
   if (from) {
@@ -79,11 +79,17 @@ StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const 
     // added. (Half the move instead, tried on the supine GA deck, saved no Newton iterations.)
     if (a.ok) return a;
     if (screensTurnedOverStarts() && a.uzawa.elementInverted) {
-      screened = true;
+      outcome.screened = true;
       a.why = "its moved start turned an element over (not retried: Control/retry turned-over starts = false)";
       return a;
     }
+    // Converged, but with an element folded through itself: the fold is the equilibrium's at these
+    // inputs, not the start's. From the step's start Newton converged to the same fold every time
+    // it was asked to, at four times the Newton iterations (the medium tongue's gradient decks:
+    // doc/control.md, "Where a candidate starts"), so the candidate fails here.
+    if (!a.folded.is_null()) return a;
     predicted = a.uzawa;
+    outcome.solvedAgain = true;
   }
   last_.assign(stepper_.stepStart());
   StepAttempt a = solver_.solve(trial.time, trial.dt, last_, true, stepInputs(inputs, trial.time));
@@ -100,14 +106,15 @@ bool ControlledSteps::screensTurnedOverStarts() const {
 }
 
 CandidateSolve ControlledSteps::solve(const std::vector<double> &inputs) {
-  bool screened = false;
-  StepAttempt a = start_.ready()       ? solveFrom(inputs, &kept_, &start_, keptLoadScale_, screened)
-                  : seedStart_.ready() ? solveFrom(inputs, &seed_, &seedStart_, seedLoadScale_, screened)
-                                       : solveFrom(inputs, nullptr, nullptr, 0.0, screened);
+  StartOutcome started;
+  StepAttempt a = start_.ready()       ? solveFrom(inputs, &kept_, &start_, keptLoadScale_, started)
+                  : seedStart_.ready() ? solveFrom(inputs, &seed_, &seedStart_, seedLoadScale_, started)
+                                       : solveFrom(inputs, nullptr, nullptr, 0.0, started);
   lastLoadScale_ = a.loadScale;
   CandidateSolve out;
   out.ok = a.ok;
-  out.screened = screened;
+  out.screened = started.screened;
+  out.solvedAgain = started.solvedAgain;
   out.why = a.why;
   out.statistics = std::move(a.uzawa);
   out.couplingIterations = a.airflow.iterations;
@@ -278,6 +285,7 @@ nlohmann::json ControlledSteps::record(const StepTrial &trial, double t) {
   // Candidates whose solve failed are ranked last and otherwise silent: count them, with a reason.
   c["failed_candidates"] = outcome.failedCandidates;
   if (screensTurnedOverStarts()) c["screened_candidates"] = outcome.screenedCandidates;
+  c["solved_again_candidates"] = outcome.solvedAgainCandidates;
   if (!outcome.firstFailure.empty()) c["first_candidate_failure"] = outcome.firstFailure;
   const auto &groups = parts_.assembler.scene().muscles.groups;
   nlohmann::json inputs = nlohmann::json::object(), errors = nlohmann::json::object();

@@ -103,11 +103,17 @@ private:
                                           bool constrained, CandidateStart *start);
   // The controller's sensitivity at the kept state, recording where later candidates start.
   ControlPointSensitivity controllerSensitivity(const std::vector<double> &inputs, const std::vector<int> &groups);
+  // What became of a candidate's moved start (CandidateSolve's flags of the same names).
+  struct StartOutcome {
+    bool screened = false;     // it turned an element over and the candidate was not solved again
+    bool solvedAgain = false;  // it failed and the candidate was solved again from the step's start
+  };
   // Solves a candidate from `from` moved by `start` to `inputs`, then, should that fail, from the
-  // step's start (both solves counted); a moved start that turned an element over is not retried
-  // when screensTurnedOverStarts() (the candidate fails; `screened` says so).
+  // step's start (both solves counted); not when the moved start converged to a state with an
+  // element folded through itself, nor when it turned an element over and
+  // screensTurnedOverStarts() (the candidate fails; `outcome.screened` says so).
   StepAttempt solveFrom(const std::vector<double> &inputs, const StepState *from, const CandidateStart *start,
-                        double loadScale, bool &screened);
+                        double loadScale, StartOutcome &outcome);
   // The GA with Control/retry turned-over starts = false.
   bool screensTurnedOverStarts() const;
   std::shared_ptr<const model::AirwayOutput> airway_;

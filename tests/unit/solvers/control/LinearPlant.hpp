@@ -25,6 +25,10 @@ public:
   std::function<bool(const std::vector<double> &)> fails = [](const std::vector<double> &) { return false; };
   // Of the failing inputs, those reported as screened (CandidateSolve::screened).
   std::function<bool(const std::vector<double> &)> screens = [](const std::vector<double> &) { return false; };
+  // Inputs reported as solved twice (CandidateSolve::solvedAgain), failing or not.
+  std::function<bool(const std::vector<double> &)> solvesAgain = [](const std::vector<double> &) {
+    return false;
+  };
   // The sensitivity reported is this times the true one (1: exact).
   double sensitivityScale = 1.0;
   // Every sensitivity fails (as a tangent solve that did not converge), with this reason.
@@ -51,6 +55,7 @@ public:
     last_ = inputs;
     solvers::CandidateSolve out;
     out.ok = !fails(inputs);
+    out.solvedAgain = solvesAgain(inputs);
     if (!out.ok) {
       out.why = "the fake solve failed";
       out.screened = screens(inputs);

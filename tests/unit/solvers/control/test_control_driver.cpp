@@ -148,15 +148,30 @@ TEST(ControlDriver, AFailedCandidateIsNeverTheWinner) {
   EXPECT_EQ(sr.screenedCandidates, static_cast<std::size_t>(screenedSolves));
   EXPECT_EQ(sr.failedCandidates, static_cast<std::size_t>(screening.solves - bestSolves));
   EXPECT_EQ(r.screenedCandidates, 0u);
+  EXPECT_EQ(r.solvedAgainCandidates, 0u);
+
+  // Candidates solved twice (a moved start that failed, then the step's start) are counted, the
+  // failed and the converged alike.
+  LinearPlant twice(plantMatrix());
+  twice.fails = [&](const std::vector<double> &u) { return u == ranked[1]; };
+  twice.solvesAgain = [&](const std::vector<double> &u) { return u == ranked[0] || u == ranked[1]; };
+  ControlDriver again(s, twice, one);
+  const ControlStepResult ar = again.step(0, kStretched);
+  const auto solvedTwice = std::count_if(twice.solved.begin(), twice.solved.end(),
+                                         [&](const auto &u) { return u == ranked[0] || u == ranked[1]; });
+  EXPECT_GT(std::count(twice.solved.begin(), twice.solved.end(), ranked[1]), 0);
+  EXPECT_EQ(ar.solvedAgainCandidates, static_cast<std::size_t>(solvedTwice));
 
   // The gradient controller counts its failed solves too.
   const auto g = setup(glossa::control::ControllerType::gradient, {0.9, 0.1, 0.8, 0.2});
   LinearPlant failingGradient(plantMatrix());
   failingGradient.fails = [](const std::vector<double> &) { return true; };
+  failingGradient.solvesAgain = [](const std::vector<double> &) { return true; };
   ControlDriver gradient(g, failingGradient, one);
   const ControlStepResult gr = gradient.step(0, kStretched);
   EXPECT_FALSE(gr.found());
   EXPECT_EQ(gr.failedCandidates, static_cast<std::size_t>(failingGradient.solves));
+  EXPECT_EQ(gr.solvedAgainCandidates, static_cast<std::size_t>(failingGradient.solves));
   EXPECT_EQ(gr.firstFailure, "the fake solve failed");
 }
 

@@ -31,6 +31,7 @@ ControlStepResult awkwardResult() {
   r.sensitivityCheck = -1.0;
   r.failedCandidates = 3;
   r.screenedCandidates = 2;
+  r.solvedAgainCandidates = 5;
   r.couplingIterations = 7;
   r.couplingChange = 0.0371;
   r.firstFailure = "CG met negative curvature";
@@ -81,6 +82,7 @@ TEST(ControlStepResult, RoundTripIsBitForBit) {
   EXPECT_TRUE(sameBits(back.sensitivityCheck, r.sensitivityCheck));
   EXPECT_EQ(back.failedCandidates, r.failedCandidates);
   EXPECT_EQ(back.screenedCandidates, r.screenedCandidates);
+  EXPECT_EQ(back.solvedAgainCandidates, r.solvedAgainCandidates);
   EXPECT_EQ(back.couplingIterations, r.couplingIterations);
   EXPECT_TRUE(sameBits(back.couplingChange, r.couplingChange));
   EXPECT_EQ(back.firstFailure, r.firstFailure);

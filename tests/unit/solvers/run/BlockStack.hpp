@@ -48,8 +48,12 @@ struct Stack {
     history = std::make_unique<model::MuscleHistory>(scene.muscles, layout.localElements);
     assembler = Teuchos::rcp(
         new assembly::Assembler(scene, std::move(layout), *history, comm, &augmentation.tangentLaws()));
-    LinearSolverContext context{assembly::coordinates(*assembler), assembly::rigidBodyModes(*assembler), comm->getSize(),
-                                assembler->layout().numGlobalDofs(), true};
+    LinearSolverContext context{assembly::coordinates(*assembler),
+                                assembly::rigidBodyModes(*assembler),
+                                comm->getSize(),
+                                assembler->layout().numGlobalDofs(),
+                                true,
+                                std::nullopt};  // decided from the section
     evaluator = Teuchos::rcp(new assembly::ModelEvaluator(assembler, buildLinearSolver(LinearSolverParameters{}, context)));
     newton = std::make_unique<NewtonSolver>(evaluator, NewtonParameters{}, kSide, 1e-10);
     uzawa = std::make_unique<UzawaLoop>(assembly::ResultEvaluator(*assembler), *newton, incompressibility, augmentation);

@@ -197,8 +197,6 @@ TEST_F(CheckpointSanity, TimesThatDisagreeAcrossTheCheckpointAreRefused) {
   EXPECT_REFUSED("summary/steps lists 3 steps, the checkpoint is after step 2");
 }
 
-} // namespace
-
 // The contacts' multipliers: one entry per contact, 4 per contact face, each a contact pressure
 // (finite, >= 0); with them the friction anchors (3 coordinates per point), whether each point
 // has one (0 or 1) and the slips (>= 0).
@@ -228,3 +226,5 @@ TEST_F(CheckpointSanity, ContactMultipliersOfAnotherMeshOrNegativeAreRefused) {
   part["contact"] = json::array();
   EXPECT_REFUSED("contact is not one entry per contact (1)");
 }
+
+}  // namespace

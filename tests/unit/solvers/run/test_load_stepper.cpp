@@ -32,7 +32,8 @@ double exactLambda(std::size_t e, double t) { return 10.0 * (static_cast<double>
 StepState stateAt(double t) {
   StepState s(stepperMap(), kElements);
   auto data = s.u.getDataNonConst();
-  for (std::size_t i = 0; i < data.size(); ++i) data[i] = exactU(stepperMap()->getGlobalElement(i), t);
+  for (long i = 0; i < data.size(); ++i)
+    data[i] = exactU(stepperMap()->getGlobalElement(static_cast<int>(i)), t);
   for (std::size_t e = 0; e < kElements; ++e) s.lambda[e] = exactLambda(e, t);
   return s;
 }

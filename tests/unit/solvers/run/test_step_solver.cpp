@@ -75,7 +75,7 @@ TEST(StepSolver, AStateWithAFoldedElementIsRefusedNamingIt) {
     if (mesh.nodes[n].isApprox(Eigen::Vector3d::Constant(kSide))) corner = n;
   for (std::size_t e = 0; e < mesh.numElements(); ++e)
     for (const auto n : mesh.elements[e])
-      if (n == corner) element = e;
+      if (static_cast<std::size_t>(n) == corner) element = e;
   const Eigen::Vector3d centre = Eigen::Vector3d::Constant(0.75 * kSide), move = centre - mesh.nodes[corner];
   std::vector<double> all(3 * mesh.numNodes(), 0.0);
   for (int c = 0; c < 3; ++c) all[3 * corner + c] = move(c);
