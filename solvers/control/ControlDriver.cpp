@@ -1,19 +1,44 @@
 #include "solvers/control/ControlDriver.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
+#include "control/BoundedLeastSquares.hpp"
 #include "control/ElitistGeneticAlgorithm.hpp"
 #include "control/GaussNewtonController.hpp"
-#include "control/BoundedLeastSquares.hpp"
 #include "control/InputPrediction.hpp"
 #include "control/MusclePruning.hpp"
 
 namespace glossa::solvers {
+
+namespace {
+// --verbose: a line per candidate solve, its value or why it failed, what it cost and whether it
+// was solved twice (doc/output.md). Candidates count from 1 within the step; the GA's seed solves
+// (made before its generations) say so instead.
+std::string candidateLine(long index, const CandidateSolve &solve, double objective, bool airwayTerm,
+                          double seconds) {
+  char head[64];
+  if (index < 0)
+    std::snprintf(head, sizeof head, "    seed solve");
+  else
+    std::snprintf(head, sizeof head, "    candidate %ld", index + 1);
+  char cost[96];
+  std::snprintf(cost, sizeof cost, "newton %d, uzawa %d, %.2f s%s", solve.statistics.newtonIterations,
+                solve.statistics.solves, seconds,
+                solve.solvedAgain ? ", solved again from the step's start" : "");
+  char value[64];
+  std::snprintf(value, sizeof value, "%s %.4g mm", airwayTerm ? "eq. 25 + airway term" : "eq. 25",
+                1e3 * objective);
+  return std::string(head) + ": " +
+         (solve.ok ? std::string(value) + ", " + cost : "failed, " + std::string(cost) + ": " + solve.why);
+}
+}  // namespace
 
 // Every candidate is a full step solve from the committed state. The first candidate to beat
 // every earlier one by its rank (the GA: eq. 25; the gradient controller: the sum of squares it
@@ -73,7 +98,9 @@ std::vector<double> ControlDriver::allInputs(const std::vector<int> &evaluated, 
 
 control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const std::vector<double> &inputs,
                                                          bool rankByObjective, long index) {
+  const auto started = std::chrono::steady_clock::now();
   const CandidateSolve solve = plant_.solve(inputs);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (solve.solvedAgain) ++(index < 0 ? search.solvedAgainPredictions : search.solvedAgain);
   if (!solve.ok) {
     ++search.failed;
@@ -121,6 +148,8 @@ control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const s
     search.keptArea = solve.smallestArea;
     plant_.keepLast();
   }
+  if (setup_.talk)
+    std::printf("%s\n", candidateLine(index, solve, e.objective, hasAirwayTerm(), seconds).c_str());
   return e;
 }
 

@@ -45,7 +45,8 @@ const CommandHelp kCommands[] = {
       run a deck; results (results.xdmf/.h5, traces.csv, summary.json) go to DIR
       (default: the deck's Output/directory). Under mpiexec -np N it runs on N ranks.
       It prints a line per step (step k/N, time, iterations, elapsed and estimated time left);
-      --verbose adds every Newton and Uzawa iteration, --quiet prints only failures.
+      --verbose adds every Newton and Uzawa iteration (under a controller, every candidate
+      solve: its value or why it failed, and its cost), --quiet prints only failures.
       --timers prints Trilinos' timers (MueLu set-up, Belos solve) at the end.
       --control-groups G splits the N ranks into G groups that solve the genetic
       algorithm's candidates concurrently, N/G ranks each (G must divide N).
@@ -67,13 +68,15 @@ const CommandHelp kCommands[] = {
       stress, fibre and contractile stretches, tensions and activations to FILE
       (default: point.csv)
 )"},
-    {"mesh", R"(  glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR|OUT.msh|OUT.inp]
+    {"mesh",
+     R"(  glossa mesh FILE [--format gmsh|abaqus|ansys] [--refine N] [--json] [--output DIR|OUT.msh|OUT.inp]
       read a mesh (Gmsh .msh 2.2/4.1 ASCII or binary, Abaqus .inp, ANSYS .node/.elem),
       optionally refine it, and print its counts, sets, volume and element quality
       (--output DIR: XDMF for ParaView; OUT.msh or OUT.inp: the mesh with all its sets; any
       other extension is refused: a directory named with a dot needs a trailing /)
 )"},
-    {"zero-strain", R"(  glossa zero-strain DECK.xml --output FILE [--method approximate|inverse] [--tolerance T]
+    {"zero-strain",
+     R"(  glossa zero-strain DECK.xml --output FILE [--method approximate|inverse] [--tolerance T]
          [--max-iterations N] [--set path=value ...] [--quiet]
       the zero-strain configuration (paper §8.1) of a deck loaded by gravity alone: approximate
       (the imaged mesh under the reversed gravity times 1.2) or inverse (reference coordinates
