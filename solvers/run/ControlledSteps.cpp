@@ -85,8 +85,9 @@ StepAttempt ControlledSteps::solveFrom(const std::vector<double> &inputs, const 
     }
     // Converged, but with an element folded through itself: the fold is the equilibrium's at these
     // inputs, not the start's. From the step's start Newton converged to the same fold every time
-    // it was asked to, at four times the Newton iterations (the medium tongue's gradient decks:
-    // doc/control.md, "Where a candidate starts"), so the candidate fails here.
+    // it was asked to, with 21-25 Newton iterations more where the moved start had taken 3-8 (the
+    // medium tongue's gradient decks: doc/control.md, "Folded candidates are not solved again"),
+    // so the candidate fails here.
     if (!a.folded.is_null()) return a;
     predicted = a.uzawa;
     outcome.solvedAgain = true;

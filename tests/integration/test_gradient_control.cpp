@@ -181,10 +181,11 @@ TEST(GradientControl, PredictedStartsSaveSolvesNotAccuracy) {
 
 // A candidate whose predicted start converges to a state with an element folded through itself
 // fails there, without a second solve from the step's start (which converged to the same fold
-// every time: doc/control.md, "Where a candidate starts"). The supine tongue under seven times
-// gravity: at t = 0.625 s the line search's longer steps fold element 123 (8 of 13 candidates).
-// Solved again as before, those 8 failed again and the run chose the same inputs byte for byte,
-// at 596 element passes and 190 factorisations against 453 and 150 (measured 2026-12-08).
+// every time: doc/control.md, "Folded candidates are not solved again"). The supine tongue under
+// seven times gravity: at t = 0.625 s the line search's longer steps fold element 123 (8 of 13
+// candidates). Solved again as before, those 8 failed again and the run chose the same inputs
+// byte for byte, at 596 element passes and 190 factorisations against 453 and 150 (measured
+// 2026-12-08).
 TEST(GradientControl, AFoldedCandidateIsNotSolvedAgain) {
   const auto s = test::runDeck(test::inputPath("paper/s8_5_gradient_supine.xml"),
                                {"Time/end time=0.625", "Loads/weight/g=70", "Output/fields=false"},
