@@ -55,7 +55,9 @@ struct ControlDriver::Search {
   std::size_t reused = 0; // genomes valued from solvedInputs (counted alike in every group)
   std::size_t failed = 0, failedPredictions = 0; // this group's failed solves; of them, seed solves
   std::size_t screened = 0, screenedPredictions = 0; // of the failed, screened (CandidateSolve::screened)
-  std::size_t solvedAgain = 0, solvedAgainPredictions = 0;    // solved twice (CandidateSolve::solvedAgain)
+  // This group's candidates solved twice (CandidateSolve::solvedAgain). The GA's seed solve is never
+  // one: it is the step's first, before any moved start exists, so every count here is the group's own.
+  std::size_t solvedAgain = 0;
   double keptArea = std::numeric_limits<double>::quiet_NaN(); // the kept candidate's smallest lumen area
 };
 
@@ -101,7 +103,7 @@ control::ControlEvaluation ControlDriver::solveCandidate(Search &search, const s
   const auto started = std::chrono::steady_clock::now();
   const CandidateSolve solve = plant_.solve(inputs);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  if (solve.solvedAgain) ++(index < 0 ? search.solvedAgainPredictions : search.solvedAgain);
+  if (solve.solvedAgain) ++search.solvedAgain;
   if (!solve.ok) {
     ++search.failed;
     if (index < 0) ++search.failedPredictions;
@@ -220,8 +222,7 @@ void ControlDriver::searchGenetic(Search &search, int committedSteps, const std:
                                 static_cast<double>(search.solvedAgain)};
   if (groupCount > 1) ownCounts = groups_.sumOfGroupRoots(ownCounts);
   search.result.screenedCandidates = search.screenedPredictions + static_cast<std::size_t>(ownCounts[0]);
-  search.result.solvedAgainCandidates =
-      search.solvedAgainPredictions + static_cast<std::size_t>(ownCounts[1]);
+  search.result.solvedAgainCandidates = static_cast<std::size_t>(ownCounts[1]);
   search.result.stop = control::toString(gaResult.stopReason);
   if (groupCount > 1) shareWinner(search);
 }
