@@ -20,6 +20,24 @@
 
 namespace glossa::solvers {
 
+namespace {
+
+// Every rank's verdict, agreed: empty on every rank if no rank found a fault, else the message of
+// the first rank that did, on every rank (so that all refuse alike and none waits for the others).
+std::string agreedError(const Teuchos::Comm<int> &comm, const std::string &error) {
+  const int mine = error.empty() ? comm.getSize() : comm.getRank();
+  int first = mine;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(first));
+  if (first == comm.getSize()) return {};
+  int length = comm.getRank() == first ? static_cast<int>(error.size()) : 0;
+  Teuchos::broadcast(comm, first, &length);
+  std::string message = comm.getRank() == first ? error : std::string(static_cast<std::size_t>(length), '\0');
+  if (length > 0) Teuchos::broadcast(comm, first, length, message.data());
+  return message;
+}
+
+}  // namespace
+
 RunCheckpoint::RunCheckpoint(const std::filesystem::path &dir, Teuchos::RCP<const Teuchos::Comm<int>> comm, int every)
     : store_(std::make_unique<io::CheckpointStore>(dir)), comm_(std::move(comm)), every_(every) {}
 
@@ -36,29 +54,16 @@ void RunCheckpoint::write(int step, const nlohmann::json &part) {
   } catch (const std::exception &e) {
     error = e.what();
   }
-  int failed = error.empty() ? 0 : 1, anyFailed = 0;
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, failed, Teuchos::outArg(anyFailed));
-  if (anyFailed) throw io::OutputError(error.empty() ? "another rank could not write its checkpoint part" : error);
+  // Every rank throws the failing rank's own message (the file and why): rank 0, which reports,
+  // may not be the rank that failed, and the job ends before another rank's words reach stderr.
+  const std::string agreed = agreedError(*comm_, error);
+  if (!agreed.empty()) throw io::OutputError(agreed);
   if (comm_->getRank() == 0) store_->publish(step);
   comm_->barrier();
   written_ = step;
 }
 
 namespace {
-
-// Every rank's verdict, agreed: empty on every rank if no rank found a fault, else the message of
-// the first rank that did, on every rank (so that all refuse alike and none waits for the others).
-std::string agreedError(const Teuchos::Comm<int> &comm, const std::string &error) {
-  const int mine = error.empty() ? comm.getSize() : comm.getRank();
-  int first = mine;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(first));
-  if (first == comm.getSize()) return {};
-  int length = comm.getRank() == first ? static_cast<int>(error.size()) : 0;
-  Teuchos::broadcast(comm, first, &length);
-  std::string message = comm.getRank() == first ? error : std::string(static_cast<std::size_t>(length), '\0');
-  if (length > 0) Teuchos::broadcast(comm, first, length, message.data());
-  return message;
-}
 
 // Runs `check` on what was read from `file`: a value that fails, or a type or key that is not
 // there (a part edited so that its CRC still holds), becomes an io::CheckpointError naming the file.

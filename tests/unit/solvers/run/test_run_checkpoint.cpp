@@ -2,16 +2,16 @@
 // is refused, naming why, when there is no checkpoint, when the deck differs (the first
 // parameter that does), or when the ranks or control groups do; a damaged part or an edited
 // value is refused on every rank alike (an io::CheckpointError, so exit 2), naming the file.
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
 #include <cmath>
 #include <fstream>
 #include <limits>
 
-#include <gtest/gtest.h>
-
-#include <Tpetra_Core.hpp>
-
 #include "DeckOnFile.hpp"
 #include "SharedScratch.hpp"
+#include "io/output/OutputError.hpp"
 #include "solvers/run/CheckpointContents.hpp"
 #include "solvers/run/RunCheckpoint.hpp"
 
@@ -115,6 +115,27 @@ TEST(RunCheckpoint, ADamagedPartIsRefusedOnEveryRankNamingIt) {
   const std::string why = test::deckErrorOf([&] { RunCheckpoint::read(dir.path(), *comm, kListing, 1, shape()); });
   EXPECT_NE(why.find("checkpoint/step_000001/" + last + ": the file is damaged: its CRC-32 is"), std::string::npos) << why;
   EXPECT_NE(why.find("it cannot be trusted"), std::string::npos) << why;
+}
+
+// The last rank cannot write its part (a directory stands where it goes): every rank throws that
+// rank's own words, the file and why. Before, rank 0 reported "another rank could not write its
+// checkpoint part" and the job ended before the failing rank's message reached stderr.
+TEST(RunCheckpoint, APartThatCannotBeWrittenIsNamedOnEveryRank) {
+  glossa::testing::SharedScratch dir;
+  const auto comm = Tpetra::getDefaultComm();
+  const std::string last = "rank_000" + std::to_string(comm->getSize() - 1) + ".cbor";
+  if (comm->getRank() == 0)
+    std::filesystem::create_directories(dir.path() / "checkpoint/step_000001" / last / "x");
+  comm->barrier();
+  RunCheckpoint checkpoints(dir.path(), comm, 1);
+  try {
+    checkpoints.write(1, part(comm->getSize()));
+    ADD_FAILURE() << "the write did not fail";
+  } catch (const io::OutputError &e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("cannot "), std::string::npos) << why;
+    EXPECT_NE(why.find("checkpoint/step_000001/" + last), std::string::npos) << why;
+  }
 }
 
 TEST(RunCheckpoint, AnEditedTimeIsRefusedNamingTheFileAndTheValue) {
