@@ -16,18 +16,21 @@ Teuchos::ParameterList timeParameters() {
   io::declareDouble(p, "minimum step size", 1e-6, "s",
                     "the run stops (and says why) when a failing step would be cut below this",
                     io::Range::positive());
-  io::declareString(p, "predictor", "auto",
-                    "where each step's Newton iteration (and every candidate solve of a controlled step) "
-                    "starts: none (the last committed state), linear extrapolation (the last two committed "
-                    "states, displacement and multipliers, extrapolated to the new time; the same for every "
-                    "candidate, so control groups still agree bit for bit; a step that fails from there is "
-                    "tried once more from the committed state before it is cut back) or auto (linear "
-                    "extrapolation, but none with Incompressibility/method = penalty, whose kappa multiplies "
-                    "the extrapolation's volume error: step-44 block 8^3 65 -> 69 Newton iterations). "
-                    "Measured on 24 scenes: 21-26 % fewer Newton iterations on the §7.1 blocks, 11 % fewer "
-                    "Krylov iterations on the step-44 block, 16 steps instead of 24 on the styloglossus "
-                    "scene, at most 9 % more Newton iterations elsewhere: bench/README.md",
-                    {"auto", "none", "linear extrapolation"});
+  io::declareString(
+      p, "predictor", "auto",
+      "where each step's Newton iteration (and every candidate solve of a controlled step) "
+      "starts: none (the last committed state), linear extrapolation (the last two committed "
+      "states, displacement and multipliers, extrapolated to the new time; the same for every "
+      "candidate, so control groups still agree bit for bit; a step that fails from there is "
+      "tried once more from the committed state before it is cut back) or auto (linear "
+      "extrapolation, but none with Incompressibility/method = penalty, whose kappa multiplies "
+      "the extrapolation's volume error: step-44 block 8^3 65 -> 69 Newton iterations; and none "
+      "under the GA controller, whose candidates start from its seed solve: the medium tongue's "
+      "seed fails from the extrapolated start, doc/control.md). "
+      "Measured on 24 scenes: 21-26 % fewer Newton iterations on the §7.1 blocks, 11 % fewer "
+      "Krylov iterations on the step-44 block, 16 steps instead of 24 on the styloglossus "
+      "scene, at most 9 % more Newton iterations elsewhere: bench/README.md",
+      {"auto", "none", "linear extrapolation"});
   io::declareString(p, "at a limit point", "stop",
                     "stop: after each converged step the tangent's stiffness along the load path is measured "
                     "(one tangent solve; a path driven by activation alone has no load rate and is not "
