@@ -1,20 +1,20 @@
 #include "solvers/nonlinear/NewtonSolver.hpp"
 
-#include "assembly/TimeSplit.hpp"
+#include <NOX.H>
+#include <NOX_Thyra.H>
 
+#include <NOX_Observer.hpp>
+#include <NOX_SolverStats.hpp>
+#include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
 #include <algorithm>
 #include <cmath>
 
-#include <NOX.H>
-#include <NOX_Observer.hpp>
-#include <NOX_SolverStats.hpp>
-#include <NOX_Thyra.H>
-#include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
-#include <Thyra_TpetraThyraWrappers.hpp>
-
-#include "solvers/nonlinear/InexactNewtonForcing.hpp"
+#include "assembly/TimeSplit.hpp"
 #include "solvers/linear/LinearSolveFailure.hpp"
 #include "solvers/linear/MumpsPreconditioner.hpp"
+#include "solvers/nonlinear/GuardedFullStep.hpp"
+#include "solvers/nonlinear/InexactNewtonForcing.hpp"
 
 namespace glossa::solvers {
 
@@ -23,6 +23,10 @@ using Teuchos::RCP;
 using Teuchos::rcp;
 
 namespace {
+// The guarded full step's shortest step, 2^-4 of Newton's: a direction that still inverts an
+// element at a sixteenth of its length is left to the load step's cut-back (GuardedFullStep.hpp).
+constexpr int kGuardedHalvings = 4;
+
 class IterationObserver : public NOX::Observer {
 public:
   // `forcing` (null: NOX's own): sets each iteration's linear tolerance in `linearSolver`.
@@ -182,9 +186,16 @@ NewtonResult NewtonSolver::run(assembly::Vector &u, const ToleranceRule &toleran
   auto params = Teuchos::parameterList();
   params->set("Nonlinear Solver", "Line Search Based");
   const LineSearch ls = parameters_.lineSearch;
-  params->sublist("Line Search").set("Method", ls == LineSearch::fullStep    ? "Full Step"
-                                               : ls == LineSearch::backtrack ? "Backtrack"
-                                                                             : "Polynomial");
+  ParameterList &lineSearch = params->sublist("Line Search");
+  if (ls == LineSearch::guardedFullStep) {
+    lineSearch.set("Method", "User Defined");
+    lineSearch.set<RCP<NOX::LineSearch::UserDefinedFactory>>(
+        "User Defined Line Search Factory", rcp(new GuardedFullStepFactory(kGuardedHalvings, halvedSteps_)));
+  } else {
+    lineSearch.set("Method", ls == LineSearch::fullStep    ? "Full Step"
+                             : ls == LineSearch::backtrack ? "Backtrack"
+                                                           : "Polynomial");
+  }
   params->sublist("Printing").set("Output Information", NOX::Utils::Error);
   // NOX passes its own relative tolerance to every linear solve: the deck's (constant), NOX's
   // Eisenstat-Walker "Type 1", or "Type 2" with the over-solving bound (InexactNewtonForcing), which the

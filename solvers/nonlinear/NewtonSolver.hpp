@@ -93,6 +93,11 @@ public:
   // The model it solves: its nominal time and multipliers are those of the next solve.
   assembly::ModelEvaluator &model() const { return *model_; }
 
+  // Steps the guarded full step has halved so far (Nonlinear solver/line search; summary.json's
+  // newton_step_halvings): Newton steps that would have left an element inside out.
+  int halvedSteps() const { return halvedSteps_; }
+  bool guardsSteps() const { return parameters_.lineSearch == LineSearch::guardedFullStep; }
+
   // The Eisenstat-Walker forcing's first and largest value (the Krylov tolerance of a Newton
   // iteration far from the solution).
   static constexpr double kForcingCeiling = 1e-2;
@@ -117,6 +122,7 @@ private:
   bool directSolve_;
   mutable Teuchos::RCP<NOX::Thyra::Group> group_; // kept between solves when keepLinearSolver_
   mutable Teuchos::RCP<NOX::Thyra::Group> lastGroup_; // the last solve's that iterated: its linear solver
+  mutable int halvedSteps_ = 0;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> sensitivitySolver_; // null: the model's
   int solveTangentWith(const Thyra::LinearOpWithSolveFactoryBase<double> &factory, const assembly::Vector &u,
                        const assembly::MultiVector &rhs, assembly::MultiVector &x, double relativeTolerance) const;

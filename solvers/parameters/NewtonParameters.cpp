@@ -26,8 +26,13 @@ Teuchos::ParameterList nonlinearSolverParameters() {
                     "residual tolerance over the residual: the last iteration of a solve asks only "
                     "what the residual test needs; doc/incompressibility.md)",
                     {"constant", "Type 1", "Type 2"});
-  io::declareString(p, "line search", "full step", "NOX line search",
-                    {"full step", "backtrack", "polynomial"});
+  io::declareString(p, "line search", "full step",
+                    "full step (Newton's; a trial state with an element turned inside out or a muscle "
+                    "point law failing fails the solve, and the load step is cut back), guarded full step "
+                    "(the full step, halved up to 4 times while its state is invalid; no test of the "
+                    "residual's norm), or NOX's backtrack or polynomial (halved or fitted until the "
+                    "residual's norm decreases): doc/incompressibility.md, \"Newton's line search\"",
+                    {"full step", "guarded full step", "backtrack", "polynomial"});
   return p;
 }
 
@@ -39,7 +44,10 @@ NewtonParameters parseNewtonParameters(const Teuchos::ParameterList &s) {
   const std::string forcing = s.get<std::string>("forcing term");
   p.forcing = forcing == "constant" ? ForcingTerm::constant : forcing == "Type 1" ? ForcingTerm::type1 : ForcingTerm::type2;
   const std::string ls = s.get<std::string>("line search");
-  p.lineSearch = ls == "backtrack" ? LineSearch::backtrack : ls == "polynomial" ? LineSearch::polynomial : LineSearch::fullStep;
+  p.lineSearch = ls == "backtrack"           ? LineSearch::backtrack
+                 : ls == "polynomial"        ? LineSearch::polynomial
+                 : ls == "guarded full step" ? LineSearch::guardedFullStep
+                                             : LineSearch::fullStep;
   return p;
 }
 

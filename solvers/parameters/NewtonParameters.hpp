@@ -7,7 +7,7 @@
 namespace glossa::solvers {
 
 enum class ForcingTerm { constant, type1, type2 };
-enum class LineSearch { fullStep, backtrack, polynomial };
+enum class LineSearch { fullStep, guardedFullStep, backtrack, polynomial };
 
 struct NewtonParameters {
   int maximumIterations = 25;

@@ -9,6 +9,7 @@
 #include "assembly/TimeSplit.hpp"
 #include "model/Scene.hpp"
 #include "solvers/incompressibility/UzawaLoop.hpp"
+#include "solvers/nonlinear/NewtonSolver.hpp"
 #include "solvers/run/AirflowCoupling.hpp"
 #include "solvers/run/PathFollowing.hpp"
 #include "solvers/run/RunSetup.hpp"
@@ -83,6 +84,7 @@ void Simulation::commit() {
     if (contact.state) contact.state->commit();
   run.report->stepLine(run.stepper->stepNumber(), t, run.stepper->steps().endTime(), trial.dt, trial.attempt.uzawa,
                        onPath_, run.controlled ? run.controlled->controlLine() : std::string());
+  if (run.newton->guardsSteps()) run.report->doc()["newton_step_halvings"] = run.newton->halvedSteps();
   run.report->write(assemblyCounters(*run.model));
   output.unlock();
   // Inside the closing pressure's bracket no checkpoint is written: a restart resumes before the

@@ -55,7 +55,9 @@ Transmission transmission(const std::vector<std::string> &overrides, const std::
   t.loadError = std::abs(slave[2] - load) / load;
   const auto contact = test::readKeyedCsv(output / "contact.csv").at("interface").back().values;
   t.forceError = std::abs(contact[1] - load) / load;
-  if (points > 0) EXPECT_EQ(contact[3], points) << "every slave point active, " << tag;
+  if (points > 0) {
+    EXPECT_EQ(contact[3], points) << "every slave point active, " << tag;
+  }
   std::printf(
       "two-block patch, %s: pressure error %.3e, master flatness %.3e, load error %.3e (resultant), %.3e "
       "(contact.csv), %g points active\n",

@@ -25,9 +25,8 @@ double fungDifference(double l) {
   return 2.0 * A * B * std::exp(B * (I1 - 3.0)) * (l * l - 1.0 / l);
 }
 
-// The stretch at which P11(lambda) = t, by bisection on [1, 3].
-double stretchFor(double t, const std::function<double(double)> &P11) {
-  double lo = 1.0, hi = 3.0;
+// The stretch at which P11(lambda) = t, by bisection on [lo, hi] (P11 increasing there).
+double stretchFor(double t, const std::function<double(double)> &P11, double lo = 1.0, double hi = 3.0) {
   for (int i = 0; i < 200; ++i) {
     const double mid = 0.5 * (lo + hi);
     (P11(mid) < t ? lo : hi) = mid;
@@ -98,4 +97,33 @@ TEST(UniaxialTension, ProbeAndFaceResultants) {
   EXPECT_NEAR(last.at("xmin")[0], -load, 1e-6 * load);
   const auto reaction = s.at("steps").back().at("reactions").at("symmetry x").get<std::vector<double>>();
   EXPECT_NEAR(last.at("xmin")[0], reaction[0], 1e-12 * load);
+}
+
+// Compressed to lambda = 0.47 in one load step (mu = 1 kPa, P11 = -4 kPa, no cut-back allowed):
+// Newton's first full step, lambda = 1 + P11 / (3 mu) = -1/3, turns the block inside out. With
+// "full step" that fails the step; the guarded full step halves it until the state is valid and
+// converges to the analytic stretch, mu (lambda - lambda^-2) = P11.
+TEST(UniaxialTension, AnInvertingNewtonStepIsHalvedByTheGuardedFullStep) {
+  const double mu = 1000.0, traction = -4000.0, L = 1e-3;
+  const std::vector<std::string> oneStep = {"Material/type=neo-Hookean", "Material/shear modulus=1000",
+                                            "Loads/pull/traction=-4000,0,0", "Time/step size=1",
+                                            "Time/minimum step size=1"};
+  auto with = [&](const std::string &lineSearch) {
+    auto all = oneStep;
+    all.push_back("Nonlinear solver/line search=" + lineSearch);
+    std::string tag = lineSearch;
+    for (char &c : tag) c = c == ' ' ? '_' : c;
+    return test::runDeck(test::inputPath("verification/uniaxial_tension.xml"), all,
+                         test::scratchDirectory("uniaxial_compressed_" + tag));
+  };
+  EXPECT_FALSE(with("full step").at("converged").get<bool>());
+  const auto s = with("guarded full step");
+  ASSERT_TRUE(s.at("converged").get<bool>());
+  EXPECT_GE(s.at("newton_step_halvings").get<int>(), 1);
+  const auto u = s.at("final_displacement").at("corner").get<std::vector<double>>();
+  const double exact = stretchFor(
+      traction, [&](double l) { return mu * (l - 1.0 / (l * l)); }, 0.1, 1.0);
+  EXPECT_NEAR(exact, 0.4728, 1e-4);  // the root itself, as a check of the bracket
+  EXPECT_NEAR(1.0 + u[0] / L, exact, 1e-4 * (1.0 - exact));
+  EXPECT_NEAR(1.0 + u[1] / L, 1.0 / std::sqrt(exact), 1e-5);
 }

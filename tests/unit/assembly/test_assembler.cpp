@@ -130,12 +130,24 @@ TEST(Assembler, TangentIsTheCentralDifferenceOfTheResidual) {
   EXPECT_LT(check.error, 1e-6 * check.scale) << "|Kv| = " << check.scale;
 }
 
+namespace {
+// The linear solver's context of a block built in code: its coordinates and rigid-body modes,
+// symmetric, the solver type decided by the section.
+solvers::LinearSolverContext linearSolverContext(const assembly::Assembler &assembler) {
+  return {assembly::coordinates(assembler),
+          assembly::rigidBodyModes(assembler),
+          world()->getSize(),
+          assembler.layout().numGlobalDofs(),
+          true,
+          std::nullopt};
+}
+}  // namespace
+
 TEST(NewtonSolver, ConvergesQuadraticallyAndTheReactionsBalanceTheWeight) {
   const model::Scene scene = block(0.3);
   const AssemblerWithHistory built(scene, world());
   const auto assembler = built.assembler;
-  solvers::LinearSolverContext context{assembly::coordinates(*assembler), assembly::rigidBodyModes(*assembler),
-                                       world()->getSize(), assembler->layout().numGlobalDofs(), true};
+  const solvers::LinearSolverContext context = linearSolverContext(*assembler);
   const auto model = Teuchos::rcp(
       new assembly::ModelEvaluator(assembler, solvers::buildLinearSolver(solvers::LinearSolverParameters{}, context)));
   model->setTime(1.0);
@@ -179,8 +191,7 @@ TEST(UzawaLoop, BringsANearlyIncompressibleBlockToItsDilatationTolerance) {
   EXPECT_NEAR(scene.tissues[0].volumetric.kappa(), 1.0 / (1.0 / kappa + 1.0 / kappaAL), 1e-9 * kappaAL);
   const AssemblerWithHistory built(scene, world());
   const auto assembler = built.assembler;
-  solvers::LinearSolverContext context{assembly::coordinates(*assembler), assembly::rigidBodyModes(*assembler),
-                                       world()->getSize(), assembler->layout().numGlobalDofs(), true};
+  const solvers::LinearSolverContext context = linearSolverContext(*assembler);
   const auto model = Teuchos::rcp(new assembly::ModelEvaluator(
       assembler, solvers::buildLinearSolver(solvers::LinearSolverParameters{}, context)));
   model->setTime(1.0);
@@ -203,7 +214,8 @@ namespace {
 assembly::Vector translation(const assembly::Assembler &assembler, const Eigen::Vector3d &w) {
   assembly::Vector v(assembler.layout().ownedMap());
   auto data = v.getDataNonConst(0);
-  for (std::size_t i = 0; i < data.size(); ++i) data[i] = w[static_cast<int>(i % 3)];
+  for (std::size_t i = 0; i < static_cast<std::size_t>(data.size()); ++i)
+    data[i] = w[static_cast<int>(i % 3)];
   return v;
 }
 double energyNorm(const assembly::FEMatrix &M, const assembly::Vector &v) {
