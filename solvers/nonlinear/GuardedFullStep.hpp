@@ -4,8 +4,9 @@
 // residual (`Nonlinear solver/line search = guarded full step`, doc/incompressibility.md).
 //
 // Unlike NOX's Backtrack it asks nothing of ||f||: a valid full step is taken even where the
-// residual grows, as Newton's full step does. Backtrack rejects those too and, on the medium
-// tongue's GA, spent minutes on one candidate halving steps that a full step would have taken.
+// residual grows, as Newton's full step does. Backtrack shortens those too: on the medium tongue's
+// GA it took 9.4 Newton iterations per candidate against 7.5, and had not finished the second
+// control step after 5 minutes, which the full step took in 1.5.
 // With "full step" one inverted trial state fails the whole solve, and the load step is cut back.
 //
 // Included by NewtonSolver.cpp alone (the NOX headers are heavy).

@@ -63,8 +63,12 @@ TEST(DeformablePair, CandidatesAreThoseOfAnAllPairsTest) {
       EXPECT_EQ(pair.candidates[i], expected) << "reach " << reach << ", slave face " << i;
       found += expected.size();
     }
-    if (reach == 0.01) EXPECT_EQ(found, 0u);
-    if (reach == 2.0) EXPECT_EQ(found, slave.size() * master.size());
+    if (reach == 0.01) {
+      EXPECT_EQ(found, 0u);
+    }
+    if (reach == 2.0) {
+      EXPECT_EQ(found, slave.size() * master.size());
+    }
   }
 }
 
